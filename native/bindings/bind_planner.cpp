@@ -1,0 +1,97 @@
+#include "bindings.hpp"
+#include "footfall/agent_planner.hpp"
+#include "footfall/plan.hpp"
+#include "footfall/planner.hpp"
+
+namespace py = pybind11;
+
+namespace footfall::bindings {
+
+void bind_planner(py::module_& m) {
+  py::class_<Obstacle>(m, "Obstacle", "A polygon [m] extruded to a height [m].")
+      .def(py::init<>())
+      .def(py::init([](std::vector<Vec2> polygon, double height) { return Obstacle{std::move(polygon), height}; }),
+           py::arg("polygon"), py::arg("height") = 2.0)
+      .def_readwrite("polygon", &Obstacle::polygon)
+      .def_readwrite("height", &Obstacle::height);
+
+  py::class_<ObstacleMap>(m, "ObstacleMap", "Static obstacles indexed for circle queries.")
+      .def(py::init<std::vector<Obstacle>>(), py::arg("obstacles"))
+      .def("first_overlap", &ObstacleMap::first_overlap, py::arg("circle"))
+      .def("overlaps", &ObstacleMap::overlaps, py::arg("circle"))
+      .def("contains", &ObstacleMap::contains, py::arg("index"), py::arg("point"))
+      .def_property_readonly("obstacles", &ObstacleMap::obstacles);
+
+  py::class_<SearchResult>(m, "SearchResult")
+      .def_readonly("status", &SearchResult::status)
+      .def_readonly("footsteps", &SearchResult::footsteps)
+      .def_readonly("end_state", &SearchResult::end_state)
+      .def_readonly("nodes_generated", &SearchResult::nodes_generated)
+      .def_readonly("nodes_expanded", &SearchResult::nodes_expanded);
+
+  py::class_<FootstepPlanner>(m, "FootstepPlanner", "The short-horizon best-first footstep planner.")
+      .def(py::init<const CharacterParams&, const PlannerParams&, const ObstacleMap&>(),
+           py::arg("character"), py::arg("planner"), py::arg("obstacles"),
+           py::keep_alive<1, 4>())  // the planner refers to the obstacle map
+      .def("plan", &FootstepPlanner::plan, py::arg("start"), py::arg("goal"),
+           py::call_guard<py::gil_scoped_release>())
+      .def("heuristic", &FootstepPlanner::heuristic, py::arg("state"), py::arg("goal"))
+      .def("expected_step_cost", &FootstepPlanner::expected_step_cost)
+      .def("expected_step_length", &FootstepPlanner::expected_step_length)
+      .def("collides", py::overload_cast<const Footstep&>(&FootstepPlanner::collides, py::const_), py::arg("step"))
+      .def("collides", py::overload_cast<const FootstepState&>(&FootstepPlanner::collides, py::const_),
+           py::arg("state"));
+  m.def("choose_foot_orientations",
+        [](std::vector<Footstep> steps, const std::array<OrientationInterval, 2>& initial,
+           const CharacterParams& character) {
+          choose_foot_orientations(steps, initial, character);
+          return steps;
+        },
+        py::arg("steps"), py::arg("initial"), py::arg("character"),
+        "Returns the steps with exact foot orientations (section 4's post-process).");
+  m.def("reachable_orientations", &reachable_orientations, py::arg("interval"), py::arg("foot"),
+        py::arg("max_foot_turn"));
+
+  py::class_<AgentSpec>(m, "AgentSpec", "An agent to plan: name, position [m], facing [rad], goals [m].")
+      .def(py::init<>())
+      .def(py::init([](std::string name, Vec2 position, double facing, std::vector<Vec2> goals) {
+             return AgentSpec{std::move(name), position, facing, std::move(goals)};
+           }),
+           py::arg("name"), py::arg("position"), py::arg("facing"), py::arg("goals"))
+      .def_readwrite("name", &AgentSpec::name)
+      .def_readwrite("position", &AgentSpec::position)
+      .def_readwrite("facing", &AgentSpec::facing)
+      .def_readwrite("goals", &AgentSpec::goals);
+
+  py::enum_<AgentStatus>(m, "AgentStatus")
+      .value("REACHED", AgentStatus::kReached)
+      .value("PARTIAL", AgentStatus::kPartial);
+
+  py::class_<AgentPlan>(m, "AgentPlan", "One agent's timed footsteps.")
+      .def_readonly("name", &AgentPlan::name)
+      .def_readonly("status", &AgentPlan::status)
+      .def_readonly("reason", &AgentPlan::reason)
+      .def_readonly("stuck_at", &AgentPlan::stuck_at)
+      .def_readonly("start", &AgentPlan::start)
+      .def_readonly("footsteps", &AgentPlan::footsteps)
+      .def_readonly("goals_reached", &AgentPlan::goals_reached)
+      .def_readonly("searches", &AgentPlan::searches)
+      .def_readonly("nodes_generated", &AgentPlan::nodes_generated)
+      .def_readonly("nodes_expanded", &AgentPlan::nodes_expanded)
+      .def("total_cost", &AgentPlan::total_cost)
+      .def("end_time", &AgentPlan::end_time);
+  m.def("plan_agent", [](const AgentSpec& agent, const FootstepPlanner& planner) { return plan_agent(agent, planner); },
+        py::arg("agent"), py::arg("planner"), py::call_guard<py::gil_scoped_release>());
+
+  py::class_<FootPose>(m, "FootPose")
+      .def_readonly("position", &FootPose::position)
+      .def_readonly("orientation", &FootPose::orientation)
+      .def_readonly("lift", &FootPose::lift)
+      .def_readonly("planted", &FootPose::planted);
+  m.def("com_at", py::overload_cast<const AgentPlan&, double>(&com_at), py::arg("plan"), py::arg("t"));
+  m.def("feet_at", &feet_at, py::arg("plan"), py::arg("t"), "Both feet at time t, [left, right].");
+  m.def("facing_at", &facing_at, py::arg("plan"), py::arg("t"));
+  m.def("collision_circles", &collision_circles, py::arg("plan"), py::arg("character"), py::arg("t"));
+}
+
+}  // namespace footfall::bindings

@@ -1,0 +1,88 @@
+#include <atomic>
+#include <optional>
+
+#include "bindings.hpp"
+#include "footfall/plan.hpp"
+#include "footfall/plan_io.hpp"
+#include "footfall/scenario.hpp"
+#include "footfall/scenes.hpp"
+
+namespace py = pybind11;
+
+namespace footfall::bindings {
+namespace {
+
+// A flag that another Python thread sets to stop a running plan_scenario.
+struct CancelFlag {
+  std::atomic<bool> flag{false};
+};
+
+// Runs plan_scenario without the GIL; the progress callback takes it back.
+// An exception raised by the callback cancels the run and is re-raised.
+Plan plan_with_callbacks(const Scenario& scenario, const py::object& progress, CancelFlag* cancel) {
+  CancelFlag own;
+  CancelFlag& flag = cancel != nullptr ? *cancel : own;
+  std::optional<py::error_already_set> error;
+  RunControl control;
+  control.cancel = &flag.flag;
+  if (!progress.is_none()) {
+    control.progress = [&](double fraction) {
+      py::gil_scoped_acquire gil;
+      if (error) return;
+      try {
+        progress(fraction);
+      } catch (py::error_already_set& e) {
+        error.emplace(std::move(e));
+        flag.flag = true;
+      }
+    };
+  }
+  Plan plan;
+  {
+    py::gil_scoped_release release;
+    plan = plan_scenario(scenario, control);
+  }
+  if (error) throw *error;
+  return plan;
+}
+
+}  // namespace
+
+void bind_scenario(py::module_& m) {
+  py::class_<Scenario>(m, "Scenario", "Obstacles, agents and parameters: plain data.")
+      .def(py::init<>())
+      .def_readwrite("obstacles", &Scenario::obstacles)
+      .def_readwrite("agents", &Scenario::agents)
+      .def_readwrite("character", &Scenario::character)
+      .def_readwrite("planner", &Scenario::planner);
+  m.def("validate", py::overload_cast<const Scenario&>(&validate), py::arg("scenario"),
+        "Raises ValueError with the field path of the first problem.");
+  m.def("parse_scenario", &parse_scenario, py::arg("text"), py::arg("source") = "<string>",
+        "Parses and validates scenario JSON; ValueError 'SOURCE: FIELD.PATH: problem'.");
+  m.def("load_scenario", &load_scenario, py::arg("path"));
+  m.def("demo_scenario", &demo_scenario, "The built-in demo: a doorway and a box.");
+  m.def("box_obstacle", &box_obstacle, py::arg("center"), py::arg("size"), py::arg("height") = 1.0);
+  m.def("wall_with_door", &wall_with_door, py::arg("x"), py::arg("door_width"), py::arg("door_center") = 0.0,
+        py::arg("half_length") = 6.0, py::arg("thickness") = 0.2);
+
+  py::class_<CancelFlag>(m, "CancelFlag", "Set it from another thread to stop plan_scenario.")
+      .def(py::init<>())
+      .def("set", [](CancelFlag& c) { c.flag = true; })
+      .def("is_set", [](const CancelFlag& c) { return c.flag.load(); });
+
+  py::class_<Plan>(m, "Plan", "Every agent's footsteps.")
+      .def_readonly("agents", &Plan::agents)
+      .def_readonly("character", &Plan::character)
+      .def_readonly("status", &Plan::status);
+  m.def("plan_scenario", &plan_with_callbacks, py::arg("scenario"), py::arg("progress") = py::none(),
+        py::arg("cancel") = nullptr,
+        "Plans every agent, without holding the GIL. progress(fraction) is called at most a few "
+        "times a second; a set CancelFlag stops the run (status CANCELLED).");
+  m.def("plan_to_json", &plan_to_json, py::arg("plan"));
+  m.def("parse_plan", &parse_plan, py::arg("text"), py::arg("source") = "<string>");
+  m.def("load_plan", &load_plan, py::arg("path"));
+  m.def("write_plan_file", &write_plan_file, py::arg("plan"), py::arg("path"),
+        "Writes atomically: a failure leaves no half-written file.");
+}
+
+}  // namespace footfall::bindings

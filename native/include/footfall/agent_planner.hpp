@@ -1,0 +1,69 @@
+// Footfall — one agent's whole walk: repeated short-horizon searches toward
+// each of its goals in turn, until the last goal is reached, the agent is
+// stuck, or the time limit passes.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "footfall/footstep.hpp"
+#include "footfall/planner.hpp"
+
+namespace footfall {
+
+/// An agent to plan: where it stands and where it goes.
+struct AgentSpec {
+  std::string name;         ///< Unique name.
+  Vec2 position;            ///< Standing position of the COM. [m]
+  double facing = 0;        ///< Initial facing. [rad]
+  std::vector<Vec2> goals;  ///< Goals, visited in order. [m] [non-empty]
+};
+
+/// How an agent's plan ended.
+enum class AgentStatus {
+  kReached,  ///< Every goal was reached; the agent stands at the last one.
+  kPartial,  ///< The walk ended early; `AgentPlan::reason` says why.
+};
+/// "reached" or "partial".
+const char* to_string(AgentStatus status);
+
+/// Lets a caller follow and stop a long run.
+struct RunControl {
+  /// Called with the fraction done, in [0, 1], at most a few times a second.
+  std::function<void(double)> progress;
+  /// When set and true, the run stops at the next search and reports kCancelled.
+  const std::atomic<bool>* cancel = nullptr;
+  /// True if the caller asked to stop.
+  bool cancelled() const { return cancel != nullptr && cancel->load(std::memory_order_relaxed); }
+};
+
+/// The plan of one agent: its start and its timed footsteps.
+struct AgentPlan {
+  std::string name;                  ///< The agent's name.
+  AgentStatus status = AgentStatus::kPartial;  ///< Reached or partial.
+  /// Empty when reached; otherwise "stuck", "time limit" or "cancelled".
+  std::string reason;
+  Vec2 stuck_at;                     ///< Where the agent stopped, when partial. [m]
+  FootstepState start;               ///< Standing start state.
+  std::vector<Footstep> footsteps;   ///< The timed footsteps, in order.
+  int goals_reached = 0;             ///< Goals reached, in order.
+  int searches = 0;                  ///< Footstep searches run.
+  long long nodes_generated = 0;     ///< Summed over the searches.
+  long long nodes_expanded = 0;      ///< Summed over the searches.
+
+  /// Sum of the step costs. [J]
+  double total_cost() const;
+  /// Time at the end of the last step. [s]
+  double end_time() const;
+};
+
+/// Plans `agent`'s walk through its goals. Each search aims at the current
+/// goal, or at the point local_goal_distance toward it; a reached last goal
+/// ends in a stop step; a search that makes less than min_progress is "stuck"
+/// and ends the walk with a stop step. Intermediate goals are walked through.
+AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
+                     const RunControl& control = {});
+
+}  // namespace footfall

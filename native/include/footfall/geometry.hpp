@@ -1,0 +1,55 @@
+// Footfall — plane geometry shared by every stage. Blender's frame: Z up, the
+// ground is the XY plane; metres and radians.
+#pragma once
+
+#include <cmath>
+
+namespace footfall {
+
+/// A point or vector in the ground plane. [m] or [m/s]
+struct Vec2 {
+  double x = 0.0;  ///< X coordinate.
+  double y = 0.0;  ///< Y coordinate.
+};
+
+inline Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+inline Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+inline Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
+inline Vec2 operator*(Vec2 a, double s) { return {s * a.x, s * a.y}; }
+inline bool operator==(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
+
+/// Dot product.
+inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+/// Z component of the 3-D cross product.
+inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+/// Euclidean length.
+inline double length(Vec2 a) { return std::hypot(a.x, a.y); }
+/// Distance between two points. [m]
+inline double distance(Vec2 a, Vec2 b) { return length(a - b); }
+/// Unit vector at world angle `angle` (counter-clockwise from +X). [rad]
+inline Vec2 unit(double angle) { return {std::cos(angle), std::sin(angle)}; }
+/// `a` rotated counter-clockwise by `angle`. [rad]
+inline Vec2 rotate(Vec2 a, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * a.x - s * a.y, s * a.x + c * a.y};
+}
+/// `a` rotated counter-clockwise by a quarter turn.
+inline Vec2 perp(Vec2 a) { return {-a.y, a.x}; }
+/// World angle of a vector. [rad] in (-pi, pi]
+inline double angle_of(Vec2 a) { return std::atan2(a.y, a.x); }
+/// True if both coordinates are finite numbers.
+inline bool is_finite(Vec2 a) { return std::isfinite(a.x) && std::isfinite(a.y); }
+
+/// `angle` wrapped into (-pi, pi]. [rad]
+double wrap_angle(double angle);
+
+/// Distance from point `p` to the segment [a, b]. [m]
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b);
+
+/// A circle in the ground plane.
+struct Circle {
+  Vec2 center;         ///< Centre. [m]
+  double radius = 0;   ///< Radius. [m] [>= 0]
+};
+
+}  // namespace footfall

@@ -1,0 +1,49 @@
+// Footfall — a planned scene (every agent's footsteps) and its analytic
+// evaluation at any time.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "footfall/agent_planner.hpp"
+#include "footfall/scenario.hpp"
+
+namespace footfall {
+
+/// The plan of a whole scenario.
+struct Plan {
+  std::vector<AgentPlan> agents;  ///< One per scenario agent, in the same order.
+  CharacterParams character;      ///< The character the plan was made for.
+  Status status = Status::kSuccess;  ///< kCancelled if the run was stopped.
+};
+
+/// Plans every agent of a validated scenario (agents ignore each other).
+/// Deterministic: the same scenario gives bit-identical plans.
+Plan plan_scenario(const Scenario& scenario, const RunControl& control = {});
+
+/// A foot at one instant.
+struct FootPose {
+  Vec2 position;           ///< [m]
+  double orientation = 0;  ///< [rad]
+  double lift = 0;         ///< Height of the sole above the ground. [m]
+  bool planted = true;     ///< On the ground (stance), or swinging.
+};
+
+/// COM of the agent at time `t` (before the first step: the start; after the
+/// last: where it ends).
+ComSample com_at(const AgentPlan& plan, double t);
+
+/// Both feet at time `t`, indexed by Foot. The foot of the current step is
+/// planted; the other swings from where it was planted to where it lands at
+/// the next step, on an arc whose height grows with the stride.
+std::array<FootPose, 2> feet_at(const AgentPlan& plan, double t);
+
+/// Torso facing at time `t`: phi of the current step. [rad]
+double facing_at(const AgentPlan& plan, double t);
+
+/// The collision circles of figure 1c at time `t`: three torso circles, then
+/// one per planted foot (so four while a foot swings, five when both are down).
+std::vector<Circle> collision_circles(const AgentPlan& plan, const CharacterParams& character,
+                                      double t);
+
+}  // namespace footfall

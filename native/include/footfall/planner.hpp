@@ -1,0 +1,85 @@
+// Footfall — the short-horizon best-first footstep planner (section 4 of Singh
+// et al.): A* over footstep states that stops after a fixed number of
+// expansions and then returns the path to the most promising closed node.
+#pragma once
+
+#include <vector>
+
+#include "footfall/footstep.hpp"
+#include "footfall/obstacles.hpp"
+#include "footfall/params.hpp"
+#include "footfall/status.hpp"
+
+namespace footfall {
+
+/// Result of one footstep search.
+struct SearchResult {
+  /// kSuccess: the goal was reached. kPartial: the horizon was reached first
+  /// and `footsteps` lead to the closed node with the best heuristic among
+  /// those the character can stop from (a single wait step when no node beats
+  /// a standing start). kNoPath: not even that is possible. kInvalidStart: the start
+  /// collides. kInvalidGoal: the goal lies inside an obstacle.
+  Status status = Status::kPartial;
+  std::vector<Footstep> footsteps;  ///< The planned steps, in order.
+  FootstepState end_state;          ///< State after the last step.
+  int nodes_generated = 0;          ///< Valid successors created.
+  int nodes_expanded = 0;           ///< Nodes taken off the open list.
+};
+
+/// Plans footsteps for one character among static obstacles. Stateless between
+/// calls; const methods may run on several threads at once.
+class FootstepPlanner {
+ public:
+  /// Validates both parameter sets (std::invalid_argument). `obstacles` must
+  /// outlive the planner.
+  FootstepPlanner(const CharacterParams& character, const PlannerParams& planner,
+                  const ObstacleMap& obstacles);
+
+  /// Best-first search from `start` toward `goal`, bounded by the horizon.
+  /// The foot orientations of the result are chosen by the post-process over
+  /// these steps alone; a caller that chains searches runs
+  /// choose_foot_orientations once more over the whole chain.
+  SearchResult plan(const FootstepState& start, Vec2 goal) const;
+
+  /// Heuristic of equation 6: the cost of one normal step times the number of
+  /// normal steps to the goal (the distance less the goal tolerance). [J]
+  double heuristic(const FootstepState& state, Vec2 goal) const;
+  /// Cost of one normal step: straight, at the preferred speed and duration. [J]
+  double expected_step_cost() const { return expected_step_cost_; }
+  /// COM travel of one normal step. [m]
+  double expected_step_length() const { return expected_step_length_; }
+
+  /// True if the step collides with an obstacle: its landing foot, or the
+  /// torso circles at samples no further apart than the sample spacing.
+  bool collides(const Footstep& step) const;
+  /// True if the standing or walking state's planted feet or torso collide.
+  bool collides(const FootstepState& state) const;
+  /// The stop step from `state` lasting `duration`, with validity kCollides if
+  /// it runs into an obstacle.
+  StepResult stop_step(const FootstepState& state, double duration) const;
+  /// The stop step of the planner's stop_duration.
+  StepResult stop_step(const FootstepState& state) const;
+
+  /// The character parameters.
+  const CharacterParams& character() const { return character_; }
+  /// The planner parameters.
+  const PlannerParams& params() const { return params_; }
+
+ private:
+  CharacterParams character_;
+  PlannerParams params_;
+  const ObstacleMap& obstacles_;
+  double expected_step_cost_ = 0;
+  double expected_step_length_ = 0;
+};
+
+/// Chooses exact foot orientations (section 4's post-process): each interval
+/// is narrowed by the next step's, then, from the first step on, every foot is
+/// turned as close as its interval allows to its step's phi. `initial` holds
+/// the orientation intervals of both feet before the first step.
+void choose_foot_orientations(std::vector<Footstep>& steps,
+                              const std::array<OrientationInterval, 2>& initial,
+                              const CharacterParams& character);
+
+
+}  // namespace footfall

@@ -1,0 +1,42 @@
+// Footfall — built-in scenes: the demo, and the building blocks of the
+// benchmark workloads and tests (walls with doors, boxes, a box field).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "footfall/scenario.hpp"
+
+namespace footfall {
+
+/// An axis-aligned box obstacle centred at `center`. [m]
+Obstacle box_obstacle(Vec2 center, Vec2 size, double height = 1.0);
+
+/// A wall along the line x = `x`, from y = -`half_length` to +`half_length`,
+/// `thickness` thick, with a door of `door_width` centred at y = `door_center`. [m]
+std::vector<Obstacle> wall_with_door(double x, double door_width, double door_center = 0.0,
+                                     double half_length = 6.0, double thickness = 0.2);
+
+/// The built-in demo: one character walks through a 1 m doorway in a wall and
+/// around a box behind it.
+Scenario demo_scenario();
+
+/// `count` random boxes of 0.5-1.5 m side in a square field of side `size`
+/// centred on the origin, from a portable seeded generator (the same boxes on
+/// every machine). [m]
+std::vector<Obstacle> box_field(int count, double size, std::uint64_t seed);
+
+/// A small portable random generator (splitmix64), so that seeded scenes are
+/// the same everywhere.
+class SceneRandom {
+ public:
+  /// Starts the sequence at `seed`.
+  explicit SceneRandom(std::uint64_t seed) : state_(seed) {}
+  /// Uniform in [lo, hi).
+  double uniform(double lo, double hi);
+
+ private:
+  std::uint64_t state_;
+};
+
+}  // namespace footfall

@@ -1,0 +1,21 @@
+#include "footfall/geometry.hpp"
+
+#include <algorithm>
+
+namespace footfall {
+
+double wrap_angle(double angle) {
+  constexpr double kPi = 3.14159265358979323846;
+  double wrapped = std::remainder(angle, 2.0 * kPi);  // in [-pi, pi]
+  if (wrapped <= -kPi) wrapped += 2.0 * kPi;
+  return wrapped;
+}
+
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return distance(p, a + t * ab);
+}
+
+}  // namespace footfall

@@ -1,0 +1,151 @@
+#include "json_reader.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace footfall::detail {
+
+namespace {
+
+// Python's json module writes NaN, Infinity and -Infinity as bare tokens, which
+// JSON forbids. They are turned into marker strings so that number() can name
+// the field that holds them.
+constexpr const char* kNonFiniteMarker = "\x01non-finite:";
+
+std::string mark_non_finite(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  bool in_string = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      out += c;
+      if (c == '\\' && i + 1 < text.size()) {
+        out += text[++i];
+      } else if (c == '"') {
+        in_string = false;
+      }
+      continue;
+    }
+    if (c == '"') in_string = true;
+    bool replaced = false;
+    for (const char* token : {"NaN", "Infinity", "-Infinity"}) {
+      const size_t n = std::char_traits<char>::length(token);
+      if (text.compare(i, n, token) == 0) {
+        out += std::string("\"") + "\\u0001non-finite:" + token + "\"";
+        i += n - 1;
+        replaced = true;
+        break;
+      }
+    }
+    if (!replaced) out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+Json parse_json(const std::string& text, const std::string& source) {
+  try {
+    return Json::parse(mark_non_finite(text));
+  } catch (const Json::parse_error& error) {
+    // Drop nlohmann's "[json.exception.parse_error.101] " prefix.
+    std::string message = error.what();
+    const size_t bracket = message.find("] ");
+    if (message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) {
+      message = message.substr(bracket + 2);
+    }
+    throw std::invalid_argument(source + ": not valid JSON: " + message);
+  }
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::invalid_argument(path + ": cannot open the file for reading");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+void fail(const std::string& path, const std::string& message) {
+  throw std::invalid_argument(path + ": " + message);
+}
+
+std::string child(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+
+std::string item(const std::string& path, size_t index) {
+  return path + "[" + std::to_string(index) + "]";
+}
+
+std::string type_name(const Json& value) {
+  if (value.is_number()) return "number";
+  return value.type_name();
+}
+
+void expect_object(const Json& value, const std::string& path,
+                   std::initializer_list<const char*> allowed) {
+  if (!value.is_object()) fail(path.empty() ? "(top level)" : path, "expected an object, got " + type_name(value));
+  for (auto it = value.begin(); it != value.end(); ++it) {
+    bool known = false;
+    for (const char* key : allowed) known = known || it.key() == key;
+    if (!known) fail(child(path, it.key()), "unknown field");
+  }
+}
+
+const Json& require(const Json& object, const std::string& path, const char* key) {
+  const auto it = object.find(key);
+  if (it == object.end()) fail(child(path, key), "missing");
+  return *it;
+}
+
+double number(const Json& value, const std::string& path) {
+  if (value.is_string()) {
+    const std::string& text = value.get_ref<const std::string&>();
+    if (text.rfind(kNonFiniteMarker, 0) == 0) {
+      fail(path, "must be a finite number, got " + text.substr(std::char_traits<char>::length(kNonFiniteMarker)));
+    }
+  }
+  if (!value.is_number()) fail(path, "expected a number, got " + type_name(value));
+  const double v = value.get<double>();
+  if (!std::isfinite(v)) fail(path, "must be a finite number");
+  return v;
+}
+
+long long integer(const Json& value, const std::string& path) {
+  if (!value.is_number_integer()) fail(path, "expected an integer, got " + type_name(value));
+  return value.get<long long>();
+}
+
+std::string string(const Json& value, const std::string& path) {
+  if (!value.is_string()) fail(path, "expected a string, got " + type_name(value));
+  return value.get<std::string>();
+}
+
+const Json& array(const Json& value, const std::string& path) {
+  if (!value.is_array()) fail(path, "expected an array, got " + type_name(value));
+  return value;
+}
+
+Vec2 point(const Json& value, const std::string& path) {
+  if (!value.is_array() || value.size() != 2) fail(path, "expected a point [x, y]");
+  return {number(value[0], item(path, 0)), number(value[1], item(path, 1))};
+}
+
+Json to_json(Vec2 p) { return Json::array({p.x, p.y}); }
+
+void expect_header(const Json& root, const char* format, int version) {
+  if (!root.is_object()) fail("(top level)", "expected an object, got " + type_name(root));
+  const std::string found = string(require(root, "", "format"), "format");
+  if (found != format) fail("format", std::string("expected \"") + format + "\", got \"" + found + "\"");
+  const long long v = integer(require(root, "", "version"), "version");
+  if (v != version) {
+    fail("version", "unsupported version " + std::to_string(v) + " (this Footfall reads version " +
+                        std::to_string(version) + ")");
+  }
+}
+
+}  // namespace footfall::detail

@@ -1,0 +1,51 @@
+#include "footfall/scenes.hpp"
+
+namespace footfall {
+
+Obstacle box_obstacle(Vec2 center, Vec2 size, double height) {
+  const Vec2 h = 0.5 * size;
+  return {{{center.x - h.x, center.y - h.y},
+           {center.x + h.x, center.y - h.y},
+           {center.x + h.x, center.y + h.y},
+           {center.x - h.x, center.y + h.y}},
+          height};
+}
+
+std::vector<Obstacle> wall_with_door(double x, double door_width, double door_center,
+                                     double half_length, double thickness) {
+  const double low = door_center - 0.5 * door_width;
+  const double high = door_center + 0.5 * door_width;
+  return {box_obstacle({x, 0.5 * (-half_length + low)}, {thickness, low + half_length}, 2.5),
+          box_obstacle({x, 0.5 * (high + half_length)}, {thickness, half_length - high}, 2.5)};
+}
+
+Scenario demo_scenario() {
+  Scenario scenario;
+  scenario.obstacles = wall_with_door(5.0, 1.0);
+  scenario.obstacles.push_back(box_obstacle({8.0, 0.0}, {1.0, 1.0}, 0.8));
+  scenario.agents.push_back({"walker", {0.0, 0.5}, 0.0, {{11.0, 0.3}}});
+  return scenario;
+}
+
+double SceneRandom::uniform(double lo, double hi) {
+  state_ += 0x9E3779B97F4A7C15ull;
+  std::uint64_t z = state_;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return lo + (hi - lo) * static_cast<double>(z >> 11) * 0x1.0p-53;
+}
+
+std::vector<Obstacle> box_field(int count, double size, std::uint64_t seed) {
+  SceneRandom random(seed);
+  std::vector<Obstacle> boxes;
+  boxes.reserve(static_cast<size_t>(count));
+  for (int i = 0; i < count; ++i) {
+    const Vec2 center{random.uniform(-0.5 * size, 0.5 * size), random.uniform(-0.5 * size, 0.5 * size)};
+    const Vec2 extent{random.uniform(0.5, 1.5), random.uniform(0.5, 1.5)};
+    boxes.push_back(box_obstacle(center, extent, 1.0));
+  }
+  return boxes;
+}
+
+}  // namespace footfall

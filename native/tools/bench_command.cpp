@@ -1,0 +1,104 @@
+#include "bench_command.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <string>
+#include <vector>
+
+#include "footfall/planner.hpp"
+#include "footfall/scenes.hpp"
+
+namespace footfall::tools {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Query {
+  FootstepState start;
+  Vec2 goal;
+};
+
+struct Workload {
+  std::string name;
+  std::vector<Obstacle> obstacles;
+  std::vector<Query> queries;
+};
+
+Query standing_query(Vec2 from, Vec2 to) {
+  return {standing_state(from, angle_of(to - from), CharacterParams{}), to};
+}
+
+// The table-1 workload for one character: random crossings of 10 m in a field
+// of 700 boxes, from standing, between points clear of the boxes.
+Workload box_field_workload() {
+  Workload workload{"field of 700 boxes", box_field(700, 80.0, 7), {}};
+  const ObstacleMap map(workload.obstacles);
+  const FootstepPlanner planner(CharacterParams{}, PlannerParams{}, map);
+  SceneRandom random(11);
+  while (workload.queries.size() < 100) {
+    const Vec2 from{random.uniform(-30.0, 30.0), random.uniform(-30.0, 30.0)};
+    const Vec2 to = from + 10.0 * unit(random.uniform(-kPi, kPi));
+    const Query query = standing_query(from, to);
+    if (planner.collides(query.start) || planner.collides(standing_state(to, 0.0, CharacterParams{}))) {
+      continue;
+    }
+    workload.queries.push_back(query);
+  }
+  return workload;
+}
+
+std::vector<Workload> workloads() {
+  std::vector<Workload> all;
+  all.push_back({"open 10 m", {}, {standing_query({0, 0}, {10, 0})}});
+  all.push_back({"around a box", {box_obstacle({4, 0}, {1, 1})}, {standing_query({0, 0}, {8, 0})}});
+  all.push_back({"0.7 m door", wall_with_door(4.0, 0.7), {standing_query({0, 0}, {8, 0})}});
+  all.push_back(box_field_workload());
+  return all;
+}
+
+double percentile(std::vector<double> values, double p) {
+  std::sort(values.begin(), values.end());
+  const size_t index = static_cast<size_t>(p * static_cast<double>(values.size() - 1) + 0.5);
+  return values[index];
+}
+
+}  // namespace
+
+void run_bench(int repeat, std::ostream& out) {
+  out << std::left << std::setw(20) << "workload" << std::right << std::setw(7) << "plans"
+      << std::setw(9) << "reached" << std::setw(8) << "steps" << std::setw(11) << "generated"
+      << std::setw(10) << "expanded" << std::setw(12) << "median ms" << std::setw(9) << "p90 ms"
+      << std::setw(12) << "us / step" << "\n";
+  for (const Workload& workload : workloads()) {
+    const ObstacleMap map(workload.obstacles);
+    const FootstepPlanner planner(CharacterParams{}, PlannerParams{}, map);
+    std::vector<double> milliseconds;
+    double steps = 0, generated = 0, expanded = 0, reached = 0;
+    for (const Query& query : workload.queries) {
+      for (int r = 0; r < repeat; ++r) {
+        const auto begin = std::chrono::steady_clock::now();
+        const SearchResult result = planner.plan(query.start, query.goal);
+        const auto end = std::chrono::steady_clock::now();
+        milliseconds.push_back(std::chrono::duration<double, std::milli>(end - begin).count());
+        if (r > 0) continue;
+        steps += static_cast<double>(result.footsteps.size());
+        generated += result.nodes_generated;
+        expanded += result.nodes_expanded;
+        reached += result.status == Status::kSuccess ? 1 : 0;
+      }
+    }
+    const double plans = static_cast<double>(workload.queries.size());
+    const double median = percentile(milliseconds, 0.5);
+    out << std::left << std::setw(20) << workload.name << std::right << std::setw(7)
+        << workload.queries.size() << std::setw(9) << reached << std::fixed << std::setprecision(1)
+        << std::setw(8) << steps / plans << std::setw(11) << generated / plans << std::setw(10)
+        << expanded / plans << std::setprecision(3) << std::setw(12) << median << std::setw(9)
+        << percentile(milliseconds, 0.9) << std::setprecision(1) << std::setw(12)
+        << 1000.0 * median / std::max(1.0, steps / plans) << "\n";
+  }
+  out << "(" << repeat << " timed runs per plan; one core; plans start standing)\n";
+}
+
+}  // namespace footfall::tools

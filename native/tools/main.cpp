@@ -1,0 +1,129 @@
+// footfall — the command-line program: plan scenarios, run the demo and the
+// benchmarks. Exit codes: 0 success, 2 bad input or usage, 1 other failure.
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bench_command.hpp"
+#include "footfall/plan.hpp"
+#include "footfall/plan_io.hpp"
+#include "footfall/scenes.hpp"
+
+namespace {
+
+constexpr int kExitBadInput = 2;
+
+const char* const kUsage =
+    "usage: footfall plan SCENARIO -o PLAN    plan every agent of a scenario file\n"
+    "       footfall demo [-o PLAN]           plan the built-in demo (default out/demo-plan.json)\n"
+    "       footfall bench [--repeat N]       time the planner on the standard workloads\n"
+    "       footfall --version | --help\n";
+
+struct UsageError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+void print_table(const footfall::Plan& plan, std::ostream& out) {
+  out << std::left << std::setw(14) << "agent" << std::setw(10) << "status" << std::right
+      << std::setw(7) << "steps" << std::setw(10) << "time [s]" << std::setw(11) << "cost [J]"
+      << std::setw(10) << "searches" << std::setw(10) << "expanded" << "\n";
+  for (const footfall::AgentPlan& agent : plan.agents) {
+    const std::string status = agent.status == footfall::AgentStatus::kReached
+                                   ? "reached"
+                                   : "partial (" + agent.reason + ")";
+    out << std::left << std::setw(14) << agent.name << std::setw(10) << status << std::right
+        << std::setw(7) << agent.footsteps.size() << std::setw(10) << std::fixed
+        << std::setprecision(2) << agent.end_time() << std::setw(11) << std::setprecision(1)
+        << agent.total_cost() << std::setw(10) << agent.searches << std::setw(10)
+        << agent.nodes_expanded << "\n";
+  }
+}
+
+// Plans, writes the plan atomically (creating the folder), prints the table.
+int plan_and_write(const footfall::Scenario& scenario, const std::string& output) {
+  const footfall::Plan plan = footfall::plan_scenario(scenario);
+  const std::filesystem::path folder = std::filesystem::path(output).parent_path();
+  if (!folder.empty()) std::filesystem::create_directories(folder);
+  footfall::write_plan_file(plan, output);
+  print_table(plan, std::cout);
+  std::cout << "plan written to " << output << "\n";
+  return 0;
+}
+
+// Reads "-o PATH" from the arguments after the verb; returns the positional ones.
+std::vector<std::string> parse_arguments(int argc, char** argv, std::string& output) {
+  std::vector<std::string> positional;
+  for (int i = 2; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-o" || arg == "--output") {
+      if (i + 1 >= argc) throw UsageError(arg + " needs a file name");
+      output = argv[++i];
+    } else if (!arg.empty() && arg[0] == '-') {
+      throw UsageError("unknown option " + arg);
+    } else {
+      positional.push_back(arg);
+    }
+  }
+  return positional;
+}
+
+int run(int argc, char** argv) {
+  if (argc < 2) throw UsageError("missing command");
+  const std::string verb = argv[1];
+  if (verb == "--help" || verb == "-h") {
+    std::cout << kUsage;
+    return 0;
+  }
+  if (verb == "--version") {
+    std::cout << "footfall " << FOOTFALL_VERSION << "\n";
+    return 0;
+  }
+  if (verb == "plan") {
+    std::string output;
+    const auto positional = parse_arguments(argc, argv, output);
+    if (positional.size() != 1) throw UsageError("plan takes one scenario file");
+    if (output.empty()) throw UsageError("plan needs -o PLAN");
+    return plan_and_write(footfall::load_scenario(positional[0]), output);
+  }
+  if (verb == "demo") {
+    std::string output = "out/demo-plan.json";
+    if (!parse_arguments(argc, argv, output).empty()) throw UsageError("demo takes no file");
+    return plan_and_write(footfall::demo_scenario(), output);
+  }
+  if (verb == "bench") {
+    int repeat = 20;
+    for (int i = 2; i < argc; ++i) {
+      if (std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) {
+        repeat = std::atoi(argv[++i]);
+        if (repeat < 1) throw UsageError("--repeat needs a positive number");
+      } else {
+        throw UsageError(std::string("unknown option ") + argv[i]);
+      }
+    }
+    footfall::tools::run_bench(repeat, std::cout);
+    return 0;
+  }
+  throw UsageError("unknown command " + verb);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const UsageError& error) {
+    std::cerr << "footfall: " << error.what() << "\n" << kUsage;
+    return kExitBadInput;
+  } catch (const std::invalid_argument& error) {
+    std::cerr << "footfall: " << error.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& error) {
+    std::cerr << "footfall: " << error.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,228 @@
+// The footstep planner of section 4 on the scenes, checked by an
+// independent collision oracle.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "footfall/plan.hpp"
+#include "footfall/plan_io.hpp"
+#include "footfall/planner.hpp"
+#include "footfall/scenes.hpp"
+#include "oracle.hpp"
+
+namespace footfall {
+namespace {
+
+Scenario one_agent(std::vector<Obstacle> obstacles, Vec2 from, double facing, Vec2 to) {
+  Scenario scenario;
+  scenario.obstacles = std::move(obstacles);
+  scenario.agents.push_back({"a", from, facing, {to}});
+  return scenario;
+}
+
+// Plans, and checks what every plan must satisfy.
+AgentPlan plan_and_check(const Scenario& scenario) {
+  const Plan plan = plan_scenario(scenario);
+  const AgentPlan& agent = plan.agents.at(0);
+  EXPECT_EQ(testing::first_contact(agent, scenario.character, scenario.obstacles), "");
+  const CharacterParams& c = scenario.character;
+  for (size_t i = 0; i < agent.footsteps.size(); ++i) {
+    const Footstep& s = agent.footsteps[i];
+    const FootLimits& limits = s.foot == Foot::kLeft ? c.left : c.right;
+    if (s.kind == StepKind::kWalk) {
+      EXPECT_GE(s.duration(), limits.min_step_duration - 1e-12);
+      EXPECT_LE(s.duration(), limits.max_step_duration + 1e-12);
+      EXPECT_GE(s.speed, limits.min_speed);
+      EXPECT_LE(s.speed, limits.max_speed);
+      const double stride = distance(s.com_start, s.com_end);
+      EXPECT_GE(stride, limits.min_step_length - 1e-12);
+      EXPECT_LE(stride, limits.max_step_length + 1e-12);
+      EXPECT_GT(s.alpha, 0.0);
+    }
+    // The chosen orientation lies in the step's interval.
+    EXPECT_NEAR(clamp_orientation(s.foot_orientation, s.orientation_interval, s.foot), s.foot_orientation, 1e-9);
+    if (i == 0) continue;
+    const Footstep& p = agent.footsteps[i - 1];
+    // Timed back to back, G1-continuous: same position, same velocity direction.
+    EXPECT_DOUBLE_EQ(s.start_time, p.end_time);
+    EXPECT_NEAR(distance(s.com_start, p.com_end), 0.0, 1e-12);
+    if (length(p.com_velocity_end) > 0 && length(s.com_velocity_start) > 0) {
+      EXPECT_NEAR(wrap_angle(angle_of(s.com_velocity_start) - angle_of(p.com_velocity_end)), 0.0, 1e-9) << i;
+    }
+    // Walking steps alternate feet.
+    if (p.kind == StepKind::kWalk) {
+      EXPECT_NE(s.foot, p.foot) << i;
+    }
+  }
+  return agent;
+}
+
+void expect_reached(const AgentPlan& agent, Vec2 goal, const PlannerParams& params = {}) {
+  EXPECT_EQ(agent.status, AgentStatus::kReached) << agent.reason;
+  ASSERT_FALSE(agent.footsteps.empty());
+  // Ends standing, within the tolerance plus the coasting of the stop.
+  EXPECT_EQ(agent.footsteps.back().kind, StepKind::kStop);
+  EXPECT_TRUE(length(agent.footsteps.back().com_velocity_end) == 0.0);
+  EXPECT_LT(distance(agent.footsteps.back().com_end, goal), params.goal_tolerance + 0.6);
+}
+
+TEST(Planner, StraightWalkReachesTheGoal) {
+  const AgentPlan agent = plan_and_check(one_agent({}, {0, 0}, 0, {10, 0}));
+  expect_reached(agent, {10, 0});
+  EXPECT_GE(agent.footsteps.size(), 12u);
+  // Stays near the straight line.
+  for (const Footstep& s : agent.footsteps) EXPECT_LT(std::fabs(s.com_end.y), 0.5);
+}
+
+TEST(Planner, TurnsToGoalsBesideAndBehind) {
+  for (const Vec2 goal : {Vec2{0, 5}, Vec2{0, -5}, Vec2{-5, 0}, Vec2{-4, 1}}) {
+    SCOPED_TRACE(::testing::Message() << "goal " << goal.x << ", " << goal.y);
+    const AgentPlan agent = plan_and_check(one_agent({}, {0, 0}, 0, goal));
+    expect_reached(agent, goal);
+  }
+}
+
+TEST(Planner, TurnsWhileWalking) {
+  // A walking character whose goal lies behind it turns around.
+  const CharacterParams character;
+  const ObstacleMap none;
+  const FootstepPlanner planner(character, PlannerParams{}, none);
+  FootstepState state = standing_state({0, 0}, 0, character);
+  state.com_velocity = {1.3, -0.05};
+  state.last_foot = Foot::kLeft;
+  state.foot_orientation[0] = {0, 0};
+  const SearchResult result = planner.plan(state, {-4, 0});
+  EXPECT_EQ(result.status, Status::kSuccess);
+  EXPECT_LT(distance(result.end_state.com, {-4, 0}), PlannerParams{}.goal_tolerance + 1e-12);
+}
+
+TEST(Planner, WalksAroundABox) {
+  const Obstacle box = box_obstacle({4, 0}, {1, 1});
+  const AgentPlan agent = plan_and_check(one_agent({box}, {0, 0}, 0, {8, 0}));
+  expect_reached(agent, {8, 0});
+  double widest = 0;
+  for (const Footstep& s : agent.footsteps) widest = std::max(widest, std::fabs(s.com_end.y));
+  EXPECT_GT(widest, 0.5 + 0.3);  // the torso passed beside the box, not through it
+}
+
+TEST(Planner, PassesDoorways) {
+  for (const double door : {1.0, 0.7}) {
+    SCOPED_TRACE(::testing::Message() << "door " << door);
+    const AgentPlan agent = plan_and_check(one_agent(wall_with_door(4.0, door), {0, 0}, 0, {8, 0}));
+    expect_reached(agent, {8, 0});
+  }
+}
+
+TEST(Planner, DemoReachesThroughTheDoorAndAroundTheBox) {
+  const Scenario demo = demo_scenario();
+  const AgentPlan agent = plan_and_check(demo);
+  expect_reached(agent, demo.agents[0].goals[0]);
+}
+
+TEST(Planner, EnclosedGoalGivesAPartialPlanEndingInStops) {
+  // A closed room around the goal: unreachable, though not inside an obstacle.
+  const std::vector<Obstacle> room = {box_obstacle({6, 2}, {4.2, 0.2}), box_obstacle({6, -2}, {4.2, 0.2}),
+          box_obstacle({4, 0}, {0.2, 4.2}), box_obstacle({8, 0}, {0.2, 4.2})};
+  Scenario scenario = one_agent(room, {0, 0}, 0, {6, 0});
+  scenario.planner.max_expansions = 300;
+  const AgentPlan agent = plan_and_check(scenario);
+  EXPECT_EQ(agent.status, AgentStatus::kPartial);
+  EXPECT_EQ(agent.reason, "stuck");
+  ASSERT_FALSE(agent.footsteps.empty());
+  EXPECT_EQ(agent.footsteps.back().kind, StepKind::kStop);
+  EXPECT_LE(agent.nodes_expanded, static_cast<long long>(agent.searches) * 300);
+  EXPECT_LT(agent.end_time(), 30.0);
+}
+
+TEST(Planner, HorizonReturnsThePathToTheMostPromisingNode) {
+  const CharacterParams character;
+  PlannerParams params;
+  params.max_expansions = 4;
+  const ObstacleMap none;
+  const FootstepPlanner planner(character, params, none);
+  const FootstepState start = standing_state({0, 0}, 0, character);
+  const SearchResult result = planner.plan(start, {10, 0});
+  EXPECT_EQ(result.status, Status::kPartial);
+  EXPECT_LE(result.nodes_expanded, 4);
+  ASSERT_FALSE(result.footsteps.empty());
+  EXPECT_LT(distance(result.end_state.com, {10, 0}), 10.0);
+  EXPECT_LT(planner.heuristic(result.end_state, {10, 0}), planner.heuristic(start, {10, 0}));
+}
+
+TEST(Planner, StandingCharacterWithNowhereToGoWaits) {
+  // Boxed in tight: no step is possible, so the best the planner offers is a wait.
+  const CharacterParams character;
+  // Inside: 0.44 m deep (the torso is 0.3 deep), 0.68 m wide (it is 0.6 wide).
+  const std::vector<Obstacle> cell = {box_obstacle({0, 0.44}, {1.0, 0.2}), box_obstacle({0, -0.44}, {1.0, 0.2}),
+                                      box_obstacle({0.32, 0}, {0.2, 1.0}), box_obstacle({-0.32, 0}, {0.2, 1.0})};
+  const ObstacleMap map(cell);
+  const FootstepPlanner planner(character, PlannerParams{}, map);
+  const SearchResult result = planner.plan(standing_state({0, 0}, 0, character), {5, 0});
+  EXPECT_EQ(result.status, Status::kPartial);
+  ASSERT_EQ(result.footsteps.size(), 1u);
+  EXPECT_EQ(result.footsteps[0].kind, StepKind::kStop);
+}
+
+TEST(Planner, ReportsInvalidStartAndGoal) {
+  const CharacterParams character;
+  const ObstacleMap map({box_obstacle({3, 0}, {1, 1})});
+  const FootstepPlanner planner(character, PlannerParams{}, map);
+  EXPECT_EQ(planner.plan(standing_state({3, 0}, 0, character), {6, 0}).status, Status::kInvalidStart);
+  EXPECT_EQ(planner.plan(standing_state({0, 0}, 0, character), {3, 0}).status, Status::kInvalidGoal);
+}
+
+TEST(Planner, SameInputGivesBitIdenticalPlans) {
+  Scenario scenario = demo_scenario();
+  scenario.agents.push_back({"second", {0, -3}, 0.3, {{11, -2}, {2, 4}}});
+  const std::string first = plan_to_json(plan_scenario(scenario));
+  const std::string second = plan_to_json(plan_scenario(scenario));
+  EXPECT_EQ(first, second);
+}
+
+TEST(Planner, GoalSequencesAreWalkedInOrder) {
+  Scenario scenario;
+  scenario.agents.push_back({"a", {0, 0}, 0, {{4, 0}, {4, 4}, {0, 4}}});
+  const AgentPlan agent = plan_and_check(scenario);
+  expect_reached(agent, {0, 4});
+  EXPECT_EQ(agent.goals_reached, 3);
+  // Intermediate goals are walked through, not stopped at.
+  int stops = 0;
+  for (const Footstep& s : agent.footsteps) stops += s.kind == StepKind::kStop ? 1 : 0;
+  EXPECT_EQ(stops, 2);
+}
+
+TEST(Planner, FootOrientationsKeepThePairRule) {
+  const Scenario demo = demo_scenario();
+  const AgentPlan agent = plan_scenario(demo).agents[0];
+  const double max_turn = demo.character.max_foot_turn;
+  std::array<double, 2> last{agent.start.facing, agent.start.facing};
+  for (const Footstep& s : agent.footsteps) {
+    // Outward from the other foot's orientation by 0 to max_foot_turn.
+    const double outward = outward_sign(s.foot) * wrap_angle(s.foot_orientation - last[static_cast<int>(other(s.foot))]);
+    EXPECT_GE(outward, -1e-9);
+    EXPECT_LE(outward, max_turn + 1e-9);
+    last[static_cast<int>(s.foot)] = s.foot_orientation;
+  }
+}
+
+TEST(Plan, EvaluatesFeetAndCirclesOverTime) {
+  const AgentPlan agent = plan_scenario(demo_scenario()).agents[0];
+  const CharacterParams character;
+  const Footstep& step = agent.footsteps[3];
+  const double mid = 0.5 * (step.start_time + step.end_time);
+  const auto feet = feet_at(agent, mid);
+  const FootPose& stance = feet[static_cast<int>(step.foot)];
+  EXPECT_TRUE(stance.planted);
+  EXPECT_EQ(stance.position, step.foot_position);
+  const FootPose& swing = feet[static_cast<int>(other(step.foot))];
+  EXPECT_FALSE(swing.planted);
+  EXPECT_GT(swing.lift, 0.0);
+  EXPECT_EQ(collision_circles(agent, character, mid).size(), 4u);  // torso + one planted foot
+  EXPECT_EQ(collision_circles(agent, character, agent.end_time() + 1).size(), 5u);
+  // The swing foot lands where the next step plants it.
+  const auto landed = feet_at(agent, step.end_time);
+  EXPECT_EQ(landed[static_cast<int>(other(step.foot))].position, agent.footsteps[4].foot_position);
+}
+
+}  // namespace
+}  // namespace footfall
