@@ -1,0 +1,90 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Scenario documents from plain Python data, and planning them.
+
+A scenario document is the scenario file format (docs/file-formats.md) as a
+dict. Scenes extracted from Blender are turned into one here, then validated
+and planned by the core, which names the field of any bad value.
+"""
+
+import json
+from dataclasses import dataclass, field
+from typing import Optional, Sequence, Tuple
+
+from . import native
+
+Point = Tuple[float, float]
+
+
+@dataclass(frozen=True)
+class AgentInput:
+    """One agent: name, standing position [m], goals [m], facing [rad] (None: toward the first goal)."""
+
+    name: str
+    position: Point
+    goals: Sequence[Point]
+    facing: Optional[float] = None
+
+
+@dataclass(frozen=True)
+class ObstacleInput:
+    """A polygon [m] in the ground plane, extruded to `height` [m]."""
+
+    polygon: Sequence[Point]
+    height: float = 2.0
+
+
+@dataclass(frozen=True)
+class ScenarioInput:
+    """Agents, obstacles and parameter overrides (field names as in the file format)."""
+
+    agents: Sequence[AgentInput] = ()
+    obstacles: Sequence[ObstacleInput] = ()
+    character: dict = field(default_factory=dict)
+    planner: dict = field(default_factory=dict)
+
+
+def _point(p):
+    return [float(p[0]), float(p[1])]
+
+
+def scenario_document(scenario: ScenarioInput) -> dict:
+    """The scenario as a document of the scenario file format."""
+    agents = []
+    for agent in scenario.agents:
+        entry = {
+            "name": agent.name,
+            "position": _point(agent.position),
+            "goals": [_point(g) for g in agent.goals],
+        }
+        if agent.facing is not None:
+            entry["facing"] = float(agent.facing)
+        agents.append(entry)
+    document = {
+        "format": "footfall-scenario",
+        "version": 1,
+        "obstacles": [
+            {"polygon": [_point(p) for p in o.polygon], "height": float(o.height)}
+            for o in scenario.obstacles
+        ],
+        "agents": agents,
+    }
+    if scenario.character:
+        document["character"] = dict(scenario.character)
+    if scenario.planner:
+        document["planner"] = dict(scenario.planner)
+    return document
+
+
+def parse(document: dict, source: str = "<scene>"):
+    """Validates a document with the core; returns its native Scenario.
+
+    Raises ValueError "SOURCE: FIELD.PATH: problem" for bad input. Non-finite
+    numbers are passed through so that the core can name their field.
+    """
+    return native.load().parse_scenario(json.dumps(document, allow_nan=True), source)
+
+
+def plan(document: dict, source: str = "<scene>", progress=None, cancel=None):
+    """Validates and plans a document; returns the native Plan."""
+    core = native.load()
+    return core.plan_scenario(parse(document, source), progress=progress, cancel=cancel)

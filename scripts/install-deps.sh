@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs what Footfall needs to build and test, from Debian's packages.
+# Idempotent: does nothing when everything is already there. Run as root.
+set -euo pipefail
+
+packages=(
+  cmake g++ make
+  pybind11-dev nlohmann-json3-dev python3-dev
+  libgtest-dev
+  python3-pytest
+  blender
+)
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if ((${#missing[@]})); then
+  echo "Installing: ${missing[*]}"
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The second README command: every test. Installs and builds what it needs;
+# runs all three tiers (GoogleTest, pytest, Blender background tests), then
+# the native and Python tiers again built with AddressSanitizer and
+# UndefinedBehaviorSanitizer.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+
+scripts/build.sh
+ctest --test-dir build --output-on-failure
+
+# The sanitized module goes to a folder of its own, so it never replaces the
+# one that Blender loads from blender_addon/footfall.
+BUILD_DIR=build-sanitize scripts/build.sh -DFOOTFALL_SANITIZE=ON
+ctest --test-dir build-sanitize --output-on-failure -L 'native|python'

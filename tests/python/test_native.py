@@ -1,0 +1,137 @@
+"""footfall._native from Python: planning, errors as Python exceptions, GIL, cancel."""
+
+import json
+import math
+import threading
+
+import pytest
+
+from conftest import scenario_json
+
+
+def test_demo_plans_to_the_goal(ff):
+    plan = ff.plan_scenario(ff.demo_scenario())
+    (walker,) = plan.agents
+    assert walker.status == ff.AgentStatus.REACHED
+    assert walker.footsteps[-1].kind == ff.StepKind.STOP
+    goal = ff.demo_scenario().agents[0].goals[0]
+    assert math.dist(walker.footsteps[-1].com_end, goal) < 1.0
+    feet = ff.feet_at(walker, walker.footsteps[2].start_time + 0.1)
+    assert len(feet) == 2 and not all(f.planted for f in feet)
+
+
+def test_create_footstep_from_python(ff):
+    character = ff.CharacterParams()
+    start = ff.standing_state((0.0, 0.0), 0.0, character)
+    action = ff.FootstepAction(ff.StepKind.WALK, ff.Foot.LEFT, -0.1, 1.0, 0.5)
+    result = ff.create_footstep(start, action, character)
+    assert result.valid()
+    assert result.step.com_end[0] == pytest.approx(0.5 * math.cos(0.1) * math.cos(-0.1), rel=1e-12)
+    # Starting from rest pays the whole kinetic energy.
+    assert result.step.cost.speed_change == pytest.approx(0.5 * character.mass * 1.0)
+    bad = ff.create_footstep(start, ff.FootstepAction(ff.StepKind.WALK, ff.Foot.LEFT, 0.1, 1.0, 0.5), character)
+    assert bad.validity == ff.StepValidity.NOT_POSITIVE
+
+
+@pytest.mark.parametrize(
+    "parts, message",
+    [
+        ({"agents": [{"position": [0, "x"], "goals": [[1, 1]]}]}, "agents[0].position[1]: expected a number, got string"),
+        ({"agents": [{"position": [float("nan"), 0], "goals": [[1, 1]]}]}, "agents[0].position[0]: must be a finite number, got NaN"),
+        ({"obstacles": [{"polygon": [[0, 0], [1, 1]]}]}, "obstacles[0].polygon: needs at least 3 points, got 2"),
+        (
+            {"obstacles": [{"polygon": [[-1, -1], [1, -1], [1, 1]]}], "agents": [{"position": [0, 0], "goals": [[5, 0]]}]},
+            "agents[0].position: the standing agent overlaps obstacles[0]",
+        ),
+        ({"character": {"height": 2}}, "character.height: unknown field"),
+        ({"planner": {"max_expansions": 1.5}}, "planner.max_expansions: expected an integer, got number"),
+    ],
+)
+def test_bad_scenarios_raise_value_error_naming_the_field(ff, parts, message):
+    with pytest.raises(ValueError) as error:
+        ff.parse_scenario(scenario_json(**parts), "scene.json")
+    assert str(error.value) == "scene.json: " + message
+
+
+def test_malformed_json_names_the_position(ff):
+    with pytest.raises(ValueError, match=r"^scene.json: not valid JSON: .*line 1, column \d+"):
+        ff.parse_scenario('{"format": "footfall-scenario",', "scene.json")
+
+
+def test_parameter_validation_names_field_and_limit(ff):
+    character = ff.CharacterParams()
+    character.right.min_step_duration = 0.0
+    with pytest.raises(ValueError, match=r"^character.right.min_step_duration: must be in \(0, 5\], got 0$"):
+        ff.validate(character)
+
+
+def test_io_failure_is_a_footfall_error(ff, tmp_path):
+    plan = ff.plan_scenario(ff.demo_scenario())
+    with pytest.raises(ff.FootfallError):
+        ff.write_plan_file(plan, str(tmp_path / "missing-dir" / "plan.json"))
+    assert not list(tmp_path.iterdir())
+    with pytest.raises(ValueError, match="cannot open the file"):
+        ff.load_plan(str(tmp_path / "none.json"))
+
+
+def test_plan_file_fields(ff, tmp_path):
+    path = tmp_path / "plan.json"
+    ff.write_plan_file(ff.plan_scenario(ff.demo_scenario()), str(path))
+    document = json.loads(path.read_text())
+    assert document["format"] == "footfall-plan" and document["version"] == 1
+    agent = document["agents"][0]
+    assert agent["status"] == "reached"
+    step = agent["footsteps"][0]
+    for key in ("foot", "start_time", "end_time", "foot_position", "foot_orientation", "com_start", "com_end",
+                "com_velocity_start", "com_velocity_end", "behavior", "cost"):
+        assert key in step
+    assert step["foot"] in ("left", "right") and step["behavior"] == "walk"
+
+
+def test_plans_are_bit_identical(ff):
+    scenario = ff.demo_scenario()
+    assert ff.plan_to_json(ff.plan_scenario(scenario)) == ff.plan_to_json(ff.plan_scenario(scenario))
+
+
+def test_progress_and_cancel(ff):
+    scenario = ff.demo_scenario()
+    scenario.agents = [ff.AgentSpec(f"a{i}", (0.0, 0.5), 0.0, [(11.0, 0.3)]) for i in range(4)]
+    seen = []
+    plan = ff.plan_scenario(scenario, progress=seen.append)
+    assert seen and seen[-1] == 1.0 and seen == sorted(seen)
+    assert plan.status == ff.Status.SUCCESS
+
+    flag = ff.CancelFlag()
+    flag.set()
+    cancelled = ff.plan_scenario(scenario, cancel=flag)
+    assert cancelled.status == ff.Status.CANCELLED
+    assert len(cancelled.agents) == 0
+
+
+def test_progress_callback_errors_propagate(ff):
+    def explode(fraction):
+        raise RuntimeError("stop here")
+
+    with pytest.raises(RuntimeError, match="stop here"):
+        ff.plan_scenario(ff.demo_scenario(), progress=explode)
+
+
+def test_planning_releases_the_gil(ff):
+    # While one thread plans, another Python thread keeps running.
+    scenario = ff.demo_scenario()
+    scenario.agents = [ff.AgentSpec(f"a{i}", (0.0, 0.5), 0.0, [(11.0, 0.3)]) for i in range(30)]
+    ticks = []
+    done = threading.Event()
+
+    def count():
+        while not done.is_set():
+            ticks.append(1)
+
+    counter = threading.Thread(target=count)
+    counter.start()
+    try:
+        ff.plan_scenario(scenario)
+    finally:
+        done.set()
+        counter.join()
+    assert len(ticks) > 100
