@@ -17,7 +17,8 @@ void bind_planner(py::module_& m) {
 
   py::class_<ObstacleMap>(m, "ObstacleMap", "Static obstacles indexed for circle queries.")
       .def(py::init<std::vector<Obstacle>>(), py::arg("obstacles"))
-      .def("first_overlap", &ObstacleMap::first_overlap, py::arg("circle"))
+      .def("first_overlap", py::overload_cast<const Circle&>(&ObstacleMap::first_overlap, py::const_),
+           py::arg("circle"))
       .def("overlaps", &ObstacleMap::overlaps, py::arg("circle"))
       .def("contains", &ObstacleMap::contains, py::arg("index"), py::arg("point"))
       .def_property_readonly("obstacles", &ObstacleMap::obstacles);

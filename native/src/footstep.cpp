@@ -1,5 +1,7 @@
 #include "footfall/footstep.hpp"
 
+#include "footstep_shape.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -13,15 +15,15 @@ const FootLimits& limits_of(const CharacterParams& character, Foot foot) {
   return foot == Foot::kLeft ? character.left : character.right;
 }
 
-Vec2 normalized(Vec2 v) {
-  const double len = length(v);
-  return {v.x / len, v.y / len};
+// cos(2 theta) from tan(theta), theta the leg's angle from vertical.
+double cos_double_angle(double tan_theta) {
+  return (1.0 - tan_theta * tan_theta) / (1.0 + tan_theta * tan_theta);
 }
 
 // dE2 of equation 4: the work to reach the desired speed after heel strike
 // dissipated the momentum along the new leg.
-double speed_change_cost(double mass, double desired_speed, double incoming_speed, double theta) {
-  const double kept = incoming_speed * std::cos(2.0 * theta);
+double speed_change_cost(double mass, double desired_speed, double incoming_speed, double cos_2theta) {
+  const double kept = incoming_speed * cos_2theta;
   return 0.5 * mass * std::fabs(desired_speed * desired_speed - kept * kept);
 }
 
@@ -35,75 +37,15 @@ StepResult create_walk(const FootstepState& state, const FootstepAction& action,
                        const CharacterParams& character) {
   const Foot foot = action.foot;
   if (!state.standing() && foot == state.last_foot) return invalid(StepValidity::kWrongFoot);
-  const FootLimits& limits = limits_of(character, foot);
-  const double T = action.duration;
-  if (T < limits.min_step_duration || T > limits.max_step_duration) {
-    return invalid(StepValidity::kDurationOutOfRange);
-  }
-  if (action.speed < limits.min_speed || action.speed > limits.max_speed) {
-    return invalid(StepValidity::kSpeedOutOfRange);
-  }
-  const double s = outward_sign(foot);
-  // Local parabola frame: +x along phi, +y away from the stance foot.
-  const Vec2 x_axis = unit(action.phi);
-  const Vec2 y_axis = -s * perp(x_axis);
-  // The previous velocity direction (the facing when standing), rescaled.
-  const Vec2 direction = state.standing() ? unit(state.facing) : normalized(state.com_velocity);
-  const double vx0 = action.speed * dot(direction, x_axis);
-  const double vy0 = action.speed * dot(direction, y_axis);
-  // Incoming velocity at t = -T/2 is (vx0, -alpha T): alpha > 0 needs vy0 < 0.
-  if (!(vy0 < 0.0)) return invalid(StepValidity::kNotPositive);
-  const double alpha = -vy0 / T;
-  const double chord = vx0 * T;
-  if (chord < limits.min_step_length || chord > limits.max_step_length) {
-    return invalid(StepValidity::kLengthOutOfRange);
-  }
-
-  // Orientation interval: [phi, incoming velocity] within reach of the other foot.
-  const OrientationInterval trajectory{action.phi, action.phi + s * std::atan2(-vy0, vx0)};
+  const detail::Heading heading = detail::heading_of(state);
+  // phi lies inward of the incoming velocity: clockwise for a left step.
+  const double turn = -outward_sign(foot) * wrap_angle(action.phi - heading.angle);
+  const detail::StepShape shape = detail::step_shape(action.speed, action.duration, turn, character);
+  const StepValidity limits = detail::check_limits(shape, limits_of(character, foot));
+  if (limits != StepValidity::kValid) return invalid(limits);
   const OrientationInterval reach = reachable_orientations(
       state.foot_orientation[static_cast<int>(other(foot))], other(foot), character.max_foot_turn);
-  OrientationInterval interval;
-  if (!intersect(reach, trajectory, foot, &interval)) {
-    return invalid(StepValidity::kOrientationEmpty);
-  }
-
-  // Equation 1 at t = +-T/2, back in world space. The chord lies along +x.
-  const double half = 0.5 * T;
-  const Vec2 vertex = state.com - (-vx0 * half) * x_axis - (alpha * half * half) * y_axis;
-  StepResult result;
-  Footstep& step = result.step;
-  step.foot = foot;
-  step.kind = StepKind::kWalk;
-  step.start_time = state.time;
-  step.end_time = state.time + T;
-  step.foot_position = vertex - character.foot_offset * y_axis;
-  step.orientation_interval = interval;
-  step.foot_orientation = clamp_orientation(action.phi, interval, foot);
-  step.com_start = state.com;
-  step.com_end = state.com + chord * x_axis;
-  step.com_velocity_start = vx0 * x_axis + vy0 * y_axis;
-  step.com_velocity_end = vx0 * x_axis + (alpha * T) * y_axis;
-  step.phi = action.phi;
-  step.speed = action.speed;
-  step.alpha = alpha;
-  const double theta = std::atan2(vx0 * half, character.com_height);
-  const double incoming_speed = length(state.com_velocity);
-  step.cost.fixed_rate = character.energy_rate * T;
-  step.cost.speed_change = speed_change_cost(character.mass, action.speed, incoming_speed, theta);
-  step.cost.curvature =
-      character.curvature_weight * character.mass * alpha * arc_length(vx0, alpha, T);
-
-  FootstepState& next = result.state;
-  next = state;
-  next.com = step.com_end;
-  next.com_velocity = step.com_velocity_end;
-  next.last_foot = foot;
-  next.feet[static_cast<int>(foot)] = step.foot_position;
-  next.foot_orientation[static_cast<int>(foot)] = interval;
-  next.facing = action.phi;
-  next.time = step.end_time;
-  return result;
+  return detail::walk_step(state, foot, heading, shape, action.phi, reach, character);
 }
 
 // The stop action: the COM decelerates uniformly to rest, and the stepping foot
@@ -133,9 +75,10 @@ StepResult create_stop(const FootstepState& state, const FootstepAction& action,
   step.com_velocity_start = state.com_velocity;
   step.com_velocity_end = {0.0, 0.0};
   step.phi = state.facing;
-  const double theta = std::atan2(distance(rest, state.com), character.com_height);
+  const double tan_theta = distance(rest, state.com) / character.com_height;
   step.cost.fixed_rate = character.energy_rate * T;
-  step.cost.speed_change = speed_change_cost(character.mass, 0.0, length(state.com_velocity), theta);
+  step.cost.speed_change =
+      speed_change_cost(character.mass, 0.0, length(state.com_velocity), cos_double_angle(tan_theta));
 
   FootstepState& next = result.state;
   next = state;
@@ -153,6 +96,102 @@ StepResult create_stop(const FootstepState& state, const FootstepAction& action,
 }
 
 }  // namespace
+
+namespace detail {
+
+StepShape step_shape(double speed, double duration, double turn, const CharacterParams& character) {
+  StepShape shape;
+  shape.speed = speed;
+  shape.duration = duration;
+  shape.turn = turn;
+  shape.cos_turn = std::cos(turn);
+  shape.sin_turn = std::sin(turn);
+  // Incoming local velocity (vx0, vy0) = v (cos turn, -sin turn) = (vx0, -alpha T).
+  shape.vx0 = speed * shape.cos_turn;
+  shape.alpha = speed * shape.sin_turn / duration;
+  shape.chord = shape.vx0 * duration;
+  shape.cos_2theta = cos_double_angle(0.5 * shape.chord / character.com_height);
+  shape.fixed_rate = character.energy_rate * duration;
+  shape.curvature =
+      character.curvature_weight * character.mass * shape.alpha * arc_length(shape.vx0, shape.alpha, duration);
+  return shape;
+}
+
+StepValidity check_limits(const StepShape& shape, const FootLimits& limits) {
+  if (shape.duration < limits.min_step_duration || shape.duration > limits.max_step_duration) {
+    return StepValidity::kDurationOutOfRange;
+  }
+  if (shape.speed < limits.min_speed || shape.speed > limits.max_speed) return StepValidity::kSpeedOutOfRange;
+  // alpha > 0: the incoming velocity points toward the stance foot.
+  if (!(shape.alpha > 0.0)) return StepValidity::kNotPositive;
+  if (shape.chord < limits.min_step_length || shape.chord > limits.max_step_length) {
+    return StepValidity::kLengthOutOfRange;
+  }
+  return StepValidity::kValid;
+}
+
+Heading heading_of(const FootstepState& state) {
+  Heading heading;
+  if (state.standing()) {
+    heading.angle = state.facing;
+    heading.direction = unit(state.facing);
+  } else {
+    heading.speed = length(state.com_velocity);
+    heading.direction = (1.0 / heading.speed) * state.com_velocity;
+    heading.angle = angle_of(state.com_velocity);
+  }
+  return heading;
+}
+
+StepResult walk_step(const FootstepState& state, Foot foot, const Heading& heading,
+                     const StepShape& shape, double phi, const OrientationInterval& reach,
+                     const CharacterParams& character) {
+  const double s = outward_sign(foot);
+  // Orientation interval: [phi, incoming velocity] within reach of the other foot.
+  OrientationInterval interval;
+  if (!intersect(reach, {phi, phi + s * shape.turn}, foot, &interval)) {
+    return invalid(StepValidity::kOrientationEmpty);
+  }
+  // Local parabola frame: +x along phi, +y away from the stance foot.
+  const Vec2 x_axis = shape.cos_turn * heading.direction - (s * shape.sin_turn) * perp(heading.direction);
+  const Vec2 y_axis = -s * perp(x_axis);
+  // Equation 1 at t = +-T/2, back in world space. The chord lies along +x.
+  const double T = shape.duration;
+  const double half = 0.5 * T;
+  const Vec2 vertex = state.com + (shape.vx0 * half) * x_axis - (shape.alpha * half * half) * y_axis;
+  StepResult result;
+  Footstep& step = result.step;
+  step.foot = foot;
+  step.kind = StepKind::kWalk;
+  step.start_time = state.time;
+  step.end_time = state.time + T;
+  step.foot_position = vertex - character.foot_offset * y_axis;
+  step.orientation_interval = interval;
+  step.foot_orientation = interval.inner;  // phi, or as near as the other foot allows
+  step.com_start = state.com;
+  step.com_end = state.com + shape.chord * x_axis;
+  step.com_velocity_start = shape.speed * heading.direction;
+  step.com_velocity_end = shape.vx0 * x_axis + (shape.alpha * T) * y_axis;
+  step.phi = phi;
+  step.speed = shape.speed;
+  step.alpha = shape.alpha;
+  step.cost.fixed_rate = shape.fixed_rate;
+  step.cost.speed_change = speed_change_cost(character.mass, shape.speed, heading.speed, shape.cos_2theta);
+  step.cost.curvature = shape.curvature;
+
+  FootstepState& next = result.state;
+  next = state;
+  next.com = step.com_end;
+  next.com_velocity = step.com_velocity_end;
+  next.last_foot = foot;
+  next.feet[static_cast<int>(foot)] = step.foot_position;
+  next.foot_orientation[static_cast<int>(foot)] = interval;
+  next.facing = phi;
+  next.time = step.end_time;
+  return result;
+}
+
+}  // namespace detail
 
 const char* to_string(Foot foot) { return foot == Foot::kLeft ? "left" : "right"; }
 

@@ -88,13 +88,15 @@ bool ObstacleMap::circle_overlaps(int index, const Circle& circle) const {
   return contains(index, c);
 }
 
-int ObstacleMap::first_overlap(const Circle& circle) const {
+int ObstacleMap::cell_of(double v, double origin, int count) const {
+  return std::clamp(static_cast<int>(std::floor((v - origin) / cell_size_)), 0, count - 1);
+}
+
+template <typename Visit>
+int ObstacleMap::visit_near(const Circle& circle, Visit visit) const {
   if (cells_.empty()) return -1;
   const Vec2 c = circle.center;
   const double r = circle.radius;
-  const auto cell_of = [this](double v, double origin, int count) {
-    return std::clamp(static_cast<int>(std::floor((v - origin) / cell_size_)), 0, count - 1);
-  };
   if (c.x + r < bounds_.min.x || c.x - r > bounds_.max.x || c.y + r < bounds_.min.y ||
       c.y - r > bounds_.max.y) {
     return -1;
@@ -106,15 +108,36 @@ int ObstacleMap::first_overlap(const Circle& circle) const {
   for (int row = r0; row <= r1; ++row) {
     for (int col = c0; col <= c1; ++col) {
       for (const int index : cells_[static_cast<size_t>(row) * columns_ + col]) {
-        // Test each obstacle in one cell only: the first cell that both the
-        // query's and the obstacle's boxes cover.
         const Box& box = boxes_[index];
+        if (c.x + r < box.min.x || c.x - r > box.max.x || c.y + r < box.min.y || c.y - r > box.max.y) {
+          continue;
+        }
+        // Visit each obstacle in one cell only: the first cell that both the
+        // query's and the obstacle's boxes cover.
         const int first_col = std::max(c0, cell_of(box.min.x, bounds_.min.x, columns_));
         const int first_row = std::max(r0, cell_of(box.min.y, bounds_.min.y, rows_));
         if (col != first_col || row != first_row) continue;
-        if (circle_overlaps(index, circle)) return index;
+        if (visit(index)) return index;
       }
     }
+  }
+  return -1;
+}
+
+int ObstacleMap::first_overlap(const Circle& circle) const {
+  return visit_near(circle, [&](int index) { return circle_overlaps(index, circle); });
+}
+
+void ObstacleMap::gather(const Circle& region, std::vector<int>& out) const {
+  visit_near(region, [&](int index) {
+    out.push_back(index);
+    return false;
+  });
+}
+
+int ObstacleMap::first_overlap(const Circle& circle, const std::vector<int>& candidates) const {
+  for (const int index : candidates) {
+    if (circle_overlaps(index, circle)) return index;
   }
   return -1;
 }

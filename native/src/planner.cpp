@@ -1,63 +1,145 @@
 #include "footfall/planner.hpp"
 
+#include "footstep_shape.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <queue>
 #include <stdexcept>
 #include <string>
-#include <unordered_set>
 
 namespace footfall {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 // Two generated states that fall in the same cell of (COM 4 cm, velocity
-// heading 4 degrees, speed 0.1 m/s, last foot) are treated as one: the later
-// one is dropped. This keeps the search from re-expanding near-identical states.
+// heading 4 degrees, speed 0.1 m/s, standing, last foot) are treated as one:
+// the later one is dropped. This keeps the search from re-expanding
+// near-identical states.
 constexpr double kCellPosition = 0.04;
 constexpr double kCellHeading = 4.0 * kPi / 180.0;
 constexpr double kCellSpeed = 0.1;
-constexpr double kDuplicateTurn = 1e-3;  // [rad] goal-directed phi equal to a fixed one
+constexpr double kDuplicateTurn = 1e-3;  // [rad] goal-directed turn equal to a tabled one
 
-struct Node {
+std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, Foot last_foot) {
+  const auto q = [](double v, double cell) {
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / cell)));
+  };
+  // Bit 63 set: 0 marks an empty slot of the table below.
+  return (q(com.x, kCellPosition) & 0xFFFF) | (q(com.y, kCellPosition) & 0xFFFF) << 16 |
+         (q(wrap_angle(heading) + kPi, kCellHeading) & 0x7F) << 32 | (q(speed, kCellSpeed) & 0xFF) << 39 |
+         (standing ? 1ull : 0ull) << 47 | static_cast<std::uint64_t>(last_foot) << 48 | 1ull << 63;
+}
+
+// Open-addressing set of state keys, reused from search to search.
+class KeySet {
+ public:
+  void clear(size_t expected) {
+    size_t capacity = 1024;
+    while (capacity < 2 * expected) capacity *= 2;
+    if (slots_.size() != capacity) slots_.assign(capacity, 0);
+    else std::fill(slots_.begin(), slots_.end(), 0);
+    size_ = 0;
+  }
+  // True if `key` was not there yet.
+  bool insert(std::uint64_t key) {
+    if (2 * (size_ + 1) > slots_.size()) grow();
+    const size_t mask = slots_.size() - 1;
+    for (size_t i = mix(key) & mask;; i = (i + 1) & mask) {
+      if (slots_[i] == key) return false;
+      if (slots_[i] == 0) {
+        slots_[i] = key;
+        ++size_;
+        return true;
+      }
+    }
+  }
+
+ private:
+  static size_t mix(std::uint64_t key) {
+    key ^= key >> 33;
+    key *= 0xFF51AFD7ED558CCDull;
+    return static_cast<size_t>(key ^ (key >> 33));
+  }
+  void grow() {
+    std::vector<std::uint64_t> old;
+    old.swap(slots_);
+    slots_.assign(old.size() * 2, 0);
+    size_ = 0;
+    for (const std::uint64_t key : old) {
+      if (key != 0) insert(key);
+    }
+  }
+  std::vector<std::uint64_t> slots_;
+  size_t size_ = 0;
+};
+
+}  // namespace
+
+struct FootstepPlanner::TabledAction {
+  detail::StepShape shape;
+  std::array<bool, 2> allowed{};  // within each foot's limits
+};
+
+// A search node: the state reached and the action that reached it; the step
+// itself is rebuilt (bit for bit) when needed.
+struct FootstepPlanner::Node {
   FootstepState state;
-  Footstep step;  // the step that led here (unused at the root)
   double g = 0;
   double h = 0;
   int parent = -1;
+  StepKind kind = StepKind::kWalk;
+  Foot foot = Foot::kLeft;
+  double phi = 0;
+  double turn = 0;
+  double speed = 0;
+  double duration = 0;
 };
 
-struct OpenEntry {
-  double f;
-  double h;
-  int index;
-  // Lowest f first; ties by lowest h, then by creation order (determinism).
-  bool operator<(const OpenEntry& o) const {
-    if (f != o.f) return f > o.f;
-    if (h != o.h) return h > o.h;
-    return index > o.index;
+struct FootstepPlanner::Search {
+  struct OpenEntry {
+    double f;
+    double h;
+    int index;
+    // Lowest f first; ties by lowest h, then by creation order (determinism).
+    bool operator<(const OpenEntry& o) const {
+      if (f != o.f) return f > o.f;
+      if (h != o.h) return h > o.h;
+      return index > o.index;
+    }
+  };
+  std::vector<Node> nodes;
+  std::vector<OpenEntry> open;  // a binary heap
+  KeySet seen;
+  int generated = 0;
+
+  void push(Node node, double weight) {
+    const int index = static_cast<int>(nodes.size());
+    open.push_back({node.g + weight * node.h, node.h, index});
+    std::push_heap(open.begin(), open.end());
+    nodes.push_back(std::move(node));
+  }
+  int pop() {
+    std::pop_heap(open.begin(), open.end());
+    const int index = open.back().index;
+    open.pop_back();
+    return index;
   }
 };
-
-std::uint64_t state_key(const FootstepState& s) {
-  const auto q = [](double v, double cell) {
-    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / cell)) & 0xFFFF);
-  };
-  const double speed = length(s.com_velocity);
-  const double heading = speed > 0.0 ? angle_of(s.com_velocity) : s.facing;
-  return q(s.com.x, kCellPosition) | q(s.com.y, kCellPosition) << 16 |
-         (q(heading + kPi, kCellHeading) & 0x7F) << 32 | (q(speed, kCellSpeed) & 0xFF) << 39 |
-         (s.standing() ? 1ull : 0ull) << 47 | static_cast<std::uint64_t>(s.last_foot) << 48;
-}
-
-}  // namespace
 
 FootstepPlanner::FootstepPlanner(const CharacterParams& character, const PlannerParams& planner,
                                  const ObstacleMap& obstacles)
     : character_(character), params_(planner), obstacles_(obstacles) {
   validate(character_);
   validate(params_);
+  for (const Gait& gait : params_.gaits) {
+    for (const double turn : params_.turn_angles) {
+      TabledAction action{detail::step_shape(gait.speed, gait.duration, turn, character_), {}};
+      action.allowed[0] = detail::check_limits(action.shape, character_.left) == StepValidity::kValid;
+      action.allowed[1] = detail::check_limits(action.shape, character_.right) == StepValidity::kValid;
+      if (action.allowed[0] || action.allowed[1]) actions_.push_back(action);
+    }
+  }
   // A normal step, through the model itself: straight, at the preferred speed
   // and duration, in steady walking (incoming at the same speed), the incoming
   // heading turned outward from phi by the smallest turn angle.
@@ -80,6 +162,8 @@ FootstepPlanner::FootstepPlanner(const CharacterParams& character, const Planner
   expected_step_length_ = distance(normal.step.com_start, normal.step.com_end);
 }
 
+FootstepPlanner::~FootstepPlanner() = default;
+
 double FootstepPlanner::heuristic(const FootstepState& state, Vec2 goal) const {
   const double remaining = std::max(0.0, distance(state.com, goal) - params_.goal_tolerance);
   return expected_step_cost_ * remaining / expected_step_length_;
@@ -100,12 +184,15 @@ bool FootstepPlanner::collides(const Footstep& step) const {
   const double spacing = params_.collision_sample_spacing;
   const double pad = 0.5 * spacing;
   // The whole step's COM lies within half the chord plus the sway of the chord
-  // midpoint; one query of that disc clears most steps at once.
+  // midpoint: only the obstacles near that disc can be touched.
   const double chord = distance(step.com_start, step.com_end);
   const double sway = step.alpha * step.duration() * step.duration() / 4.0;
   const Circle bound{0.5 * (step.com_start + step.com_end),
                      0.5 * chord + sway + 0.5 * character_.torso_width + pad};
-  if (!obstacles_.overlaps(bound)) return false;
+  thread_local std::vector<int> near;
+  near.clear();
+  obstacles_.gather(bound, near);
+  if (near.empty()) return false;
   // Samples no further apart along the COM path than `spacing`: the path is
   // never longer than speed * time between samples, where the COM speed of a
   // walking step is at most its speed at either end.
@@ -114,7 +201,7 @@ bool FootstepPlanner::collides(const Footstep& step) const {
   for (int i = 0; i <= samples; ++i) {
     const double t = step.start_time + step.duration() * i / samples;
     for (const Circle& circle : torso_circles(com_at(step, t).position, step.phi, character_, pad)) {
-      if (obstacles_.overlaps(circle)) return true;
+      if (obstacles_.first_overlap(circle, near) >= 0) return true;
     }
   }
   return false;
@@ -131,6 +218,73 @@ StepResult FootstepPlanner::stop_step(const FootstepState& state) const {
   return stop_step(state, params_.stop_duration);
 }
 
+// The step that led to node `index`, rebuilt from its parent exactly as it was
+// generated.
+StepResult FootstepPlanner::step_to(const Search& search, int index) const {
+  const Node& node = search.nodes[index];
+  const FootstepState& parent = search.nodes[node.parent].state;
+  if (node.kind == StepKind::kStop) {
+    return create_footstep(parent, {StepKind::kStop, node.foot, node.phi, 0.0, node.duration}, character_);
+  }
+  const OrientationInterval reach = reachable_orientations(
+      parent.foot_orientation[static_cast<int>(other(node.foot))], other(node.foot), character_.max_foot_turn);
+  return detail::walk_step(parent, node.foot, detail::heading_of(parent),
+                           detail::step_shape(node.speed, node.duration, node.turn, character_), node.phi,
+                           reach, character_);
+}
+
+// Generates the successors of node `index`: every tabled action and the
+// goal-directed one for each foot that may step, and the stop.
+void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
+  const FootstepState state = search.nodes[index].state;
+  const double g = search.nodes[index].g;
+  const detail::Heading heading = detail::heading_of(state);
+  const auto add = [&](const StepResult& next, StepKind kind, Foot foot, double phi, double turn,
+                       double speed, double duration, double heading_after) {
+    if (!next.valid()) return;
+    if (!search.seen.insert(state_key(next.state.com, heading_after, speed, kind == StepKind::kStop, foot))) {
+      return;
+    }
+    Node node{next.state, g + next.step.cost.total(), heuristic(next.state, goal), index,
+              kind, foot, phi, turn, speed, duration};
+    search.push(std::move(node), params_.heuristic_weight);
+    ++search.generated;
+  };
+
+  const double goal_angle = angle_of(goal - state.com);
+  for (const Foot foot : {Foot::kLeft, Foot::kRight}) {
+    if (!state.standing() && foot == state.last_foot) continue;
+    const int f = static_cast<int>(foot);
+    const double inward = -outward_sign(foot);
+    const OrientationInterval reach = reachable_orientations(
+        state.foot_orientation[static_cast<int>(other(foot))], other(foot), character_.max_foot_turn);
+    for (const TabledAction& action : actions_) {
+      if (!action.allowed[f]) continue;
+      const detail::StepShape& shape = action.shape;
+      const double phi = heading.angle + inward * shape.turn;
+      add(detail::walk_step(state, foot, heading, shape, phi, reach, character_), StepKind::kWalk, foot, phi,
+          shape.turn, shape.speed, shape.duration, phi + inward * shape.turn);
+    }
+    // The goal-directed phi aims the step's chord at the goal.
+    const double goal_turn = inward * wrap_angle(goal_angle - heading.angle);
+    if (!(goal_turn > 0.0 && goal_turn < 0.5 * kPi)) continue;
+    bool tabled = false;
+    for (const double turn : params_.turn_angles) tabled = tabled || std::fabs(turn - goal_turn) < kDuplicateTurn;
+    if (tabled) continue;
+    const FootLimits& limits = foot == Foot::kLeft ? character_.left : character_.right;
+    for (const Gait& gait : params_.gaits) {
+      const detail::StepShape shape = detail::step_shape(gait.speed, gait.duration, goal_turn, character_);
+      if (detail::check_limits(shape, limits) != StepValidity::kValid) continue;
+      const double phi = heading.angle + inward * goal_turn;
+      add(detail::walk_step(state, foot, heading, shape, phi, reach, character_), StepKind::kWalk, foot, phi,
+          goal_turn, gait.speed, gait.duration, phi + inward * goal_turn);
+    }
+  }
+  const Foot stop_foot = other(state.last_foot);
+  add(create_footstep(state, {StepKind::kStop, stop_foot, state.facing, 0.0, params_.stop_duration}, character_),
+      StepKind::kStop, stop_foot, state.facing, 0.0, 0.0, params_.stop_duration, state.facing);
+}
+
 SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal) const {
   SearchResult result;
   result.end_state = start;
@@ -145,69 +299,34 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal) const 
     }
   }
 
-  std::vector<Node> nodes;
-  nodes.reserve(static_cast<size_t>(params_.max_expansions) * 8 + 1);
-  std::priority_queue<OpenEntry> open;
-  std::unordered_set<std::uint64_t> seen;
-  nodes.push_back({start, Footstep{}, 0.0, heuristic(start, goal), -1});
-  open.push({params_.heuristic_weight * nodes[0].h, nodes[0].h, 0});
-  seen.insert(state_key(start));
+  // Scratch memory is kept per thread, so that searches do not allocate.
+  thread_local Search search;
+  search.nodes.clear();
+  search.open.clear();
+  search.generated = 0;
+  search.seen.clear(static_cast<size_t>(params_.max_expansions) * 8);
+  const detail::Heading start_heading = detail::heading_of(start);
+  search.seen.insert(state_key(start.com, start_heading.angle, start_heading.speed, start.standing(), start.last_foot));
+  search.push(Node{start, 0.0, heuristic(start, goal)}, params_.heuristic_weight);
 
   int goal_node = -1;
   std::vector<int> closed;  // expanded nodes, the root excluded
-  std::vector<FootstepAction> actions;
-  while (!open.empty() && result.nodes_expanded < params_.max_expansions) {
-    const int current = open.top().index;
-    open.pop();
+  while (!search.open.empty() && result.nodes_expanded < params_.max_expansions) {
+    const int current = search.pop();
     // Collisions are checked lazily, when a node is taken off the open list:
     // most generated nodes are never expanded.
-    if (current != 0 && collides(nodes[current].step)) continue;
+    if (current != 0 && collides(step_to(search, current).step)) continue;
     ++result.nodes_expanded;
-    const FootstepState state = nodes[current].state;
-    if (distance(state.com, goal) <= params_.goal_tolerance) {
+    if (distance(search.nodes[current].state.com, goal) <= params_.goal_tolerance) {
       goal_node = current;
       break;
     }
     if (current != 0) closed.push_back(current);
-
-    // Discretised actions: each gait with each turn, plus the goal-directed phi.
-    actions.clear();
-    const Vec2 heading = state.standing() ? unit(state.facing) : state.com_velocity;
-    const double heading_angle = angle_of(heading);
-    const double goal_angle = angle_of(goal - state.com);
-    const std::array<Foot, 2> both{Foot::kLeft, Foot::kRight};
-    for (const Foot foot : both) {
-      if (!state.standing() && foot == state.last_foot) continue;
-      const double inward = -outward_sign(foot);
-      const double goal_turn = inward * wrap_angle(goal_angle - heading_angle);
-      bool goal_turn_is_new = goal_turn > 0.0 && goal_turn < 0.5 * kPi;
-      for (const double turn : params_.turn_angles) {
-        if (std::fabs(turn - goal_turn) < kDuplicateTurn) goal_turn_is_new = false;
-      }
-      for (const Gait& gait : params_.gaits) {
-        for (const double turn : params_.turn_angles) {
-          actions.push_back({StepKind::kWalk, foot, heading_angle + inward * turn, gait.speed,
-                             gait.duration});
-        }
-        if (goal_turn_is_new) {
-          actions.push_back({StepKind::kWalk, foot, goal_angle, gait.speed, gait.duration});
-        }
-      }
-    }
-    actions.push_back({StepKind::kStop, other(state.last_foot), state.facing, 0.0, params_.stop_duration});
-
-    for (const FootstepAction& action : actions) {
-      StepResult next = create_footstep(state, action, character_);
-      if (!next.valid()) continue;
-      if (!seen.insert(state_key(next.state)).second) continue;
-      const double g = nodes[current].g + next.step.cost.total();
-      const double h = heuristic(next.state, goal);
-      nodes.push_back({next.state, next.step, g, h, current});
-      open.push({g + params_.heuristic_weight * h, h, static_cast<int>(nodes.size()) - 1});
-      ++result.nodes_generated;
-    }
+    expand(search, current, goal);
   }
+  result.nodes_generated = search.generated;
 
+  const std::vector<Node>& nodes = search.nodes;
   int end = goal_node;
   if (goal_node >= 0) {
     result.status = Status::kSuccess;
@@ -237,7 +356,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal) const 
     }
   }
   if (end >= 0) {
-    for (int i = end; i > 0; i = nodes[i].parent) result.footsteps.push_back(nodes[i].step);
+    for (int i = end; i > 0; i = nodes[i].parent) result.footsteps.push_back(step_to(search, i).step);
     std::reverse(result.footsteps.begin(), result.footsteps.end());
     result.end_state = nodes[end].state;
   }

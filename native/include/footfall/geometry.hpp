@@ -22,8 +22,8 @@ inline bool operator==(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
 inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 /// Z component of the 3-D cross product.
 inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-/// Euclidean length.
-inline double length(Vec2 a) { return std::hypot(a.x, a.y); }
+/// Euclidean length (plain sqrt: coordinates here are far from overflow).
+inline double length(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 /// Distance between two points. [m]
 inline double distance(Vec2 a, Vec2 b) { return length(a - b); }
 /// Unit vector at world angle `angle` (counter-clockwise from +X). [rad]

@@ -27,6 +27,11 @@ class ObstacleMap {
   int first_overlap(const Circle& circle) const;
   /// True if the circle touches or overlaps an obstacle.
   bool overlaps(const Circle& circle) const { return first_overlap(circle) >= 0; }
+  /// Appends to `out` (once each) the obstacles whose bounding boxes meet the
+  /// bounding box of `region`: the only ones a circle inside `region` can touch.
+  void gather(const Circle& region, std::vector<int>& out) const;
+  /// Index of an obstacle among `candidates` that the circle touches, or -1.
+  int first_overlap(const Circle& circle, const std::vector<int>& candidates) const;
   /// True if `point` lies inside obstacle `index` (even-odd rule).
   bool contains(int index, Vec2 point) const;
   /// The obstacles, as given.
@@ -37,6 +42,11 @@ class ObstacleMap {
     Vec2 min, max;
   };
   bool circle_overlaps(int index, const Circle& circle) const;
+  // Calls visit(index) once for each obstacle whose box meets the circle's box,
+  // until visit returns true; returns that index, or -1.
+  template <typename Visit>
+  int visit_near(const Circle& circle, Visit visit) const;
+  int cell_of(double v, double origin, int count) const;
 
   std::vector<Obstacle> obstacles_;
   std::vector<Box> boxes_;

@@ -66,12 +66,14 @@ struct PlannerParams {
   /// A search that brings the COM less than this much closer to the goal is
   /// "stuck"; the agent then stops. [m] (0, 10]
   double min_progress = 0.05;
-  /// Gaits tried at every expansion. [non-empty, at most 16]
-  std::vector<Gait> gaits{{0.5, 0.7}, {0.9, 0.6}, {1.3, 0.5}, {1.6, 0.45}};
+  /// Gaits tried at every expansion. Three are enough with the goal-directed
+  /// phi (section 4); more cost time, not quality. [non-empty, at most 16]
+  std::vector<Gait> gaits{{0.6, 0.65}, {1.3, 0.5}, {1.6, 0.45}};
   /// Parabola orientations tried at every expansion, as inward angles between
   /// the incoming velocity and phi; the chord turns by twice the angle, so
-  /// values near pi/2 are almost U-turns. [rad] each in (0, pi/2) [at most 32]
-  std::vector<double> turn_angles{0.04, 0.1, 0.2, 0.35, 0.55, 0.8, 1.1, 1.4};
+  /// values near pi/2 are almost U-turns. Small ones matter most: the
+  /// goal-directed phi covers the rest. [rad] each in (0, pi/2) [at most 32]
+  std::vector<double> turn_angles{0.04, 0.15, 0.35, 0.7, 1.1, 1.4};
 };
 
 /// Throws std::invalid_argument naming the field (prefixed by `path`, e.g.

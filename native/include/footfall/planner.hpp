@@ -3,6 +3,7 @@
 // expansions and then returns the path to the most promising closed node.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "footfall/footstep.hpp"
@@ -34,6 +35,9 @@ class FootstepPlanner {
   /// outlive the planner.
   FootstepPlanner(const CharacterParams& character, const PlannerParams& planner,
                   const ObstacleMap& obstacles);
+  ~FootstepPlanner();
+  FootstepPlanner(const FootstepPlanner&) = delete;
+  FootstepPlanner& operator=(const FootstepPlanner&) = delete;
 
   /// Best-first search from `start` toward `goal`, bounded by the horizon.
   /// The foot orientations of the result are chosen by the post-process over
@@ -66,11 +70,19 @@ class FootstepPlanner {
   const PlannerParams& params() const { return params_; }
 
  private:
+  struct Node;
+  struct Search;
+  // A walking action of the discretised set, precomputed in its local frame.
+  struct TabledAction;
+  void expand(Search& search, int index, Vec2 goal) const;
+  StepResult step_to(const Search& search, int index) const;
+
   CharacterParams character_;
   PlannerParams params_;
   const ObstacleMap& obstacles_;
   double expected_step_cost_ = 0;
   double expected_step_length_ = 0;
+  std::vector<TabledAction> actions_;
 };
 
 /// Chooses exact foot orientations (section 4's post-process): each interval
