@@ -38,7 +38,8 @@ void bind_footstep(py::module_& m) {
       .def_readwrite("center", &Circle::center)
       .def_readwrite("radius", &Circle::radius);
 
-  py::class_<OrientationInterval>(m, "OrientationInterval", "Valid foot orientations [rad], inner to outer.")
+  py::class_<OrientationInterval>(m, "OrientationInterval",
+                                  "Valid foot orientations [rad], inner to outer.")
       .def(py::init<>())
       .def(py::init<double, double>(), py::arg("inner"), py::arg("outer"))
       .def_readwrite("inner", &OrientationInterval::inner)
@@ -54,9 +55,11 @@ void bind_footstep(py::module_& m) {
       .def_readwrite("facing", &FootstepState::facing)
       .def_readwrite("time", &FootstepState::time)
       .def("standing", &FootstepState::standing);
-  m.def("standing_state", &standing_state, py::arg("position"), py::arg("facing"), py::arg("character"));
+  m.def("standing_state", &standing_state, py::arg("position"), py::arg("facing"),
+        py::arg("character"));
 
-  py::class_<FootstepAction>(m, "FootstepAction", "Parabola orientation phi [rad], speed [m/s], duration [s].")
+  py::class_<FootstepAction>(m, "FootstepAction",
+                             "Parabola orientation phi [rad], speed [m/s], duration [s].")
       .def(py::init([](StepKind kind, Foot foot, double phi, double speed, double duration) {
              return FootstepAction{kind, foot, phi, speed, duration};
            }),
@@ -98,14 +101,14 @@ void bind_footstep(py::module_& m) {
       .def_readonly("step", &StepResult::step)
       .def_readonly("state", &StepResult::state)
       .def("valid", &StepResult::valid);
-  m.def("create_footstep", &create_footstep, py::arg("state"), py::arg("action"), py::arg("character"),
-        "createFootstep(s, a) of the paper, or the stop action.");
+  m.def("create_footstep", &create_footstep, py::arg("state"), py::arg("action"),
+        py::arg("character"), "createFootstep(s, a) of the paper, or the stop action.");
 
   py::class_<ComSample>(m, "ComSample")
       .def_readonly("position", &ComSample::position)
       .def_readonly("velocity", &ComSample::velocity);
-  m.def("com_at", py::overload_cast<const Footstep&, double>(&com_at), py::arg("step"), py::arg("t"),
-        "COM position and velocity of a step at absolute time t.");
+  m.def("com_at", py::overload_cast<const Footstep&, double>(&com_at), py::arg("step"),
+        py::arg("t"), "COM position and velocity of a step at absolute time t.");
   m.def("torso_circles", &torso_circles, py::arg("com"), py::arg("facing"), py::arg("character"),
         py::arg("pad") = 0.0);
 }

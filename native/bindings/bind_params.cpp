@@ -6,7 +6,8 @@ namespace py = pybind11;
 namespace footfall::bindings {
 
 void bind_params(py::module_& m) {
-  py::class_<FootLimits>(m, "FootLimits", "Limits on the steps of one foot (see params.hpp for units).")
+  py::class_<FootLimits>(m, "FootLimits",
+                         "Limits on the steps of one foot (see params.hpp for units).")
       .def(py::init<>())
       .def_readwrite("min_step_duration", &FootLimits::min_step_duration)
       .def_readwrite("max_step_duration", &FootLimits::max_step_duration)
@@ -15,7 +16,8 @@ void bind_params(py::module_& m) {
       .def_readwrite("min_speed", &FootLimits::min_speed)
       .def_readwrite("max_speed", &FootLimits::max_speed);
 
-  py::class_<CharacterParams>(m, "CharacterParams", "The walking character (see params.hpp for units and ranges).")
+  py::class_<CharacterParams>(m, "CharacterParams",
+                              "The walking character (see params.hpp for units and ranges).")
       .def(py::init<>())
       .def_readwrite("com_height", &CharacterParams::com_height)
       .def_readwrite("mass", &CharacterParams::mass)
@@ -38,7 +40,8 @@ void bind_params(py::module_& m) {
       .def_readwrite("speed", &Gait::speed)
       .def_readwrite("duration", &Gait::duration);
 
-  py::class_<PlannerParams>(m, "PlannerParams", "The footstep planner (see params.hpp for units and ranges).")
+  py::class_<PlannerParams>(m, "PlannerParams",
+                            "The footstep planner (see params.hpp for units and ranges).")
       .def(py::init<>())
       .def_readwrite("max_expansions", &PlannerParams::max_expansions)
       .def_readwrite("heuristic_weight", &PlannerParams::heuristic_weight)
@@ -51,10 +54,12 @@ void bind_params(py::module_& m) {
       .def_readwrite("gaits", &PlannerParams::gaits)
       .def_readwrite("turn_angles", &PlannerParams::turn_angles);
 
-  m.def("validate", [](const CharacterParams& p) { validate(p); },
-        "Raises ValueError naming the field and the limit it breaks.", py::arg("params"));
-  m.def("validate", [](const PlannerParams& p) { validate(p); },
-        "Raises ValueError naming the field and the limit it breaks.", py::arg("params"));
+  m.def(
+      "validate", [](const CharacterParams& p) { validate(p); },
+      "Raises ValueError naming the field and the limit it breaks.", py::arg("params"));
+  m.def(
+      "validate", [](const PlannerParams& p) { validate(p); },
+      "Raises ValueError naming the field and the limit it breaks.", py::arg("params"));
 }
 
 }  // namespace footfall::bindings

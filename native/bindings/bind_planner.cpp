@@ -10,14 +10,17 @@ namespace footfall::bindings {
 void bind_planner(py::module_& m) {
   py::class_<Obstacle>(m, "Obstacle", "A polygon [m] extruded to a height [m].")
       .def(py::init<>())
-      .def(py::init([](std::vector<Vec2> polygon, double height) { return Obstacle{std::move(polygon), height}; }),
+      .def(py::init([](std::vector<Vec2> polygon, double height) {
+             return Obstacle{std::move(polygon), height};
+           }),
            py::arg("polygon"), py::arg("height") = 2.0)
       .def_readwrite("polygon", &Obstacle::polygon)
       .def_readwrite("height", &Obstacle::height);
 
   py::class_<ObstacleMap>(m, "ObstacleMap", "Static obstacles indexed for circle queries.")
       .def(py::init<std::vector<Obstacle>>(), py::arg("obstacles"))
-      .def("first_overlap", py::overload_cast<const Circle&>(&ObstacleMap::first_overlap, py::const_),
+      .def("first_overlap",
+           py::overload_cast<const Circle&>(&ObstacleMap::first_overlap, py::const_),
            py::arg("circle"))
       .def("overlaps", &ObstacleMap::overlaps, py::arg("circle"))
       .def("contains", &ObstacleMap::contains, py::arg("index"), py::arg("point"))
@@ -30,7 +33,8 @@ void bind_planner(py::module_& m) {
       .def_readonly("nodes_generated", &SearchResult::nodes_generated)
       .def_readonly("nodes_expanded", &SearchResult::nodes_expanded);
 
-  py::class_<FootstepPlanner>(m, "FootstepPlanner", "The short-horizon best-first footstep planner.")
+  py::class_<FootstepPlanner>(m, "FootstepPlanner",
+                              "The short-horizon best-first footstep planner.")
       .def(py::init<const CharacterParams&, const PlannerParams&, const ObstacleMap&>(),
            py::arg("character"), py::arg("planner"), py::arg("obstacles"),
            py::keep_alive<1, 4>())  // the planner refers to the obstacle map
@@ -39,21 +43,25 @@ void bind_planner(py::module_& m) {
       .def("heuristic", &FootstepPlanner::heuristic, py::arg("state"), py::arg("goal"))
       .def("expected_step_cost", &FootstepPlanner::expected_step_cost)
       .def("expected_step_length", &FootstepPlanner::expected_step_length)
-      .def("collides", py::overload_cast<const Footstep&>(&FootstepPlanner::collides, py::const_), py::arg("step"))
-      .def("collides", py::overload_cast<const FootstepState&>(&FootstepPlanner::collides, py::const_),
+      .def("collides", py::overload_cast<const Footstep&>(&FootstepPlanner::collides, py::const_),
+           py::arg("step"))
+      .def("collides",
+           py::overload_cast<const FootstepState&>(&FootstepPlanner::collides, py::const_),
            py::arg("state"));
-  m.def("choose_foot_orientations",
-        [](std::vector<Footstep> steps, const std::array<OrientationInterval, 2>& initial,
-           const CharacterParams& character) {
-          choose_foot_orientations(steps, initial, character);
-          return steps;
-        },
-        py::arg("steps"), py::arg("initial"), py::arg("character"),
-        "Returns the steps with exact foot orientations (section 4's post-process).");
+  m.def(
+      "choose_foot_orientations",
+      [](std::vector<Footstep> steps, const std::array<OrientationInterval, 2>& initial,
+         const CharacterParams& character) {
+        choose_foot_orientations(steps, initial, character);
+        return steps;
+      },
+      py::arg("steps"), py::arg("initial"), py::arg("character"),
+      "Returns the steps with exact foot orientations (section 4's post-process).");
   m.def("reachable_orientations", &reachable_orientations, py::arg("interval"), py::arg("foot"),
         py::arg("max_foot_turn"));
 
-  py::class_<AgentSpec>(m, "AgentSpec", "An agent to plan: name, position [m], facing [rad], goals [m].")
+  py::class_<AgentSpec>(m, "AgentSpec",
+                        "An agent to plan: name, position [m], facing [rad], goals [m].")
       .def(py::init<>())
       .def(py::init([](std::string name, Vec2 position, double facing, std::vector<Vec2> goals) {
              return AgentSpec{std::move(name), position, facing, std::move(goals)};
@@ -81,18 +89,24 @@ void bind_planner(py::module_& m) {
       .def_readonly("nodes_expanded", &AgentPlan::nodes_expanded)
       .def("total_cost", &AgentPlan::total_cost)
       .def("end_time", &AgentPlan::end_time);
-  m.def("plan_agent", [](const AgentSpec& agent, const FootstepPlanner& planner) { return plan_agent(agent, planner); },
-        py::arg("agent"), py::arg("planner"), py::call_guard<py::gil_scoped_release>());
+  m.def(
+      "plan_agent",
+      [](const AgentSpec& agent, const FootstepPlanner& planner) {
+        return plan_agent(agent, planner);
+      },
+      py::arg("agent"), py::arg("planner"), py::call_guard<py::gil_scoped_release>());
 
   py::class_<FootPose>(m, "FootPose")
       .def_readonly("position", &FootPose::position)
       .def_readonly("orientation", &FootPose::orientation)
       .def_readonly("lift", &FootPose::lift)
       .def_readonly("planted", &FootPose::planted);
-  m.def("com_at", py::overload_cast<const AgentPlan&, double>(&com_at), py::arg("plan"), py::arg("t"));
+  m.def("com_at", py::overload_cast<const AgentPlan&, double>(&com_at), py::arg("plan"),
+        py::arg("t"));
   m.def("feet_at", &feet_at, py::arg("plan"), py::arg("t"), "Both feet at time t, [left, right].");
   m.def("facing_at", &facing_at, py::arg("plan"), py::arg("t"));
-  m.def("collision_circles", &collision_circles, py::arg("plan"), py::arg("character"), py::arg("t"));
+  m.def("collision_circles", &collision_circles, py::arg("plan"), py::arg("character"),
+        py::arg("t"));
 }
 
 }  // namespace footfall::bindings

@@ -62,8 +62,8 @@ void bind_scenario(py::module_& m) {
   m.def("load_scenario", &load_scenario, py::arg("path"));
   m.def("demo_scenario", &demo_scenario, "The built-in demo: a doorway and a box.");
   m.def("box_obstacle", &box_obstacle, py::arg("center"), py::arg("size"), py::arg("height") = 1.0);
-  m.def("wall_with_door", &wall_with_door, py::arg("x"), py::arg("door_width"), py::arg("door_center") = 0.0,
-        py::arg("half_length") = 6.0, py::arg("thickness") = 0.2);
+  m.def("wall_with_door", &wall_with_door, py::arg("x"), py::arg("door_width"),
+        py::arg("door_center") = 0.0, py::arg("half_length") = 6.0, py::arg("thickness") = 0.2);
 
   py::class_<CancelFlag>(m, "CancelFlag", "Set it from another thread to stop plan_scenario.")
       .def(py::init<>())
@@ -74,8 +74,8 @@ void bind_scenario(py::module_& m) {
       .def_readonly("agents", &Plan::agents)
       .def_readonly("character", &Plan::character)
       .def_readonly("status", &Plan::status);
-  m.def("plan_scenario", &plan_with_callbacks, py::arg("scenario"), py::arg("progress") = py::none(),
-        py::arg("cancel") = nullptr,
+  m.def("plan_scenario", &plan_with_callbacks, py::arg("scenario"),
+        py::arg("progress") = py::none(), py::arg("cancel") = nullptr,
         "Plans every agent, without holding the GIL. progress(fraction) is called at most a few "
         "times a second; a set CancelFlag stops the run (status CANCELLED).");
   m.def("plan_to_json", &plan_to_json, py::arg("plan"));

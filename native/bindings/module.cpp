@@ -3,7 +3,9 @@
 #include "footfall/status.hpp"
 
 PYBIND11_MODULE(_native, m) {
-  m.doc() = "Footfall's planning core: the footstep model, the footstep planner, scenario and plan files.";
+  m.doc() =
+      "Footfall's planning core: the footstep model, the footstep planner, scenario and plan "
+      "files.";
   m.attr("__version__") = FOOTFALL_VERSION;
   // std::invalid_argument -> ValueError and std::out_of_range -> IndexError
   // are pybind11's own translations; footfall::Error gets its own class.

@@ -8,7 +8,8 @@ namespace {
 // Appends a stop step, halving its duration while it would run into an
 // obstacle (the COM still coasts while it decelerates). Returns false when even
 // the shortest stop collides.
-bool append_stop(const FootstepPlanner& planner, FootstepState& state, std::vector<Footstep>& steps) {
+bool append_stop(const FootstepPlanner& planner, FootstepState& state,
+                 std::vector<Footstep>& steps) {
   double duration = planner.params().stop_duration;
   for (int attempt = 0; attempt < 4; ++attempt, duration *= 0.5) {
     const StepResult stop = planner.stop_step(state, duration);
@@ -65,7 +66,8 @@ AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
     const double to_goal = distance(state.com, goal);
     const bool goal_in_reach = to_goal <= params.local_goal_distance;
     const Vec2 local_goal =
-        goal_in_reach ? goal : state.com + (params.local_goal_distance / to_goal) * (goal - state.com);
+        goal_in_reach ? goal
+                      : state.com + (params.local_goal_distance / to_goal) * (goal - state.com);
     const SearchResult search = planner.plan(state, local_goal);
     ++plan.searches;
     plan.nodes_generated += search.nodes_generated;

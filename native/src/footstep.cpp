@@ -1,9 +1,9 @@
 #include "footfall/footstep.hpp"
 
-#include "footstep_shape.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "footstep_shape.hpp"
 
 namespace footfall {
 namespace {
@@ -22,7 +22,8 @@ double cos_double_angle(double tan_theta) {
 
 // dE2 of equation 4: the work to reach the desired speed after heel strike
 // dissipated the momentum along the new leg.
-double speed_change_cost(double mass, double desired_speed, double incoming_speed, double cos_2theta) {
+double speed_change_cost(double mass, double desired_speed, double incoming_speed,
+                         double cos_2theta) {
   const double kept = incoming_speed * cos_2theta;
   return 0.5 * mass * std::fabs(desired_speed * desired_speed - kept * kept);
 }
@@ -40,7 +41,8 @@ StepResult create_walk(const FootstepState& state, const FootstepAction& action,
   const detail::Heading heading = detail::heading_of(state);
   // phi lies inward of the incoming velocity: clockwise for a left step.
   const double turn = -outward_sign(foot) * wrap_angle(action.phi - heading.angle);
-  const detail::StepShape shape = detail::step_shape(action.speed, action.duration, turn, character);
+  const detail::StepShape shape =
+      detail::step_shape(action.speed, action.duration, turn, character);
   const StepValidity limits = detail::check_limits(shape, limits_of(character, foot));
   if (limits != StepValidity::kValid) return invalid(limits);
   const OrientationInterval reach = reachable_orientations(
@@ -77,8 +79,8 @@ StepResult create_stop(const FootstepState& state, const FootstepAction& action,
   step.phi = state.facing;
   const double tan_theta = distance(rest, state.com) / character.com_height;
   step.cost.fixed_rate = character.energy_rate * T;
-  step.cost.speed_change =
-      speed_change_cost(character.mass, 0.0, length(state.com_velocity), cos_double_angle(tan_theta));
+  step.cost.speed_change = speed_change_cost(character.mass, 0.0, length(state.com_velocity),
+                                             cos_double_angle(tan_theta));
 
   FootstepState& next = result.state;
   next = state;
@@ -89,7 +91,8 @@ StepResult create_stop(const FootstepState& state, const FootstepAction& action,
   next.foot_orientation[static_cast<int>(foot)] = step.orientation_interval;
   // The planted foot must stay within reach of the fixed stop orientation.
   OrientationInterval& stance = next.foot_orientation[static_cast<int>(other(foot))];
-  intersect(stance, reachable_orientations(step.orientation_interval, foot, character.max_foot_turn),
+  intersect(stance,
+            reachable_orientations(step.orientation_interval, foot, character.max_foot_turn),
             other(foot), &stance);
   next.time = step.end_time;
   return result;
@@ -112,8 +115,8 @@ StepShape step_shape(double speed, double duration, double turn, const Character
   shape.chord = shape.vx0 * duration;
   shape.cos_2theta = cos_double_angle(0.5 * shape.chord / character.com_height);
   shape.fixed_rate = character.energy_rate * duration;
-  shape.curvature =
-      character.curvature_weight * character.mass * shape.alpha * arc_length(shape.vx0, shape.alpha, duration);
+  shape.curvature = character.curvature_weight * character.mass * shape.alpha *
+                    arc_length(shape.vx0, shape.alpha, duration);
   return shape;
 }
 
@@ -121,7 +124,8 @@ StepValidity check_limits(const StepShape& shape, const FootLimits& limits) {
   if (shape.duration < limits.min_step_duration || shape.duration > limits.max_step_duration) {
     return StepValidity::kDurationOutOfRange;
   }
-  if (shape.speed < limits.min_speed || shape.speed > limits.max_speed) return StepValidity::kSpeedOutOfRange;
+  if (shape.speed < limits.min_speed || shape.speed > limits.max_speed)
+    return StepValidity::kSpeedOutOfRange;
   // alpha > 0: the incoming velocity points toward the stance foot.
   if (!(shape.alpha > 0.0)) return StepValidity::kNotPositive;
   if (shape.chord < limits.min_step_length || shape.chord > limits.max_step_length) {
@@ -153,12 +157,14 @@ StepResult walk_step(const FootstepState& state, Foot foot, const Heading& headi
     return invalid(StepValidity::kOrientationEmpty);
   }
   // Local parabola frame: +x along phi, +y away from the stance foot.
-  const Vec2 x_axis = shape.cos_turn * heading.direction - (s * shape.sin_turn) * perp(heading.direction);
+  const Vec2 x_axis =
+      shape.cos_turn * heading.direction - (s * shape.sin_turn) * perp(heading.direction);
   const Vec2 y_axis = -s * perp(x_axis);
   // Equation 1 at t = +-T/2, back in world space. The chord lies along +x.
   const double T = shape.duration;
   const double half = 0.5 * T;
-  const Vec2 vertex = state.com + (shape.vx0 * half) * x_axis - (shape.alpha * half * half) * y_axis;
+  const Vec2 vertex =
+      state.com + (shape.vx0 * half) * x_axis - (shape.alpha * half * half) * y_axis;
   StepResult result;
   Footstep& step = result.step;
   step.foot = foot;
@@ -176,7 +182,8 @@ StepResult walk_step(const FootstepState& state, Foot foot, const Heading& headi
   step.speed = shape.speed;
   step.alpha = shape.alpha;
   step.cost.fixed_rate = shape.fixed_rate;
-  step.cost.speed_change = speed_change_cost(character.mass, shape.speed, heading.speed, shape.cos_2theta);
+  step.cost.speed_change =
+      speed_change_cost(character.mass, shape.speed, heading.speed, shape.cos_2theta);
   step.cost.curvature = shape.curvature;
 
   FootstepState& next = result.state;
@@ -199,24 +206,36 @@ const char* to_string(StepKind kind) { return kind == StepKind::kWalk ? "walk" :
 
 const char* to_string(Behavior behavior) {
   switch (behavior) {
-    case Behavior::kWalk: return "walk";
-    case Behavior::kArmsIn: return "arms_in";
-    case Behavior::kSideStep: return "side_step";
+    case Behavior::kWalk:
+      return "walk";
+    case Behavior::kArmsIn:
+      return "arms_in";
+    case Behavior::kSideStep:
+      return "side_step";
   }
   return "walk";
 }
 
 const char* to_string(StepValidity validity) {
   switch (validity) {
-    case StepValidity::kValid: return "valid";
-    case StepValidity::kWrongFoot: return "a walking character must alternate feet";
-    case StepValidity::kDurationOutOfRange: return "step duration out of range";
-    case StepValidity::kSpeedOutOfRange: return "speed out of range";
-    case StepValidity::kLengthOutOfRange: return "step length out of range";
-    case StepValidity::kNotPositive: return "local parabola not positive";
-    case StepValidity::kOrientationEmpty: return "empty foot-orientation interval";
-    case StepValidity::kNotFinite: return "non-finite input";
-    case StepValidity::kCollides: return "runs into an obstacle";
+    case StepValidity::kValid:
+      return "valid";
+    case StepValidity::kWrongFoot:
+      return "a walking character must alternate feet";
+    case StepValidity::kDurationOutOfRange:
+      return "step duration out of range";
+    case StepValidity::kSpeedOutOfRange:
+      return "speed out of range";
+    case StepValidity::kLengthOutOfRange:
+      return "step length out of range";
+    case StepValidity::kNotPositive:
+      return "local parabola not positive";
+    case StepValidity::kOrientationEmpty:
+      return "empty foot-orientation interval";
+    case StepValidity::kNotFinite:
+      return "non-finite input";
+    case StepValidity::kCollides:
+      return "runs into an obstacle";
   }
   return "invalid";
 }

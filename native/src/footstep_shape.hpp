@@ -10,14 +10,14 @@ namespace footfall::detail {
 
 /// A walking step in its local parabola frame.
 struct StepShape {
-  double speed = 0;      ///< Desired speed v. [m/s]
-  double duration = 0;   ///< T. [s]
-  double turn = 0;       ///< Inward angle from the incoming velocity to phi. [rad]
-  double cos_turn = 1;   ///< cos(turn)
-  double sin_turn = 0;   ///< sin(turn)
-  double vx0 = 0;        ///< Local velocity along phi. [m/s]
-  double alpha = 0;      ///< Equation 1's coefficient. [m/s^2]
-  double chord = 0;      ///< COM travel, vx0 T. [m]
+  double speed = 0;       ///< Desired speed v. [m/s]
+  double duration = 0;    ///< T. [s]
+  double turn = 0;        ///< Inward angle from the incoming velocity to phi. [rad]
+  double cos_turn = 1;    ///< cos(turn)
+  double sin_turn = 0;    ///< sin(turn)
+  double vx0 = 0;         ///< Local velocity along phi. [m/s]
+  double alpha = 0;       ///< Equation 1's coefficient. [m/s^2]
+  double chord = 0;       ///< COM travel, vx0 T. [m]
   double cos_2theta = 1;  ///< cos(2 theta), theta the leg angle at heel strike.
   double fixed_rate = 0;  ///< dE1. [J]
   double curvature = 0;   ///< dE3. [J]
@@ -32,9 +32,9 @@ StepValidity check_limits(const StepShape& shape, const FootLimits& limits);
 
 /// The direction a state moves in: its velocity, or its facing when standing.
 struct Heading {
-  Vec2 direction;     ///< Unit vector.
-  double angle = 0;   ///< [rad]
-  double speed = 0;   ///< Incoming speed, 0 when standing. [m/s]
+  Vec2 direction;    ///< Unit vector.
+  double angle = 0;  ///< [rad]
+  double speed = 0;  ///< Incoming speed, 0 when standing. [m/s]
 };
 /// The heading of `state`.
 Heading heading_of(const FootstepState& state);

@@ -88,7 +88,8 @@ std::string type_name(const Json& value) {
 
 void expect_object(const Json& value, const std::string& path,
                    std::initializer_list<const char*> allowed) {
-  if (!value.is_object()) fail(path.empty() ? "(top level)" : path, "expected an object, got " + type_name(value));
+  if (!value.is_object())
+    fail(path.empty() ? "(top level)" : path, "expected an object, got " + type_name(value));
   for (auto it = value.begin(); it != value.end(); ++it) {
     bool known = false;
     for (const char* key : allowed) known = known || it.key() == key;
@@ -106,7 +107,8 @@ double number(const Json& value, const std::string& path) {
   if (value.is_string()) {
     const std::string& text = value.get_ref<const std::string&>();
     if (text.rfind(kNonFiniteMarker, 0) == 0) {
-      fail(path, "must be a finite number, got " + text.substr(std::char_traits<char>::length(kNonFiniteMarker)));
+      fail(path, "must be a finite number, got " +
+                     text.substr(std::char_traits<char>::length(kNonFiniteMarker)));
     }
   }
   if (!value.is_number()) fail(path, "expected a number, got " + type_name(value));
@@ -140,7 +142,8 @@ Json to_json(Vec2 p) { return Json::array({p.x, p.y}); }
 void expect_header(const Json& root, const char* format, int version) {
   if (!root.is_object()) fail("(top level)", "expected an object, got " + type_name(root));
   const std::string found = string(require(root, "", "format"), "format");
-  if (found != format) fail("format", std::string("expected \"") + format + "\", got \"" + found + "\"");
+  if (found != format)
+    fail("format", std::string("expected \"") + format + "\", got \"" + found + "\"");
   const long long v = integer(require(root, "", "version"), "version");
   if (v != version) {
     fail("version", "unsupported version " + std::to_string(v) + " (this Footfall reads version " +

@@ -29,9 +29,10 @@ ObstacleMap::ObstacleMap(std::vector<Obstacle> obstacles) : obstacles_(std::move
     Box box{obstacle.polygon.front(), obstacle.polygon.front()};
     for (size_t k = 0; k < obstacle.polygon.size(); ++k) {
       const Vec2 p = obstacle.polygon[k];
-      if (!is_finite(p)) {
-        throw std::invalid_argument(name + ".polygon[" + std::to_string(k) +
-                                    "]: coordinates must be finite numbers");
+      if (!in_world(p)) {
+        throw std::invalid_argument(
+            name + ".polygon[" + std::to_string(k) +
+            "]: coordinates must be finite numbers within 1e9 m of the origin");
       }
       box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y)};
       box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y)};
@@ -45,18 +46,22 @@ ObstacleMap::ObstacleMap(std::vector<Obstacle> obstacles) : obstacles_(std::move
     bounds_.max = {std::max(bounds_.max.x, box.max.x), std::max(bounds_.max.y, box.max.y)};
   }
   const double w = bounds_.max.x - bounds_.min.x, h = bounds_.max.y - bounds_.min.y;
-  cell_size_ = std::max(kCellSize, std::sqrt(w * h / static_cast<double>(kMaxCells)));
+  // About kMaxCells cells at most: larger cells for larger scenes, and for long thin
+  // ones a cap per axis.
+  cell_size_ = std::max({kCellSize, std::sqrt(w * h / static_cast<double>(kMaxCells)),
+                         std::max(w, h) / static_cast<double>(kMaxCells / 16)});
   columns_ = static_cast<int>(w / cell_size_) + 1;
   rows_ = static_cast<int>(h / cell_size_) + 1;
   cells_.assign(static_cast<size_t>(columns_) * rows_, {});
   for (size_t i = 0; i < boxes_.size(); ++i) {
     const Box& box = boxes_[i];
-    const int c0 = static_cast<int>((box.min.x - bounds_.min.x) / cell_size_);
-    const int c1 = static_cast<int>((box.max.x - bounds_.min.x) / cell_size_);
-    const int r0 = static_cast<int>((box.min.y - bounds_.min.y) / cell_size_);
-    const int r1 = static_cast<int>((box.max.y - bounds_.min.y) / cell_size_);
+    const int c0 = cell_of(box.min.x, bounds_.min.x, columns_);
+    const int c1 = cell_of(box.max.x, bounds_.min.x, columns_);
+    const int r0 = cell_of(box.min.y, bounds_.min.y, rows_);
+    const int r1 = cell_of(box.max.y, bounds_.min.y, rows_);
     for (int r = r0; r <= r1; ++r) {
-      for (int c = c0; c <= c1; ++c) cells_[static_cast<size_t>(r) * columns_ + c].push_back(int(i));
+      for (int c = c0; c <= c1; ++c)
+        cells_[static_cast<size_t>(r) * columns_ + c].push_back(int(i));
     }
   }
 }
@@ -89,7 +94,9 @@ bool ObstacleMap::circle_overlaps(int index, const Circle& circle) const {
 }
 
 int ObstacleMap::cell_of(double v, double origin, int count) const {
-  return std::clamp(static_cast<int>(std::floor((v - origin) / cell_size_)), 0, count - 1);
+  // Clamped before the conversion: a huge query must not overflow the int.
+  const double cell = std::floor((v - origin) / cell_size_);
+  return static_cast<int>(std::clamp(cell, 0.0, static_cast<double>(count - 1)));
 }
 
 template <typename Visit>
@@ -109,7 +116,8 @@ int ObstacleMap::visit_near(const Circle& circle, Visit visit) const {
     for (int col = c0; col <= c1; ++col) {
       for (const int index : cells_[static_cast<size_t>(row) * columns_ + col]) {
         const Box& box = boxes_[index];
-        if (c.x + r < box.min.x || c.x - r > box.max.x || c.y + r < box.min.y || c.y - r > box.max.y) {
+        if (c.x + r < box.min.x || c.x - r > box.max.x || c.y + r < box.min.y ||
+            c.y - r > box.max.y) {
           continue;
         }
         // Visit each obstacle in one cell only: the first cell that both the

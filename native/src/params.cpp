@@ -31,7 +31,8 @@ void check_open_low(double value, const std::string& field, double lo, double hi
 
 void validate(const FootLimits& limits, const std::string& path) {
   check_open_low(limits.min_step_duration, path + ".min_step_duration", 0.0, 5.0);
-  check_closed(limits.max_step_duration, path + ".max_step_duration", limits.min_step_duration, 5.0);
+  check_closed(limits.max_step_duration, path + ".max_step_duration", limits.min_step_duration,
+               5.0);
   check_open_low(limits.min_step_length, path + ".min_step_length", 0.0, 3.0);
   check_closed(limits.max_step_length, path + ".max_step_length", limits.min_step_length, 3.0);
   check_open_low(limits.min_speed, path + ".min_speed", 0.0, 10.0);

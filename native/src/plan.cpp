@@ -8,16 +8,17 @@ namespace footfall {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kMaxLift = 0.12;        // [m] swing height of a full stride
-constexpr double kLiftPerStride = 0.15;  // swing height per metre of stride
+constexpr double kMaxLift = 0.12;          // [m] swing height of a full stride
+constexpr double kLiftPerStride = 0.15;    // swing height per metre of stride
 constexpr double kProgressInterval = 0.2;  // [s] between progress reports
 
 // Index of the step under way at time t: the last one that started at or
 // before t (clamped to the first and last). Plans are never empty here.
 int step_index(const AgentPlan& plan, double t) {
   const auto& steps = plan.footsteps;
-  const auto after = std::upper_bound(steps.begin(), steps.end(), t,
-                                      [](double time, const Footstep& s) { return time < s.start_time; });
+  const auto after =
+      std::upper_bound(steps.begin(), steps.end(), t,
+                       [](double time, const Footstep& s) { return time < s.start_time; });
   return std::max(0, static_cast<int>(after - steps.begin()) - 1);
 }
 
@@ -68,11 +69,13 @@ std::array<FootPose, 2> feet_at(const AgentPlan& plan, double t) {
   const int k = step_index(plan, t);
   // Every foot where it was last planted by step k.
   for (int i = 0; i <= k; ++i) {
-    feet[static_cast<int>(steps[i].foot)] = {steps[i].foot_position, steps[i].foot_orientation, 0.0, true};
+    feet[static_cast<int>(steps[i].foot)] = {steps[i].foot_position, steps[i].foot_orientation, 0.0,
+                                             true};
   }
   const Footstep& step = steps[k];
   const int swing = static_cast<int>(other(step.foot));
-  const bool next_lands_it = k + 1 < static_cast<int>(steps.size()) && steps[k + 1].foot == other(step.foot);
+  const bool next_lands_it =
+      k + 1 < static_cast<int>(steps.size()) && steps[k + 1].foot == other(step.foot);
   if (step.kind != StepKind::kWalk || !next_lands_it || t >= step.end_time) return feet;
   // The other foot swings from lift-off at the step's start to landing at its end.
   const Footstep& landing = steps[k + 1];

@@ -21,7 +21,8 @@ Json footstep_to_json(const Footstep& step) {
       {"end_time", step.end_time},
       {"foot_position", to_json(step.foot_position)},
       {"foot_orientation", step.foot_orientation},
-      {"orientation_interval", Json::array({step.orientation_interval.inner, step.orientation_interval.outer})},
+      {"orientation_interval",
+       Json::array({step.orientation_interval.inner, step.orientation_interval.outer})},
       {"com_start", to_json(step.com_start)},
       {"com_end", to_json(step.com_end)},
       {"com_velocity_start", to_json(step.com_velocity_start)},
@@ -55,12 +56,10 @@ Json agent_to_json(const AgentPlan& agent) {
   Json steps = Json::array();
   for (const Footstep& step : agent.footsteps) steps.push_back(footstep_to_json(step));
   json["footsteps"] = std::move(steps);
-  json["stats"] = {{"goals_reached", agent.goals_reached},
-                   {"searches", agent.searches},
-                   {"nodes_generated", agent.nodes_generated},
-                   {"nodes_expanded", agent.nodes_expanded},
-                   {"total_cost", agent.total_cost()},
-                   {"end_time", agent.end_time()}};
+  json["stats"] = {
+      {"goals_reached", agent.goals_reached},     {"searches", agent.searches},
+      {"nodes_generated", agent.nodes_generated}, {"nodes_expanded", agent.nodes_expanded},
+      {"total_cost", agent.total_cost()},         {"end_time", agent.end_time()}};
   return json;
 }
 
@@ -84,7 +83,8 @@ Footstep read_footstep(const Json& json, const std::string& path) {
   const auto field = [&](const char* key) -> const Json& { return require(json, path, key); };
   Footstep step;
   step.foot = read_enum(field("foot"), child(path, "foot"), {Foot::kLeft, Foot::kRight});
-  if (json.contains("kind")) step.kind = read_enum(json["kind"], child(path, "kind"), {StepKind::kWalk, StepKind::kStop});
+  if (json.contains("kind"))
+    step.kind = read_enum(json["kind"], child(path, "kind"), {StepKind::kWalk, StepKind::kStop});
   step.start_time = number(field("start_time"), child(path, "start_time"));
   step.end_time = number(field("end_time"), child(path, "end_time"));
   if (!(step.end_time > step.start_time)) fail(child(path, "end_time"), "must be after start_time");
@@ -112,9 +112,12 @@ Footstep read_footstep(const Json& json, const std::string& path) {
     const std::string terms_path = child(path, "cost_terms");
     const Json& terms = json["cost_terms"];
     expect_object(terms, terms_path, {"fixed_rate", "speed_change", "curvature"});
-    step.cost.fixed_rate = number(require(terms, terms_path, "fixed_rate"), child(terms_path, "fixed_rate"));
-    step.cost.speed_change = number(require(terms, terms_path, "speed_change"), child(terms_path, "speed_change"));
-    step.cost.curvature = number(require(terms, terms_path, "curvature"), child(terms_path, "curvature"));
+    step.cost.fixed_rate =
+        number(require(terms, terms_path, "fixed_rate"), child(terms_path, "fixed_rate"));
+    step.cost.speed_change =
+        number(require(terms, terms_path, "speed_change"), child(terms_path, "speed_change"));
+    step.cost.curvature =
+        number(require(terms, terms_path, "curvature"), child(terms_path, "curvature"));
   } else {
     step.cost.fixed_rate = cost;
   }
@@ -122,13 +125,15 @@ Footstep read_footstep(const Json& json, const std::string& path) {
 }
 
 AgentPlan read_agent(const Json& json, const std::string& path, const CharacterParams& character) {
-  expect_object(json, path, {"name", "status", "reason", "stopped_at", "start", "footsteps", "stats"});
+  expect_object(json, path,
+                {"name", "status", "reason", "stopped_at", "start", "footsteps", "stats"});
   AgentPlan agent;
   agent.name = string(require(json, path, "name"), child(path, "name"));
   agent.status = read_enum(require(json, path, "status"), child(path, "status"),
                            {AgentStatus::kReached, AgentStatus::kPartial});
   if (json.contains("reason")) agent.reason = string(json["reason"], child(path, "reason"));
-  if (json.contains("stopped_at")) agent.stuck_at = point(json["stopped_at"], child(path, "stopped_at"));
+  if (json.contains("stopped_at"))
+    agent.stuck_at = point(json["stopped_at"], child(path, "stopped_at"));
   const std::string steps_path = child(path, "footsteps");
   const Json& steps = array(require(json, path, "footsteps"), steps_path);
   for (size_t i = 0; i < steps.size(); ++i) {
@@ -142,11 +147,13 @@ AgentPlan read_agent(const Json& json, const std::string& path, const CharacterP
     const std::string start_path = child(path, "start");
     const Json& start = json["start"];
     expect_object(start, start_path, {"position", "facing", "left_foot", "right_foot"});
-    agent.start = standing_state(point(require(start, start_path, "position"), child(start_path, "position")),
-                                 number(require(start, start_path, "facing"), child(start_path, "facing")),
-                                 character);
-    if (start.contains("left_foot")) agent.start.feet[0] = point(start["left_foot"], child(start_path, "left_foot"));
-    if (start.contains("right_foot")) agent.start.feet[1] = point(start["right_foot"], child(start_path, "right_foot"));
+    agent.start = standing_state(
+        point(require(start, start_path, "position"), child(start_path, "position")),
+        number(require(start, start_path, "facing"), child(start_path, "facing")), character);
+    if (start.contains("left_foot"))
+      agent.start.feet[0] = point(start["left_foot"], child(start_path, "left_foot"));
+    if (start.contains("right_foot"))
+      agent.start.feet[1] = point(start["right_foot"], child(start_path, "right_foot"));
   } else if (!agent.footsteps.empty()) {
     const Footstep& first = agent.footsteps.front();
     agent.start = standing_state(first.com_start, first.phi, character);
@@ -157,10 +164,16 @@ AgentPlan read_agent(const Json& json, const std::string& path, const CharacterP
     const Json& stats = json["stats"];
     const std::string stats_path = child(path, "stats");
     if (!stats.is_object()) fail(stats_path, "expected an object, got " + type_name(stats));
-    if (stats.contains("goals_reached")) agent.goals_reached = int(integer(stats["goals_reached"], child(stats_path, "goals_reached")));
-    if (stats.contains("searches")) agent.searches = int(integer(stats["searches"], child(stats_path, "searches")));
-    if (stats.contains("nodes_generated")) agent.nodes_generated = integer(stats["nodes_generated"], child(stats_path, "nodes_generated"));
-    if (stats.contains("nodes_expanded")) agent.nodes_expanded = integer(stats["nodes_expanded"], child(stats_path, "nodes_expanded"));
+    if (stats.contains("goals_reached"))
+      agent.goals_reached =
+          int(integer(stats["goals_reached"], child(stats_path, "goals_reached")));
+    if (stats.contains("searches"))
+      agent.searches = int(integer(stats["searches"], child(stats_path, "searches")));
+    if (stats.contains("nodes_generated"))
+      agent.nodes_generated =
+          integer(stats["nodes_generated"], child(stats_path, "nodes_generated"));
+    if (stats.contains("nodes_expanded"))
+      agent.nodes_expanded = integer(stats["nodes_expanded"], child(stats_path, "nodes_expanded"));
   }
   return agent;
 }
@@ -172,7 +185,8 @@ Plan read_plan(const Json& root) {
   if (root.contains("character")) read_character(root["character"], "character", plan.character);
   validate(plan.character, "character");
   const Json& agents = array(require(root, "", "agents"), "agents");
-  for (size_t i = 0; i < agents.size(); ++i) plan.agents.push_back(read_agent(agents[i], item("agents", i), plan.character));
+  for (size_t i = 0; i < agents.size(); ++i)
+    plan.agents.push_back(read_agent(agents[i], item("agents", i), plan.character));
   return plan;
 }
 

@@ -1,12 +1,12 @@
 #include "footfall/planner.hpp"
 
-#include "footstep_shape.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+
+#include "footstep_shape.hpp"
 
 namespace footfall {
 namespace {
@@ -22,13 +22,16 @@ constexpr double kCellSpeed = 0.1;
 constexpr double kDuplicateTurn = 1e-3;  // [rad] goal-directed turn equal to a tabled one
 
 std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, Foot last_foot) {
+  // Clamped before the conversion, so that far-away coordinates stay defined.
   const auto q = [](double v, double cell) {
-    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / cell)));
+    return static_cast<std::uint64_t>(
+        static_cast<std::int64_t>(std::clamp(std::floor(v / cell), -1e15, 1e15)));
   };
   // Bit 63 set: 0 marks an empty slot of the table below.
   return (q(com.x, kCellPosition) & 0xFFFF) | (q(com.y, kCellPosition) & 0xFFFF) << 16 |
-         (q(wrap_angle(heading) + kPi, kCellHeading) & 0x7F) << 32 | (q(speed, kCellSpeed) & 0xFF) << 39 |
-         (standing ? 1ull : 0ull) << 47 | static_cast<std::uint64_t>(last_foot) << 48 | 1ull << 63;
+         (q(wrap_angle(heading) + kPi, kCellHeading) & 0x7F) << 32 |
+         (q(speed, kCellSpeed) & 0xFF) << 39 | (standing ? 1ull : 0ull) << 47 |
+         static_cast<std::uint64_t>(last_foot) << 48 | 1ull << 63;
 }
 
 // Open-addressing set of state keys, reused from search to search.
@@ -37,8 +40,10 @@ class KeySet {
   void clear(size_t expected) {
     size_t capacity = 1024;
     while (capacity < 2 * expected) capacity *= 2;
-    if (slots_.size() != capacity) slots_.assign(capacity, 0);
-    else std::fill(slots_.begin(), slots_.end(), 0);
+    if (slots_.size() != capacity)
+      slots_.assign(capacity, 0);
+    else
+      std::fill(slots_.begin(), slots_.end(), 0);
     size_ = 0;
   }
   // True if `key` was not there yet.
@@ -135,8 +140,10 @@ FootstepPlanner::FootstepPlanner(const CharacterParams& character, const Planner
   for (const Gait& gait : params_.gaits) {
     for (const double turn : params_.turn_angles) {
       TabledAction action{detail::step_shape(gait.speed, gait.duration, turn, character_), {}};
-      action.allowed[0] = detail::check_limits(action.shape, character_.left) == StepValidity::kValid;
-      action.allowed[1] = detail::check_limits(action.shape, character_.right) == StepValidity::kValid;
+      action.allowed[0] =
+          detail::check_limits(action.shape, character_.left) == StepValidity::kValid;
+      action.allowed[1] =
+          detail::check_limits(action.shape, character_.right) == StepValidity::kValid;
       if (action.allowed[0] || action.allowed[1]) actions_.push_back(action);
     }
   }
@@ -147,11 +154,11 @@ FootstepPlanner::FootstepPlanner(const CharacterParams& character, const Planner
   FootstepState walking = standing_state({0.0, 0.0}, 0.0, character_);
   walking.com_velocity = character_.preferred_speed * unit(-turn);
   walking.last_foot = Foot::kLeft;
-  const StepResult normal = create_footstep(
-      walking,
-      {StepKind::kWalk, Foot::kRight, 0.0, character_.preferred_speed,
-       character_.preferred_step_duration},
-      character_);
+  const StepResult normal =
+      create_footstep(walking,
+                      {StepKind::kWalk, Foot::kRight, 0.0, character_.preferred_speed,
+                       character_.preferred_step_duration},
+                      character_);
   if (!normal.valid()) {
     throw std::invalid_argument(
         std::string("character.preferred_speed: a step at the preferred speed and duration is "
@@ -197,10 +204,12 @@ bool FootstepPlanner::collides(const Footstep& step) const {
   // never longer than speed * time between samples, where the COM speed of a
   // walking step is at most its speed at either end.
   const double top_speed = std::max(length(step.com_velocity_start), length(step.com_velocity_end));
-  const int samples = std::max(1, static_cast<int>(std::ceil(top_speed * step.duration() / spacing)));
+  const int samples =
+      std::max(1, static_cast<int>(std::ceil(top_speed * step.duration() / spacing)));
   for (int i = 0; i <= samples; ++i) {
     const double t = step.start_time + step.duration() * i / samples;
-    for (const Circle& circle : torso_circles(com_at(step, t).position, step.phi, character_, pad)) {
+    for (const Circle& circle :
+         torso_circles(com_at(step, t).position, step.phi, character_, pad)) {
       if (obstacles_.first_overlap(circle, near) >= 0) return true;
     }
   }
@@ -224,13 +233,15 @@ StepResult FootstepPlanner::step_to(const Search& search, int index) const {
   const Node& node = search.nodes[index];
   const FootstepState& parent = search.nodes[node.parent].state;
   if (node.kind == StepKind::kStop) {
-    return create_footstep(parent, {StepKind::kStop, node.foot, node.phi, 0.0, node.duration}, character_);
+    return create_footstep(parent, {StepKind::kStop, node.foot, node.phi, 0.0, node.duration},
+                           character_);
   }
-  const OrientationInterval reach = reachable_orientations(
-      parent.foot_orientation[static_cast<int>(other(node.foot))], other(node.foot), character_.max_foot_turn);
+  const OrientationInterval reach =
+      reachable_orientations(parent.foot_orientation[static_cast<int>(other(node.foot))],
+                             other(node.foot), character_.max_foot_turn);
   return detail::walk_step(parent, node.foot, detail::heading_of(parent),
-                           detail::step_shape(node.speed, node.duration, node.turn, character_), node.phi,
-                           reach, character_);
+                           detail::step_shape(node.speed, node.duration, node.turn, character_),
+                           node.phi, reach, character_);
 }
 
 // Generates the successors of node `index`: every tabled action and the
@@ -242,11 +253,20 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   const auto add = [&](const StepResult& next, StepKind kind, Foot foot, double phi, double turn,
                        double speed, double duration, double heading_after) {
     if (!next.valid()) return;
-    if (!search.seen.insert(state_key(next.state.com, heading_after, speed, kind == StepKind::kStop, foot))) {
+    if (!search.seen.insert(
+            state_key(next.state.com, heading_after, speed, kind == StepKind::kStop, foot))) {
       return;
     }
-    Node node{next.state, g + next.step.cost.total(), heuristic(next.state, goal), index,
-              kind, foot, phi, turn, speed, duration};
+    Node node{next.state,
+              g + next.step.cost.total(),
+              heuristic(next.state, goal),
+              index,
+              kind,
+              foot,
+              phi,
+              turn,
+              speed,
+              duration};
     search.push(std::move(node), params_.heuristic_weight);
     ++search.generated;
   };
@@ -256,32 +276,36 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
     if (!state.standing() && foot == state.last_foot) continue;
     const int f = static_cast<int>(foot);
     const double inward = -outward_sign(foot);
-    const OrientationInterval reach = reachable_orientations(
-        state.foot_orientation[static_cast<int>(other(foot))], other(foot), character_.max_foot_turn);
+    const OrientationInterval reach =
+        reachable_orientations(state.foot_orientation[static_cast<int>(other(foot))], other(foot),
+                               character_.max_foot_turn);
     for (const TabledAction& action : actions_) {
       if (!action.allowed[f]) continue;
       const detail::StepShape& shape = action.shape;
       const double phi = heading.angle + inward * shape.turn;
-      add(detail::walk_step(state, foot, heading, shape, phi, reach, character_), StepKind::kWalk, foot, phi,
-          shape.turn, shape.speed, shape.duration, phi + inward * shape.turn);
+      add(detail::walk_step(state, foot, heading, shape, phi, reach, character_), StepKind::kWalk,
+          foot, phi, shape.turn, shape.speed, shape.duration, phi + inward * shape.turn);
     }
     // The goal-directed phi aims the step's chord at the goal.
     const double goal_turn = inward * wrap_angle(goal_angle - heading.angle);
     if (!(goal_turn > 0.0 && goal_turn < 0.5 * kPi)) continue;
     bool tabled = false;
-    for (const double turn : params_.turn_angles) tabled = tabled || std::fabs(turn - goal_turn) < kDuplicateTurn;
+    for (const double turn : params_.turn_angles)
+      tabled = tabled || std::fabs(turn - goal_turn) < kDuplicateTurn;
     if (tabled) continue;
     const FootLimits& limits = foot == Foot::kLeft ? character_.left : character_.right;
     for (const Gait& gait : params_.gaits) {
-      const detail::StepShape shape = detail::step_shape(gait.speed, gait.duration, goal_turn, character_);
+      const detail::StepShape shape =
+          detail::step_shape(gait.speed, gait.duration, goal_turn, character_);
       if (detail::check_limits(shape, limits) != StepValidity::kValid) continue;
       const double phi = heading.angle + inward * goal_turn;
-      add(detail::walk_step(state, foot, heading, shape, phi, reach, character_), StepKind::kWalk, foot, phi,
-          goal_turn, gait.speed, gait.duration, phi + inward * goal_turn);
+      add(detail::walk_step(state, foot, heading, shape, phi, reach, character_), StepKind::kWalk,
+          foot, phi, goal_turn, gait.speed, gait.duration, phi + inward * goal_turn);
     }
   }
   const Foot stop_foot = other(state.last_foot);
-  add(create_footstep(state, {StepKind::kStop, stop_foot, state.facing, 0.0, params_.stop_duration}, character_),
+  add(create_footstep(state, {StepKind::kStop, stop_foot, state.facing, 0.0, params_.stop_duration},
+                      character_),
       StepKind::kStop, stop_foot, state.facing, 0.0, 0.0, params_.stop_duration, state.facing);
 }
 
@@ -306,7 +330,8 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal) const 
   search.generated = 0;
   search.seen.clear(static_cast<size_t>(params_.max_expansions) * 8);
   const detail::Heading start_heading = detail::heading_of(start);
-  search.seen.insert(state_key(start.com, start_heading.angle, start_heading.speed, start.standing(), start.last_foot));
+  search.seen.insert(state_key(start.com, start_heading.angle, start_heading.speed,
+                               start.standing(), start.last_foot));
   search.push(Node{start, 0.0, heuristic(start, goal)}, params_.heuristic_weight);
 
   int goal_node = -1;
@@ -356,7 +381,8 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal) const 
     }
   }
   if (end >= 0) {
-    for (int i = end; i > 0; i = nodes[i].parent) result.footsteps.push_back(step_to(search, i).step);
+    for (int i = end; i > 0; i = nodes[i].parent)
+      result.footsteps.push_back(step_to(search, i).step);
     std::reverse(result.footsteps.begin(), result.footsteps.end());
     result.end_state = nodes[end].state;
   }
@@ -394,8 +420,9 @@ void choose_foot_orientations(std::vector<Footstep>& steps,
         p < 0 ? initial[static_cast<int>(other(foot))]
               : OrientationInterval{steps[p].foot_orientation, steps[p].foot_orientation};
     OrientationInterval allowed = interval[k];
-    intersect(interval[k], reachable_orientations(previous_choice, other(foot), character.max_foot_turn),
-              foot, &allowed);
+    intersect(interval[k],
+              reachable_orientations(previous_choice, other(foot), character.max_foot_turn), foot,
+              &allowed);
     steps[k].foot_orientation = clamp_orientation(steps[k].phi, allowed, foot);
   }
 }

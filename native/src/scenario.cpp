@@ -73,7 +73,8 @@ void read_planner(const Json& json, const std::string& path, PlannerParams& para
     if (read_double(kPlannerFields, key, it.value(), field, params)) continue;
     if (key == "max_expansions") {
       const long long value = integer(it.value(), field);
-      if (value < 1 || value > 1000000) fail(field, "must be in [1, 1000000], got " + std::to_string(value));
+      if (value < 1 || value > 1000000)
+        fail(field, "must be in [1, 1000000], got " + std::to_string(value));
       params.max_expansions = static_cast<int>(value);
     } else if (key == "gaits") {
       params.gaits.clear();
@@ -81,13 +82,15 @@ void read_planner(const Json& json, const std::string& path, PlannerParams& para
       for (size_t i = 0; i < gaits.size(); ++i) {
         const std::string gait_path = item(field, i);
         expect_object(gaits[i], gait_path, {"speed", "duration"});
-        params.gaits.push_back({number(require(gaits[i], gait_path, "speed"), child(gait_path, "speed")),
-                                number(require(gaits[i], gait_path, "duration"), child(gait_path, "duration"))});
+        params.gaits.push_back(
+            {number(require(gaits[i], gait_path, "speed"), child(gait_path, "speed")),
+             number(require(gaits[i], gait_path, "duration"), child(gait_path, "duration"))});
       }
     } else if (key == "turn_angles") {
       params.turn_angles.clear();
       const Json& angles = array(it.value(), field);
-      for (size_t i = 0; i < angles.size(); ++i) params.turn_angles.push_back(number(angles[i], item(field, i)));
+      for (size_t i = 0; i < angles.size(); ++i)
+        params.turn_angles.push_back(number(angles[i], item(field, i)));
     } else {
       fail(field, "unknown field");
     }
@@ -115,8 +118,10 @@ void validate(const Scenario& scenario) {
     const AgentSpec& agent = scenario.agents[i];
     const std::string path = item("agents", i);
     if (agent.name.empty()) fail(child(path, "name"), "must not be empty");
-    if (!names.insert(agent.name).second) fail(child(path, "name"), "\"" + agent.name + "\" is used twice");
-    if (!is_finite(agent.position)) fail(child(path, "position"), "must be finite");
+    if (!names.insert(agent.name).second)
+      fail(child(path, "name"), "\"" + agent.name + "\" is used twice");
+    if (!in_world(agent.position))
+      fail(child(path, "position"), "must be finite and within 1e9 m of the origin");
     if (!std::isfinite(agent.facing)) fail(child(path, "facing"), "must be finite");
     if (agent.goals.empty()) fail(child(path, "goals"), "needs at least one goal");
     const FootstepState standing = standing_state(agent.position, agent.facing, scenario.character);
@@ -128,10 +133,13 @@ void validate(const Scenario& scenario) {
       for (const Vec2& foot : standing.feet) {
         if (hit < 0) hit = obstacles.first_overlap({foot, scenario.character.foot_radius});
       }
-      fail(child(path, "position"), "the standing agent overlaps obstacles[" + std::to_string(hit) + "]");
+      fail(child(path, "position"),
+           "the standing agent overlaps obstacles[" + std::to_string(hit) + "]");
     }
     for (size_t k = 0; k < agent.goals.size(); ++k) {
-      if (!is_finite(agent.goals[k])) fail(item(child(path, "goals"), k), "must be finite");
+      if (!in_world(agent.goals[k])) {
+        fail(item(child(path, "goals"), k), "must be finite and within 1e9 m of the origin");
+      }
       for (int o = 0; o < static_cast<int>(scenario.obstacles.size()); ++o) {
         if (obstacles.contains(o, agent.goals[k])) {
           fail(item(child(path, "goals"), k), "inside obstacles[" + std::to_string(o) + "]");
@@ -155,8 +163,10 @@ Scenario read_scenario(const Json& root) {
       Obstacle obstacle;
       const std::string polygon_path = child(path, "polygon");
       const Json& polygon = array(require(obstacles[i], path, "polygon"), polygon_path);
-      for (size_t k = 0; k < polygon.size(); ++k) obstacle.polygon.push_back(point(polygon[k], item(polygon_path, k)));
-      if (obstacles[i].contains("height")) obstacle.height = number(obstacles[i]["height"], child(path, "height"));
+      for (size_t k = 0; k < polygon.size(); ++k)
+        obstacle.polygon.push_back(point(polygon[k], item(polygon_path, k)));
+      if (obstacles[i].contains("height"))
+        obstacle.height = number(obstacles[i]["height"], child(path, "height"));
       scenario.obstacles.push_back(std::move(obstacle));
     }
   }
@@ -171,7 +181,8 @@ Scenario read_scenario(const Json& root) {
       agent.position = point(require(agents[i], path, "position"), child(path, "position"));
       const std::string goals_path = child(path, "goals");
       const Json& goals = array(require(agents[i], path, "goals"), goals_path);
-      for (size_t k = 0; k < goals.size(); ++k) agent.goals.push_back(point(goals[k], item(goals_path, k)));
+      for (size_t k = 0; k < goals.size(); ++k)
+        agent.goals.push_back(point(goals[k], item(goals_path, k)));
       // Facing defaults to the direction of the first goal.
       if (agents[i].contains("facing")) {
         agent.facing = number(agents[i]["facing"], child(path, "facing"));
@@ -181,7 +192,8 @@ Scenario read_scenario(const Json& root) {
       scenario.agents.push_back(std::move(agent));
     }
   }
-  if (root.contains("character")) read_character(root["character"], "character", scenario.character);
+  if (root.contains("character"))
+    read_character(root["character"], "character", scenario.character);
   if (root.contains("planner")) read_planner(root["planner"], "planner", scenario.planner);
   validate(scenario);
   return scenario;

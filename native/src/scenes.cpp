@@ -41,7 +41,8 @@ std::vector<Obstacle> box_field(int count, double size, std::uint64_t seed) {
   std::vector<Obstacle> boxes;
   boxes.reserve(static_cast<size_t>(count));
   for (int i = 0; i < count; ++i) {
-    const Vec2 center{random.uniform(-0.5 * size, 0.5 * size), random.uniform(-0.5 * size, 0.5 * size)};
+    const Vec2 center{random.uniform(-0.5 * size, 0.5 * size),
+                      random.uniform(-0.5 * size, 0.5 * size)};
     const Vec2 extent{random.uniform(0.5, 1.5), random.uniform(0.5, 1.5)};
     boxes.push_back(box_obstacle(center, extent, 1.0));
   }

@@ -41,7 +41,8 @@ Workload box_field_workload() {
     const Vec2 from{random.uniform(-30.0, 30.0), random.uniform(-30.0, 30.0)};
     const Vec2 to = from + 10.0 * unit(random.uniform(-kPi, kPi));
     const Query query = standing_query(from, to);
-    if (planner.collides(query.start) || planner.collides(standing_state(to, 0.0, CharacterParams{}))) {
+    if (planner.collides(query.start) ||
+        planner.collides(standing_state(to, 0.0, CharacterParams{}))) {
       continue;
     }
     workload.queries.push_back(query);
@@ -70,12 +71,14 @@ void run_bench(int repeat, std::ostream& out) {
   out << std::left << std::setw(20) << "workload" << std::right << std::setw(7) << "plans"
       << std::setw(9) << "reached" << std::setw(8) << "steps" << std::setw(11) << "generated"
       << std::setw(10) << "expanded" << std::setw(12) << "median ms" << std::setw(9) << "p90 ms"
-      << std::setw(12) << "us / step" << "\n";
+      << std::setw(12) << "us / step"
+      << "\n";
   for (const Workload& workload : workloads()) {
     const ObstacleMap map(workload.obstacles);
     const FootstepPlanner planner(CharacterParams{}, PlannerParams{}, map);
     std::vector<double> milliseconds;
-    double steps = 0, generated = 0, expanded = 0, reached = 0;
+    double steps = 0, generated = 0, expanded = 0;
+    int reached = 0;
     for (const Query& query : workload.queries) {
       for (int r = 0; r < repeat; ++r) {
         const auto begin = std::chrono::steady_clock::now();

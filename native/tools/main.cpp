@@ -31,7 +31,8 @@ struct UsageError : std::invalid_argument {
 void print_table(const footfall::Plan& plan, std::ostream& out) {
   out << std::left << std::setw(14) << "agent" << std::setw(10) << "status" << std::right
       << std::setw(7) << "steps" << std::setw(10) << "time [s]" << std::setw(11) << "cost [J]"
-      << std::setw(10) << "searches" << std::setw(10) << "expanded" << "\n";
+      << std::setw(10) << "searches" << std::setw(10) << "expanded"
+      << "\n";
   for (const footfall::AgentPlan& agent : plan.agents) {
     const std::string status = agent.status == footfall::AgentStatus::kReached
                                    ? "reached"

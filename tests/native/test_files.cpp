@@ -22,7 +22,9 @@ std::string error_of(const std::string& text) {
 
 const char* const kHeader = R"("format": "footfall-scenario", "version": 1)";
 
-std::string scenario_text(const std::string& body) { return std::string("{") + kHeader + ", " + body + "}"; }
+std::string scenario_text(const std::string& body) {
+  return std::string("{") + kHeader + ", " + body + "}";
+}
 
 TEST(ScenarioFile, ReadsEveryPartAndItsOverrides) {
   const Scenario s = parse_scenario(scenario_text(R"(
@@ -54,34 +56,47 @@ TEST(ScenarioFile, AScenarioWithoutAgentsIsValid) {
 
 TEST(ScenarioFile, BadInputIsNamedByFileAndField) {
   const std::string agent = R"("agents": [{"position": [0, 0], "goals": [[5, 0]]}])";
-  EXPECT_EQ(error_of("{\"format\": "), "scene.json: not valid JSON: parse error at line 1, column 12: "
-                                       "syntax error while parsing value - unexpected end of input; expected "
-                                       "'[', '{', or a literal");
+  EXPECT_EQ(error_of("{\"format\": "),
+            "scene.json: not valid JSON: parse error at line 1, column 12: "
+            "syntax error while parsing value - unexpected end of input; expected "
+            "'[', '{', or a literal");
   EXPECT_EQ(error_of(scenario_text(R"("agents": [{"position": [0, "x"], "goals": [[5, 0]]}])")),
             "scene.json: agents[0].position[1]: expected a number, got string");
   EXPECT_EQ(error_of(scenario_text(R"("agents": [{"position": [NaN, 0], "goals": [[5, 0]]}])")),
             "scene.json: agents[0].position[0]: must be a finite number, got NaN");
-  EXPECT_EQ(error_of(scenario_text(R"("agents": [{"position": [0, 0], "goals": [[-Infinity, 0]]}])")),
-            "scene.json: agents[0].goals[0][0]: must be a finite number, got -Infinity");
+  EXPECT_EQ(
+      error_of(scenario_text(R"("agents": [{"position": [0, 0], "goals": [[-Infinity, 0]]}])")),
+      "scene.json: agents[0].goals[0][0]: must be a finite number, got -Infinity");
   EXPECT_EQ(error_of(scenario_text(R"("obstacles": [{"polygon": [[0, 0], [1, 0]]}])")),
             "scene.json: obstacles[0].polygon: needs at least 3 points, got 2");
-  EXPECT_EQ(error_of(scenario_text(R"("obstacles": [{"polygon": [[-1, -1], [1, -1], [1, 1]]}], )" + agent)),
+  EXPECT_EQ(error_of(scenario_text(R"("obstacles": [{"polygon": [[-1, -1], [1, -1], [1, 1]]}], )" +
+                                   agent)),
             "scene.json: agents[0].position: the standing agent overlaps obstacles[0]");
-  EXPECT_EQ(error_of(scenario_text(R"("obstacles": [{"polygon": [[4, -1], [6, -1], [6, 1], [4, 1]]}], )" + agent)),
+  EXPECT_EQ(error_of(scenario_text(
+                R"("obstacles": [{"polygon": [[4, -1], [6, -1], [6, 1], [4, 1]]}], )" + agent)),
             "scene.json: agents[0].goals[0]: inside obstacles[0]");
-  EXPECT_EQ(error_of(scenario_text(R"("character": {"speed": 1.0})")), "scene.json: character.speed: unknown field");
-  EXPECT_EQ(error_of(scenario_text(R"("planner": {"horizon": 10})")), "scene.json: planner.horizon: unknown field");
+  EXPECT_EQ(error_of(scenario_text(R"("character": {"speed": 1.0})")),
+            "scene.json: character.speed: unknown field");
+  EXPECT_EQ(error_of(scenario_text(R"("planner": {"horizon": 10})")),
+            "scene.json: planner.horizon: unknown field");
   EXPECT_EQ(error_of(scenario_text(R"("character": {"mass": -3})")),
             "scene.json: character.mass: must be in (0, 500], got -3");
   EXPECT_EQ(error_of(scenario_text(R"("agents": [{"position": [0, 0], "goals": []}])")),
             "scene.json: agents[0].goals: needs at least one goal");
-  EXPECT_EQ(error_of(scenario_text(R"("agents": [{"position": [0, 0]}])")), "scene.json: agents[0].goals: missing");
+  EXPECT_EQ(error_of(scenario_text(R"("agents": [{"position": [0, 0]}])")),
+            "scene.json: agents[0].goals: missing");
   EXPECT_EQ(error_of(R"({"format": "footfall-plan", "version": 1})"),
             "scene.json: format: expected \"footfall-scenario\", got \"footfall-plan\"");
   EXPECT_EQ(error_of(R"({"format": "footfall-scenario", "version": 2})"),
             "scene.json: version: unsupported version 2 (this Footfall reads version 1)");
-  EXPECT_EQ(error_of(scenario_text(R"("agents": {})")), "scene.json: agents: expected an array, got object");
+  EXPECT_EQ(error_of(scenario_text(R"("agents": {})")),
+            "scene.json: agents: expected an array, got object");
   EXPECT_EQ(error_of(scenario_text(R"("extra": 1)")), "scene.json: extra: unknown field");
+  EXPECT_EQ(error_of(scenario_text(R"("obstacles": [{"polygon": [[0, 0], [1e300, 0], [0, 1]]}])")),
+            "scene.json: obstacles[0].polygon[1]: coordinates must be finite numbers within 1e9 m "
+            "of the origin");
+  EXPECT_EQ(error_of(scenario_text(R"("agents": [{"position": [0, 0], "goals": [[0, -2e9]]}])")),
+            "scene.json: agents[0].goals[0]: must be finite and within 1e9 m of the origin");
 }
 
 TEST(ScenarioFile, MissingFileIsNamed) {
@@ -119,11 +134,13 @@ TEST(PlanFile, ReadsAHandWrittenPlanWithBehaviours) {
 
 TEST(PlanFile, BadPlansAreNamedByField) {
   try {
-    parse_plan(R"({"format": "footfall-plan", "version": 1, "agents": [{"name": "p", "status": "lost", "footsteps": []}]})",
-               "p.json");
+    parse_plan(
+        R"({"format": "footfall-plan", "version": 1, "agents": [{"name": "p", "status": "lost", "footsteps": []}]})",
+        "p.json");
     FAIL();
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "p.json: agents[0].status: \"lost\" is not one of \"reached\", \"partial\"");
+    EXPECT_STREQ(e.what(),
+                 "p.json: agents[0].status: \"lost\" is not one of \"reached\", \"partial\"");
   }
 }
 

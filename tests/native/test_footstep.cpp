@@ -89,9 +89,12 @@ TEST(Footstep, CostTermsMatchHandComputation) {
   EXPECT_NEAR(result.step.cost.fixed_rate, 120 * T, 1e-12);
   EXPECT_NEAR(result.step.cost.speed_change,
               80.0 / 2 * std::fabs(v * v - std::pow(v0 * std::cos(2 * theta), 2)), 1e-9);
-  EXPECT_NEAR(result.step.cost.curvature, 0.3 * 80 * alpha * numeric_arc_length(vx0, alpha, T), 1e-9);
-  EXPECT_NEAR(result.step.cost.total(), result.step.cost.fixed_rate + result.step.cost.speed_change +
-                                            result.step.cost.curvature, 1e-12);
+  EXPECT_NEAR(result.step.cost.curvature, 0.3 * 80 * alpha * numeric_arc_length(vx0, alpha, T),
+              1e-9);
+  EXPECT_NEAR(
+      result.step.cost.total(),
+      result.step.cost.fixed_rate + result.step.cost.speed_change + result.step.cost.curvature,
+      1e-12);
 }
 
 TEST(Footstep, ArcLengthClosedFormMatchesIntegration) {
@@ -102,7 +105,8 @@ TEST(Footstep, ArcLengthClosedFormMatchesIntegration) {
 
 TEST(Footstep, HermiteEvaluationIsTheParabola) {
   const FootstepState state = walking_state(2.0, 1.3, Foot::kLeft);
-  const StepResult r = create_footstep(state, {StepKind::kWalk, Foot::kRight, 2.5, 1.3, 0.5}, CharacterParams{});
+  const StepResult r =
+      create_footstep(state, {StepKind::kWalk, Foot::kRight, 2.5, 1.3, 0.5}, CharacterParams{});
   ASSERT_TRUE(r.valid());
   const Footstep& s = r.step;
   const double T = 0.5, turn = 0.5, vx0 = 1.3 * std::cos(turn), alpha = s.alpha;
@@ -123,14 +127,22 @@ TEST(Footstep, HermiteEvaluationIsTheParabola) {
 TEST(Footstep, RefusesActionsOutsideTheConstraints) {
   const CharacterParams character;
   const FootstepState state = walking_state(0.0, 1.3, Foot::kRight);
-  const auto validity = [&](FootstepAction a) { return create_footstep(state, a, character).validity; };
+  const auto validity = [&](FootstepAction a) {
+    return create_footstep(state, a, character).validity;
+  };
   EXPECT_EQ(validity({StepKind::kWalk, Foot::kRight, 0.1, 1.3, 0.5}), StepValidity::kWrongFoot);
-  EXPECT_EQ(validity({StepKind::kWalk, Foot::kLeft, -0.1, 1.3, 0.1}), StepValidity::kDurationOutOfRange);
-  EXPECT_EQ(validity({StepKind::kWalk, Foot::kLeft, -0.1, 1.3, 0.9}), StepValidity::kDurationOutOfRange);
-  EXPECT_EQ(validity({StepKind::kWalk, Foot::kLeft, -0.1, 3.0, 0.5}), StepValidity::kSpeedOutOfRange);
-  EXPECT_EQ(validity({StepKind::kWalk, Foot::kLeft, -0.1, 0.1, 0.5}), StepValidity::kSpeedOutOfRange);
-  EXPECT_EQ(validity({StepKind::kWalk, Foot::kLeft, -0.1, 0.3, 0.3}), StepValidity::kLengthOutOfRange);
-  EXPECT_EQ(validity({StepKind::kWalk, Foot::kLeft, -0.1, 2.4, 0.5}), StepValidity::kLengthOutOfRange);
+  EXPECT_EQ(validity({StepKind::kWalk, Foot::kLeft, -0.1, 1.3, 0.1}),
+            StepValidity::kDurationOutOfRange);
+  EXPECT_EQ(validity({StepKind::kWalk, Foot::kLeft, -0.1, 1.3, 0.9}),
+            StepValidity::kDurationOutOfRange);
+  EXPECT_EQ(validity({StepKind::kWalk, Foot::kLeft, -0.1, 3.0, 0.5}),
+            StepValidity::kSpeedOutOfRange);
+  EXPECT_EQ(validity({StepKind::kWalk, Foot::kLeft, -0.1, 0.1, 0.5}),
+            StepValidity::kSpeedOutOfRange);
+  EXPECT_EQ(validity({StepKind::kWalk, Foot::kLeft, -0.1, 0.3, 0.3}),
+            StepValidity::kLengthOutOfRange);
+  EXPECT_EQ(validity({StepKind::kWalk, Foot::kLeft, -0.1, 2.4, 0.5}),
+            StepValidity::kLengthOutOfRange);
   // A left step cannot turn left: the local parabola would not be positive.
   EXPECT_EQ(validity({StepKind::kWalk, Foot::kLeft, 0.0, 1.3, 0.5}), StepValidity::kNotPositive);
   EXPECT_EQ(validity({StepKind::kWalk, Foot::kLeft, 0.2, 1.3, 0.5}), StepValidity::kNotPositive);
@@ -144,12 +156,16 @@ TEST(Footstep, PerFootLimitsMakeALimp) {
   limp.left.max_step_duration = 0.4;
   const FootstepState after_right = walking_state(0.0, 1.0, Foot::kRight);
   const FootstepState after_left = walking_state(0.0, 1.0, Foot::kLeft);
-  EXPECT_EQ(create_footstep(after_right, {StepKind::kWalk, Foot::kLeft, -0.1, 1.2, 0.35}, limp).validity,
-            StepValidity::kSpeedOutOfRange);
-  EXPECT_EQ(create_footstep(after_right, {StepKind::kWalk, Foot::kLeft, -0.1, 0.7, 0.5}, limp).validity,
-            StepValidity::kDurationOutOfRange);
-  EXPECT_TRUE(create_footstep(after_right, {StepKind::kWalk, Foot::kLeft, -0.1, 0.7, 0.35}, limp).valid());
-  EXPECT_TRUE(create_footstep(after_left, {StepKind::kWalk, Foot::kRight, 0.1, 1.2, 0.5}, limp).valid());
+  EXPECT_EQ(
+      create_footstep(after_right, {StepKind::kWalk, Foot::kLeft, -0.1, 1.2, 0.35}, limp).validity,
+      StepValidity::kSpeedOutOfRange);
+  EXPECT_EQ(
+      create_footstep(after_right, {StepKind::kWalk, Foot::kLeft, -0.1, 0.7, 0.5}, limp).validity,
+      StepValidity::kDurationOutOfRange);
+  EXPECT_TRUE(
+      create_footstep(after_right, {StepKind::kWalk, Foot::kLeft, -0.1, 0.7, 0.35}, limp).valid());
+  EXPECT_TRUE(
+      create_footstep(after_left, {StepKind::kWalk, Foot::kRight, 0.1, 1.2, 0.5}, limp).valid());
 }
 
 TEST(Footstep, OrientationIntervalFollowsTheIntersectionRule) {
@@ -199,7 +215,8 @@ TEST(Footstep, StartsFromStandingWithEitherFoot) {
   EXPECT_GT(standing.feet[1].x, standing.feet[0].x);  // facing +y, the right foot is at +x
   for (const Foot foot : {Foot::kLeft, Foot::kRight}) {
     const double phi = kPi / 2 - outward_sign(foot) * 0.1;
-    const StepResult r = create_footstep(standing, {StepKind::kWalk, foot, phi, 1.0, 0.5}, character);
+    const StepResult r =
+        create_footstep(standing, {StepKind::kWalk, foot, phi, 1.0, 0.5}, character);
     ASSERT_TRUE(r.valid()) << to_string(r.validity);
     // From rest, the whole kinetic energy is paid: dE2 = m/2 v^2.
     EXPECT_NEAR(r.step.cost.speed_change, 0.5 * character.mass * 1.0, 1e-9);
@@ -210,7 +227,8 @@ TEST(Footstep, StartsFromStandingWithEitherFoot) {
 TEST(Footstep, StopBringsTheComToRestBesideTheFeet) {
   const CharacterParams character;
   const FootstepState state = walking_state(0.4, 1.2, Foot::kLeft);
-  const StepResult r = create_footstep(state, {StepKind::kStop, Foot::kRight, 0.0, 0.0, 0.5}, character);
+  const StepResult r =
+      create_footstep(state, {StepKind::kStop, Foot::kRight, 0.0, 0.0, 0.5}, character);
   ASSERT_TRUE(r.valid());
   const Vec2 rest = state.com + 0.25 * state.com_velocity;
   EXPECT_NEAR(distance(r.step.com_end, rest), 0.0, 1e-12);
@@ -218,13 +236,15 @@ TEST(Footstep, StopBringsTheComToRestBesideTheFeet) {
   EXPECT_EQ(r.step.foot, Foot::kRight);
   EXPECT_NEAR(distance(r.step.foot_position, rest), character.foot_offset, 1e-12);
   const double theta = std::atan(distance(rest, state.com) / character.com_height);
-  EXPECT_NEAR(r.step.cost.speed_change, 0.5 * character.mass * std::pow(1.2 * std::cos(2 * theta), 2), 1e-9);
+  EXPECT_NEAR(r.step.cost.speed_change,
+              0.5 * character.mass * std::pow(1.2 * std::cos(2 * theta), 2), 1e-9);
   EXPECT_DOUBLE_EQ(r.step.cost.curvature, 0.0);
   // The COM decelerates uniformly: half way it has covered three quarters.
   const ComSample mid = com_at(r.step, r.step.start_time + 0.25);
   EXPECT_NEAR(distance(mid.position, state.com), 0.75 * distance(rest, state.com), 1e-12);
   // A stop from standing is a wait: nothing moves but the stepping foot.
-  const StepResult wait = create_footstep(r.state, {StepKind::kStop, Foot::kLeft, 0.0, 0.0, 0.5}, character);
+  const StepResult wait =
+      create_footstep(r.state, {StepKind::kStop, Foot::kLeft, 0.0, 0.0, 0.5}, character);
   ASSERT_TRUE(wait.valid());
   EXPECT_EQ(wait.step.com_end, r.state.com);
   EXPECT_DOUBLE_EQ(wait.step.cost.speed_change, 0.0);

@@ -40,14 +40,17 @@ AgentPlan plan_and_check(const Scenario& scenario) {
       EXPECT_GT(s.alpha, 0.0);
     }
     // The chosen orientation lies in the step's interval.
-    EXPECT_NEAR(clamp_orientation(s.foot_orientation, s.orientation_interval, s.foot), s.foot_orientation, 1e-9);
+    EXPECT_NEAR(clamp_orientation(s.foot_orientation, s.orientation_interval, s.foot),
+                s.foot_orientation, 1e-9);
     if (i == 0) continue;
     const Footstep& p = agent.footsteps[i - 1];
     // Timed back to back, G1-continuous: same position, same velocity direction.
     EXPECT_DOUBLE_EQ(s.start_time, p.end_time);
     EXPECT_NEAR(distance(s.com_start, p.com_end), 0.0, 1e-12);
     if (length(p.com_velocity_end) > 0 && length(s.com_velocity_start) > 0) {
-      EXPECT_NEAR(wrap_angle(angle_of(s.com_velocity_start) - angle_of(p.com_velocity_end)), 0.0, 1e-9) << i;
+      EXPECT_NEAR(wrap_angle(angle_of(s.com_velocity_start) - angle_of(p.com_velocity_end)), 0.0,
+                  1e-9)
+          << i;
     }
     // Walking steps alternate feet.
     if (p.kind == StepKind::kWalk) {
@@ -121,8 +124,9 @@ TEST(Planner, DemoReachesThroughTheDoorAndAroundTheBox) {
 
 TEST(Planner, EnclosedGoalGivesAPartialPlanEndingInStops) {
   // A closed room around the goal: unreachable, though not inside an obstacle.
-  const std::vector<Obstacle> room = {box_obstacle({6, 2}, {4.2, 0.2}), box_obstacle({6, -2}, {4.2, 0.2}),
-          box_obstacle({4, 0}, {0.2, 4.2}), box_obstacle({8, 0}, {0.2, 4.2})};
+  const std::vector<Obstacle> room = {
+      box_obstacle({6, 2}, {4.2, 0.2}), box_obstacle({6, -2}, {4.2, 0.2}),
+      box_obstacle({4, 0}, {0.2, 4.2}), box_obstacle({8, 0}, {0.2, 4.2})};
   Scenario scenario = one_agent(room, {0, 0}, 0, {6, 0});
   scenario.planner.max_expansions = 300;
   const AgentPlan agent = plan_and_check(scenario);
@@ -132,6 +136,18 @@ TEST(Planner, EnclosedGoalGivesAPartialPlanEndingInStops) {
   EXPECT_EQ(agent.footsteps.back().kind, StepKind::kStop);
   EXPECT_LE(agent.nodes_expanded, static_cast<long long>(agent.searches) * 300);
   EXPECT_LT(agent.end_time(), 30.0);
+}
+
+TEST(Planner, ThinWallsAreNeverSteppedThrough) {
+  // A 5 mm wall right across the way: the goal behind it cannot be reached.
+  for (const double thickness : {0.005, 0.05}) {
+    SCOPED_TRACE(::testing::Message() << "thickness " << thickness);
+    Scenario scenario = one_agent({box_obstacle({3, 0}, {thickness, 40})}, {0, 0}, 0, {6, 0});
+    scenario.planner.max_expansions = 300;
+    const AgentPlan agent = plan_and_check(scenario);
+    EXPECT_EQ(agent.status, AgentStatus::kPartial);
+    for (const Footstep& s : agent.footsteps) EXPECT_LT(s.com_end.x, 3.0);
+  }
 }
 
 TEST(Planner, HorizonReturnsThePathToTheMostPromisingNode) {
@@ -153,8 +169,9 @@ TEST(Planner, StandingCharacterWithNowhereToGoWaits) {
   // Boxed in tight: no step is possible, so the best the planner offers is a wait.
   const CharacterParams character;
   // Inside: 0.44 m deep (the torso is 0.3 deep), 0.68 m wide (it is 0.6 wide).
-  const std::vector<Obstacle> cell = {box_obstacle({0, 0.44}, {1.0, 0.2}), box_obstacle({0, -0.44}, {1.0, 0.2}),
-                                      box_obstacle({0.32, 0}, {0.2, 1.0}), box_obstacle({-0.32, 0}, {0.2, 1.0})};
+  const std::vector<Obstacle> cell = {
+      box_obstacle({0, 0.44}, {1.0, 0.2}), box_obstacle({0, -0.44}, {1.0, 0.2}),
+      box_obstacle({0.32, 0}, {0.2, 1.0}), box_obstacle({-0.32, 0}, {0.2, 1.0})};
   const ObstacleMap map(cell);
   const FootstepPlanner planner(character, PlannerParams{}, map);
   const SearchResult result = planner.plan(standing_state({0, 0}, 0, character), {5, 0});
@@ -167,8 +184,10 @@ TEST(Planner, ReportsInvalidStartAndGoal) {
   const CharacterParams character;
   const ObstacleMap map({box_obstacle({3, 0}, {1, 1})});
   const FootstepPlanner planner(character, PlannerParams{}, map);
-  EXPECT_EQ(planner.plan(standing_state({3, 0}, 0, character), {6, 0}).status, Status::kInvalidStart);
-  EXPECT_EQ(planner.plan(standing_state({0, 0}, 0, character), {3, 0}).status, Status::kInvalidGoal);
+  EXPECT_EQ(planner.plan(standing_state({3, 0}, 0, character), {6, 0}).status,
+            Status::kInvalidStart);
+  EXPECT_EQ(planner.plan(standing_state({0, 0}, 0, character), {3, 0}).status,
+            Status::kInvalidGoal);
 }
 
 TEST(Planner, SameInputGivesBitIdenticalPlans) {
@@ -198,7 +217,8 @@ TEST(Planner, FootOrientationsKeepThePairRule) {
   std::array<double, 2> last{agent.start.facing, agent.start.facing};
   for (const Footstep& s : agent.footsteps) {
     // Outward from the other foot's orientation by 0 to max_foot_turn.
-    const double outward = outward_sign(s.foot) * wrap_angle(s.foot_orientation - last[static_cast<int>(other(s.foot))]);
+    const double outward = outward_sign(s.foot) *
+                           wrap_angle(s.foot_orientation - last[static_cast<int>(other(s.foot))]);
     EXPECT_GE(outward, -1e-9);
     EXPECT_LE(outward, max_turn + 1e-9);
     last[static_cast<int>(s.foot)] = s.foot_orientation;

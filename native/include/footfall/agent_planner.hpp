@@ -41,17 +41,17 @@ struct RunControl {
 
 /// The plan of one agent: its start and its timed footsteps.
 struct AgentPlan {
-  std::string name;                  ///< The agent's name.
+  std::string name;                            ///< The agent's name.
   AgentStatus status = AgentStatus::kPartial;  ///< Reached or partial.
   /// Empty when reached; otherwise "stuck", "time limit" or "cancelled".
   std::string reason;
-  Vec2 stuck_at;                     ///< Where the agent stopped, when partial. [m]
-  FootstepState start;               ///< Standing start state.
-  std::vector<Footstep> footsteps;   ///< The timed footsteps, in order.
-  int goals_reached = 0;             ///< Goals reached, in order.
-  int searches = 0;                  ///< Footstep searches run.
-  long long nodes_generated = 0;     ///< Summed over the searches.
-  long long nodes_expanded = 0;      ///< Summed over the searches.
+  Vec2 stuck_at;                    ///< Where the agent stopped, when partial. [m]
+  FootstepState start;              ///< Standing start state.
+  std::vector<Footstep> footsteps;  ///< The timed footsteps, in order.
+  int goals_reached = 0;            ///< Goals reached, in order.
+  int searches = 0;                 ///< Footstep searches run.
+  long long nodes_generated = 0;    ///< Summed over the searches.
+  long long nodes_expanded = 0;     ///< Summed over the searches.
 
   /// Sum of the step costs. [J]
   double total_cost() const;

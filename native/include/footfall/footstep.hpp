@@ -67,13 +67,13 @@ double clamp_orientation(double angle, const OrientationInterval& interval, Foot
 
 /// The character's state at the end of a step (section 3.1), with both feet.
 struct FootstepState {
-  Vec2 com;                 ///< COM position. [m]
-  Vec2 com_velocity;        ///< COM velocity; zero when standing. [m/s]
-  Foot last_foot = Foot::kRight;    ///< Foot placed by the last step.
-  std::array<Vec2, 2> feet;         ///< Foot positions, indexed by Foot. [m]
+  Vec2 com;                                             ///< COM position. [m]
+  Vec2 com_velocity;                                    ///< COM velocity; zero when standing. [m/s]
+  Foot last_foot = Foot::kRight;                        ///< Foot placed by the last step.
+  std::array<Vec2, 2> feet;                             ///< Foot positions, indexed by Foot. [m]
   std::array<OrientationInterval, 2> foot_orientation;  ///< Valid orientations per foot.
-  double facing = 0;        ///< Torso facing: phi of the last walking step. [rad]
-  double time = 0;          ///< Time at the end of the step. [s]
+  double facing = 0;  ///< Torso facing: phi of the last walking step. [rad]
+  double time = 0;    ///< Time at the end of the step. [s]
 
   /// True when the character stands still (after a stop, or at the start).
   bool standing() const { return com_velocity.x == 0.0 && com_velocity.y == 0.0; }
@@ -102,22 +102,22 @@ struct StepCost {
 
 /// One planned footstep with everything needed to evaluate it analytically.
 struct Footstep {
-  Foot foot = Foot::kLeft;          ///< The foot placed at the start of the step.
-  StepKind kind = StepKind::kWalk;  ///< Walk or stop.
-  Behavior behavior = Behavior::kWalk;  ///< Behaviour of the path section.
-  double start_time = 0;            ///< [s]
-  double end_time = 0;              ///< [s]
-  Vec2 foot_position;               ///< Where the foot is planted. [m]
+  Foot foot = Foot::kLeft;                   ///< The foot placed at the start of the step.
+  StepKind kind = StepKind::kWalk;           ///< Walk or stop.
+  Behavior behavior = Behavior::kWalk;       ///< Behaviour of the path section.
+  double start_time = 0;                     ///< [s]
+  double end_time = 0;                       ///< [s]
+  Vec2 foot_position;                        ///< Where the foot is planted. [m]
   OrientationInterval orientation_interval;  ///< Valid orientations of the planted foot.
-  double foot_orientation = 0;      ///< Chosen orientation (post-process, section 4). [rad]
-  Vec2 com_start;                   ///< [m]
-  Vec2 com_end;                     ///< [m]
-  Vec2 com_velocity_start;          ///< [m/s]
-  Vec2 com_velocity_end;            ///< [m/s]
-  double phi = 0;                   ///< Parabola orientation, also the torso facing. [rad]
-  double speed = 0;                 ///< Desired speed. [m/s]
-  double alpha = 0;                 ///< Parabola coefficient of equation 1. [m/s^2]
-  StepCost cost;                    ///< Energy of the step. [J]
+  double foot_orientation = 0;  ///< Chosen orientation (post-process, section 4). [rad]
+  Vec2 com_start;               ///< [m]
+  Vec2 com_end;                 ///< [m]
+  Vec2 com_velocity_start;      ///< [m/s]
+  Vec2 com_velocity_end;        ///< [m/s]
+  double phi = 0;               ///< Parabola orientation, also the torso facing. [rad]
+  double speed = 0;             ///< Desired speed. [m/s]
+  double alpha = 0;             ///< Parabola coefficient of equation 1. [m/s^2]
+  StepCost cost;                ///< Energy of the step. [J]
 
   /// Step duration. [s]
   double duration() const { return end_time - start_time; }
@@ -141,8 +141,8 @@ const char* to_string(StepValidity validity);
 /// Result of create_footstep: the step and the state after it, if valid.
 struct StepResult {
   StepValidity validity = StepValidity::kValid;  ///< kValid, or why not.
-  Footstep step;        ///< The step (meaningful when valid).
-  FootstepState state;  ///< The state at its end (meaningful when valid).
+  Footstep step;                                 ///< The step (meaningful when valid).
+  FootstepState state;                           ///< The state at its end (meaningful when valid).
   /// True when the action was valid.
   bool valid() const { return validity == StepValidity::kValid; }
 };

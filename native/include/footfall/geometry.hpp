@@ -40,6 +40,14 @@ inline double angle_of(Vec2 a) { return std::atan2(a.y, a.x); }
 /// True if both coordinates are finite numbers.
 inline bool is_finite(Vec2 a) { return std::isfinite(a.x) && std::isfinite(a.y); }
 
+/// Largest coordinate accepted in a scene: far beyond any real scene, and
+/// small enough that sums and grid indices stay exact. [m]
+constexpr double kMaxCoordinate = 1e9;
+/// True if both coordinates are finite and within kMaxCoordinate of the origin.
+inline bool in_world(Vec2 a) {
+  return is_finite(a) && std::fabs(a.x) <= kMaxCoordinate && std::fabs(a.y) <= kMaxCoordinate;
+}
+
 /// `angle` wrapped into (-pi, pi]. [rad]
 double wrap_angle(double angle);
 
@@ -48,8 +56,8 @@ double distance_to_segment(Vec2 p, Vec2 a, Vec2 b);
 
 /// A circle in the ground plane.
 struct Circle {
-  Vec2 center;         ///< Centre. [m]
-  double radius = 0;   ///< Radius. [m] [>= 0]
+  Vec2 center;        ///< Centre. [m]
+  double radius = 0;  ///< Radius. [m] [>= 0]
 };
 
 }  // namespace footfall

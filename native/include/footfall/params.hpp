@@ -15,31 +15,37 @@ struct FootLimits {
   double min_step_duration = 0.2;  ///< Shortest step. [s] [> 0]
   double max_step_duration = 0.8;  ///< Longest step. [s] [>= min_step_duration, <= 5]
   double min_step_length = 0.1;    ///< Shortest COM travel (chord) over a walking step. [m] [> 0]
-  double max_step_length = 1.0;    ///< Longest COM travel (chord) over a walking step. [m] [>= min_step_length, <= 3]
-  double min_speed = 0.2;          ///< Slowest desired COM speed of a walking step. [m/s] [> 0]
-  double max_speed = 2.5;          ///< Fastest desired COM speed of a walking step. [m/s] [>= min_speed, <= 10]
+  double max_step_length =
+      1.0;  ///< Longest COM travel (chord) over a walking step. [m] [>= min_step_length, <= 3]
+  double min_speed = 0.2;  ///< Slowest desired COM speed of a walking step. [m/s] [> 0]
+  double max_speed =
+      2.5;  ///< Fastest desired COM speed of a walking step. [m/s] [>= min_speed, <= 10]
 };
 
 /// The walking character: pendulum model, energy model and collision model.
 struct CharacterParams {
-  double com_height = 1.0;         ///< Height of the centre of mass, the pendulum length. [m] [0.2, 3]
-  double mass = 70.0;              ///< Body mass m. [kg] (0, 500]
+  double com_height = 1.0;  ///< Height of the centre of mass, the pendulum length. [m] [0.2, 3]
+  double mass = 70.0;       ///< Body mass m. [kg] (0, 500]
   /// Fixed energy rate R (equation 3). The default puts the cheapest cost per
   /// metre of the default gaits at the preferred speed. [J/s] [0, 1e5]
   double energy_rate = 150.0;
-  double curvature_weight = 0.35;  ///< Curvature weight w (equation 5); the paper uses 0.2-0.5. [1] [0, 1]
-  double foot_offset = 0.1;        ///< Lateral distance d from the COM to the stance foot at rest. [m] (0, 0.5]
-  double torso_width = 0.6;        ///< Shoulder to shoulder. [m] (0, 1.5]
-  double torso_radius = 0.15;      ///< Radius of the central torso circle. [m] (0, torso_width / 2]
-  double shoulder_radius = 0.1;    ///< Radius of each shoulder circle; its outer edge is at torso_width / 2. [m] (0, torso_width / 2]
-  double foot_radius = 0.08;       ///< Radius of a planted foot's circle. [m] (0, 0.5]
-  double preferred_speed = 1.3;    ///< Speed of a normal step, used by the heuristic. [m/s] (0, 10]
-  double preferred_step_duration = 0.5;  ///< Duration of a normal step, used by the heuristic. [s] (0, 5]
+  double curvature_weight =
+      0.35;  ///< Curvature weight w (equation 5); the paper uses 0.2-0.5. [1] [0, 1]
+  double foot_offset =
+      0.1;  ///< Lateral distance d from the COM to the stance foot at rest. [m] (0, 0.5]
+  double torso_width = 0.6;      ///< Shoulder to shoulder. [m] (0, 1.5]
+  double torso_radius = 0.15;    ///< Radius of the central torso circle. [m] (0, torso_width / 2]
+  double shoulder_radius = 0.1;  ///< Radius of each shoulder circle; its outer edge is at
+                                 ///< torso_width / 2. [m] (0, torso_width / 2]
+  double foot_radius = 0.08;     ///< Radius of a planted foot's circle. [m] (0, 0.5]
+  double preferred_speed = 1.3;  ///< Speed of a normal step, used by the heuristic. [m/s] (0, 10]
+  double preferred_step_duration =
+      0.5;  ///< Duration of a normal step, used by the heuristic. [s] (0, 5]
   /// How far the next foot may turn outward past the previous foot's inner
   /// bound (the pi/2 of the orientation rule, section 3.2). [rad] (0, pi]
   double max_foot_turn = 1.5707963267948966;
-  FootLimits left;                 ///< Limits on left-foot steps.
-  FootLimits right;                ///< Limits on right-foot steps.
+  FootLimits left;   ///< Limits on left-foot steps.
+  FootLimits right;  ///< Limits on right-foot steps.
 };
 
 /// One walking gait of the discretised action space: a desired speed and a
@@ -51,7 +57,7 @@ struct Gait {
 
 /// The short-horizon best-first footstep planner (section 4).
 struct PlannerParams {
-  int max_expansions = 1000;        ///< Horizon: nodes expanded per search. [1] [1, 1000000]
+  int max_expansions = 1000;  ///< Horizon: nodes expanded per search. [1] [1, 1000000]
   /// Weight of h in f = g + weight * h. 1 is the paper's plain A*; the
   /// default 1.5 (plans cost at most 1.5 times the optimum) expands 3-10
   /// times fewer nodes around obstacles. [1] [1, 10]

@@ -12,8 +12,8 @@ namespace footfall {
 
 /// The plan of a whole scenario.
 struct Plan {
-  std::vector<AgentPlan> agents;  ///< One per scenario agent, in the same order.
-  CharacterParams character;      ///< The character the plan was made for.
+  std::vector<AgentPlan> agents;     ///< One per scenario agent, in the same order.
+  CharacterParams character;         ///< The character the plan was made for.
   Status status = Status::kSuccess;  ///< kCancelled if the run was stopped.
 };
 

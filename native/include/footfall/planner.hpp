@@ -93,5 +93,4 @@ void choose_foot_orientations(std::vector<Footstep>& steps,
                               const std::array<OrientationInterval, 2>& initial,
                               const CharacterParams& character);
 
-
 }  // namespace footfall

@@ -10,9 +10,9 @@ namespace footfall {
 
 /// Outcome of a planning call. Expected outcomes are values, not exceptions.
 enum class Status {
-  kSuccess,       ///< The goal was reached.
-  kPartial,       ///< The horizon or time limit was reached first; the result leads toward the goal.
-  kNoPath,        ///< No progress toward the goal is possible from the start.
+  kSuccess,  ///< The goal was reached.
+  kPartial,  ///< The horizon or time limit was reached first; the result leads toward the goal.
+  kNoPath,   ///< No progress toward the goal is possible from the start.
   kInvalidStart,  ///< The start state collides with an obstacle.
   kInvalidGoal,   ///< The goal lies inside an obstacle.
   kTimeOut,       ///< Stopped by the simulated-time limit.
