@@ -1,0 +1,45 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Planner parameters derived from a rig's dimensions, so that a tall rig
+takes longer strides.
+
+The paper's default character (COM 1 m high, steps 0.1-1 m, torso 0.6 m wide)
+is a person of about 1.8 m: leg length 0.9 m. A rig is scaled from it by its
+leg length L: lengths in proportion to L, and, for a walk that looks the same
+at any size (equal Froude number v^2 / (g L)), speeds and step durations in
+proportion to sqrt(L).
+"""
+
+import math
+from typing import Dict, Mapping, Tuple
+
+REFERENCE_LEG_LENGTH = 0.9  # [m] of the paper's default character
+COM_ABOVE_HIPS = 1.05  # the COM stands about 5 % above the hip joints
+ARM_THICKNESS = 0.1  # [m] per side outside the shoulder joints, at the reference size
+DEFAULT_GAITS = ((0.6, 0.65), (1.3, 0.5), (1.6, 0.45))  # as PlannerParams' defaults
+
+
+def derive_parameters(dimensions: Mapping[str, float]) -> Tuple[Dict[str, object], Dict[str, object]]:
+    """(character overrides, planner overrides) for a scenario document."""
+    scale = dimensions["leg_length"] / REFERENCE_LEG_LENGTH
+    time_scale = math.sqrt(scale)
+    speed_scale = math.sqrt(scale)
+    character = {
+        "com_height": COM_ABOVE_HIPS * dimensions["hip_height"],
+        "min_step_length": 0.1 * scale,
+        "max_step_length": 1.0 * scale,
+        "min_step_duration": 0.2 * time_scale,
+        "max_step_duration": 0.8 * time_scale,
+        "max_speed": 2.5 * speed_scale,
+        "min_speed": 0.2 * speed_scale,
+        "preferred_speed": 1.3 * speed_scale,
+        "preferred_step_duration": 0.5 * time_scale,
+        "torso_width": dimensions["shoulder_width"] + 2 * ARM_THICKNESS * scale,
+        "torso_radius": 0.15 * scale,
+        "shoulder_radius": 0.1 * scale,
+        "foot_offset": 0.1 * scale,
+        "foot_radius": 0.3 * dimensions["foot_length"],
+    }
+    planner = {
+        "gaits": [{"speed": v * speed_scale, "duration": t * time_scale} for v, t in DEFAULT_GAITS],
+    }
+    return character, planner

@@ -1,0 +1,230 @@
+"""Rig handling without Blender: bone-map detection, profiles, dimensions,
+and the planner parameters derived from a rig."""
+
+import json
+import math
+
+import pytest
+
+from footfall.core import bone_map, character, rig_measure, rig_profile
+from footfall.core.bone_map import Bone
+
+
+def chain(*pairs):
+    """Bones from (name, parent) pairs."""
+    return [Bone(name, parent) for name, parent in pairs]
+
+
+def limbs(prefix, names, trunk_hips, trunk_chest, side_of):
+    """Arm and leg chains of both sides, named by `names` and `side_of`."""
+    bones = []
+    for side in ("left", "right"):
+        n = {role: side_of(side, base) for role, base in names.items()}
+        shoulder = n.get("shoulder")
+        arm_parent = trunk_chest
+        if shoulder:
+            bones.append(Bone(prefix + shoulder, prefix + trunk_chest))
+            arm_parent = shoulder
+        bones += chain(
+            (prefix + n["upper_arm"], prefix + arm_parent),
+            (prefix + n["forearm"], prefix + n["upper_arm"]),
+            (prefix + n["hand"], prefix + n["forearm"]),
+            (prefix + n["thigh"], prefix + trunk_hips),
+            (prefix + n["shin"], prefix + n["thigh"]),
+            (prefix + n["foot"], prefix + n["shin"]),
+            (prefix + n["toe"], prefix + n["foot"]),
+        )
+    return bones
+
+
+OURS = chain(("hips", None), ("spine", "hips"), ("chest", "spine"), ("neck", "chest"), ("head", "neck")) + limbs(
+    "",
+    dict(upper_arm="upper_arm", forearm="forearm", hand="hand", thigh="thigh", shin="shin", foot="foot", toe="toe"),
+    "hips",
+    "chest",
+    lambda side, base: f"{base}.{side[0].upper()}",
+)
+
+MIXAMO = chain(
+    ("mixamorig:Hips", None),
+    ("mixamorig:Spine", "mixamorig:Hips"),
+    ("mixamorig:Spine1", "mixamorig:Spine"),
+    ("mixamorig:Spine2", "mixamorig:Spine1"),
+    ("mixamorig:Neck", "mixamorig:Spine2"),
+    ("mixamorig:Head", "mixamorig:Neck"),
+    ("mixamorig:HeadTop_End", "mixamorig:Head"),
+) + limbs(
+    "mixamorig:",
+    dict(shoulder="Shoulder", upper_arm="Arm", forearm="ForeArm", hand="Hand", thigh="UpLeg", shin="Leg", foot="Foot", toe="ToeBase"),
+    "Hips",
+    "Spine2",
+    lambda side, base: ("Left" if side == "left" else "Right") + base,
+)
+
+UNREAL = chain(
+    ("root", None), ("pelvis", "root"), ("spine_01", "pelvis"), ("spine_02", "spine_01"), ("spine_03", "spine_02"),
+    ("neck_01", "spine_03"), ("head", "neck_01"),
+) + limbs(
+    "",
+    dict(shoulder="clavicle", upper_arm="upperarm", forearm="lowerarm", hand="hand", thigh="thigh", shin="calf", foot="foot", toe="ball"),
+    "pelvis",
+    "spine_03",
+    lambda side, base: f"{base}_{side[0]}",
+)
+
+UNITY = chain(
+    ("Hips", None), ("Spine", "Hips"), ("Chest", "Spine"), ("UpperChest", "Chest"), ("Neck", "UpperChest"), ("Head", "Neck"),
+) + limbs(
+    "",
+    dict(shoulder="Shoulder", upper_arm="UpperArm", forearm="LowerArm", hand="Hand", thigh="UpperLeg", shin="LowerLeg", foot="Foot", toe="Toes"),
+    "Hips",
+    "UpperChest",
+    lambda side, base: ("Left" if side == "left" else "Right") + base,
+)
+
+
+@pytest.mark.parametrize(
+    "name, expected",
+    [
+        ("upper_arm.L", ("left", "upperarm")),
+        ("thigh.R", ("right", "thigh")),
+        ("mixamorig:LeftForeArm", ("left", "forearm")),
+        ("mixamorig:RightUpLeg", ("right", "upleg")),
+        ("calf_l", ("left", "calf")),
+        ("foot-R", ("right", "foot")),
+        ("L_Hand", ("left", "hand")),
+        ("Left Arm", ("left", "arm")),
+        ("Leg", (None, "leg")),
+        ("Lowerback", (None, "lowerback")),
+        ("Head", (None, "head")),
+    ],
+)
+def test_split_side(name, expected):
+    assert bone_map.split_side(name) == expected
+
+
+@pytest.mark.parametrize(
+    "bones, expected",
+    [
+        (OURS, {"hips": "hips", "spine": "spine", "chest": "chest", "neck": "neck", "head": "head",
+                "left": {"upper_arm": "upper_arm.L", "toe": "toe.L", "shin": "shin.L"}}),
+        (MIXAMO, {"hips": "mixamorig:Hips", "spine": "mixamorig:Spine", "chest": "mixamorig:Spine2",
+                  "neck": "mixamorig:Neck", "head": "mixamorig:Head",
+                  "left": {"upper_arm": "mixamorig:LeftArm", "shin": "mixamorig:LeftLeg", "toe": "mixamorig:LeftToeBase"},
+                  "right": {"thigh": "mixamorig:RightUpLeg", "forearm": "mixamorig:RightForeArm"}}),
+        (UNREAL, {"hips": "pelvis", "spine": "spine_01", "chest": "spine_03", "neck": "neck_01", "head": "head",
+                  "left": {"upper_arm": "upperarm_l", "shin": "calf_l", "toe": "ball_l"}}),
+        (UNITY, {"hips": "Hips", "spine": "Spine", "chest": "UpperChest", "neck": "Neck", "head": "Head",
+                 "right": {"upper_arm": "RightUpperArm", "forearm": "RightLowerArm", "shin": "RightLowerLeg"}}),
+    ],
+    ids=["footfall", "mixamo", "unreal", "unity"],
+)
+def test_detects_common_naming_schemes(bones, expected):
+    mapping = bone_map.detect(bones)
+    for role, bone in expected.items():
+        if isinstance(bone, dict):
+            for limb, name in bone.items():
+                assert mapping[role][limb] == name, (role, limb)
+        else:
+            assert mapping[role] == bone, role
+    bone_map.validate_map(mapping, [b.name for b in bones])
+
+
+def test_undetectable_rig_lists_every_missing_bone():
+    bones = [b for b in OURS if not b.name.startswith("toe")]
+    bones = [Bone("Bip01 Head" if b.name == "head" else b.name, b.parent) for b in bones]
+    with pytest.raises(bone_map.BoneMapError) as error:
+        bone_map.detect(bones, "robot.glb")
+    assert error.value.missing == ["left.toe", "right.toe"]
+    assert "robot.glb" in str(error.value) and "left.toe, right.toe" in str(error.value)
+    assert "profile JSON beside the file" in str(error.value)
+
+
+def test_validate_map_names_unknown_bones():
+    mapping = bone_map.detect(OURS)
+    mapping["left"]["hand"] = "paw.L"
+    with pytest.raises(bone_map.BoneMapError, match=r"left\.hand"):
+        bone_map.validate_map(mapping, [b.name for b in OURS])
+
+
+def profile_document(**changes):
+    document = {
+        "format": "footfall-rig-profile", "version": 1,
+        "bones": bone_map.detect(OURS),
+        "clips": {"walk": "walk", "arms_in": "arms_in", "side_step": None, "idle": "idle"},
+        "dimensions": {"hip_height": 0.95, "leg_length": 0.9, "shoulder_width": 0.4, "foot_length": 0.25},
+    }
+    document.update(changes)
+    return document
+
+
+def test_profile_round_trips(tmp_path):
+    path = tmp_path / "rig.json"
+    path.write_text(json.dumps(profile_document()))
+    profile = rig_profile.load(str(path))
+    assert profile.bones["left"]["foot"] == "foot.L"
+    assert profile.clips["side_step"] is None
+    assert rig_profile.parse(profile.to_document()).dimensions == profile.dimensions
+
+
+@pytest.mark.parametrize(
+    "changes, message",
+    [
+        ({"format": "other"}, 'format: expected "footfall-rig-profile"'),
+        ({"bones": {"hips": "hips"}}, "bones.spine: missing"),
+        ({"clips": {"run": "run"}}, "clips.run: unknown behaviour"),
+        ({"dimensions": {"hip_height": -1, "leg_length": 0.9, "shoulder_width": 0.4, "foot_length": 0.2}},
+         "dimensions.hip_height: expected a positive number of metres, got -1"),
+        ({"extra": 1}, "extra: unknown field"),
+    ],
+)
+def test_bad_profiles_name_the_field(changes, message):
+    with pytest.raises(rig_profile.ProfileError) as error:
+        rig_profile.parse(profile_document(**changes), "rig.json")
+    assert str(error.value).startswith("rig.json: ") and message in str(error.value)
+
+
+def test_partial_profile_is_accepted_for_completion():
+    profile = rig_profile.parse({"format": "footfall-rig-profile", "version": 1, "bones": {"left": {"toe": "Toe_L"}}}, partial=True)
+    assert profile.bones["left"] == {"toe": "Toe_L"}
+
+
+def test_measure_dimensions():
+    mapping = bone_map.detect(OURS)
+    heads, tails = {}, {}
+    for side, x in (("L", 0.1), ("R", -0.1)):
+        heads[f"thigh.{side}"] = (x, 0.0, 0.95)
+        heads[f"shin.{side}"] = (x, 0.0, 0.5)
+        heads[f"foot.{side}"] = (x, 0.0, 0.08)
+        tails[f"toe.{side}"] = (x, -0.18, 0.0)
+        heads[f"upper_arm.{side}"] = (2 * x + 0.0, 0.0, 1.45)
+    d = rig_measure.measure(mapping, heads, tails)
+    assert d["hip_height"] == pytest.approx(0.95)
+    assert d["leg_length"] == pytest.approx(0.45 + 0.42)
+    assert d["shoulder_width"] == pytest.approx(0.4)
+    assert d["foot_length"] == pytest.approx(0.18)
+
+
+def test_reference_size_gives_the_papers_character():
+    c, p = character.derive_parameters({"hip_height": 0.95, "leg_length": 0.9, "shoulder_width": 0.4, "foot_length": 0.27})
+    assert c["com_height"] == pytest.approx(1.0, abs=0.01)
+    assert c["max_step_length"] == pytest.approx(1.0)
+    assert c["torso_width"] == pytest.approx(0.6)
+    assert p["gaits"][1] == {"speed": pytest.approx(1.3), "duration": pytest.approx(0.5)}
+
+
+def test_a_tall_rig_takes_longer_strides(ff):
+    from footfall.core import scenario as sc
+
+    def mean_stride(dimensions):
+        c, p = character.derive_parameters(dimensions)
+        document = sc.scenario_document(
+            sc.ScenarioInput(agents=[sc.AgentInput("a", (0, 0), [(12, 0)])], character=c, planner=p)
+        )
+        (agent,) = sc.plan(document).agents
+        walks = [s for s in agent.footsteps if s.kind == ff.StepKind.WALK]
+        return sum(math.dist(s.com_start, s.com_end) for s in walks) / len(walks)
+
+    short = mean_stride({"hip_height": 0.7, "leg_length": 0.65, "shoulder_width": 0.3, "foot_length": 0.2})
+    tall = mean_stride({"hip_height": 1.1, "leg_length": 1.05, "shoulder_width": 0.46, "foot_length": 0.3})
+    assert tall > 1.3 * short
