@@ -196,6 +196,7 @@ def test_measure_dimensions():
         heads[f"thigh.{side}"] = (x, 0.0, 0.95)
         heads[f"shin.{side}"] = (x, 0.0, 0.5)
         heads[f"foot.{side}"] = (x, 0.0, 0.08)
+        heads[f"toe.{side}"] = (x, -0.13, 0.02)
         tails[f"toe.{side}"] = (x, -0.18, 0.0)
         heads[f"upper_arm.{side}"] = (2 * x + 0.0, 0.0, 1.45)
     d = rig_measure.measure(mapping, heads, tails)
@@ -203,6 +204,9 @@ def test_measure_dimensions():
     assert d["leg_length"] == pytest.approx(0.45 + 0.42)
     assert d["shoulder_width"] == pytest.approx(0.4)
     assert d["foot_length"] == pytest.approx(0.18)
+    # With the foot's mesh: heel (5 cm behind the ankle) to the tip (22 cm ahead).
+    mesh = {side: [(x, 0.05, 0.0), (x, -0.22, 0.01), (x + 0.03, -0.1, 0.0)] for side, x in (("left", 0.1), ("right", -0.1))}
+    assert rig_measure.measure(mapping, heads, tails, mesh)["foot_length"] == pytest.approx(0.27)
 
 
 def test_reference_size_gives_the_papers_character():
@@ -228,3 +232,13 @@ def test_a_tall_rig_takes_longer_strides(ff):
     short = mean_stride({"hip_height": 0.7, "leg_length": 0.65, "shoulder_width": 0.3, "foot_length": 0.2})
     tall = mean_stride({"hip_height": 1.1, "leg_length": 1.05, "shoulder_width": 0.46, "foot_length": 0.3})
     assert tall > 1.3 * short
+
+
+def test_given_limbs_guide_the_trunk():
+    # Thighs detection cannot read: given, they still locate the hips.
+    bones = [Bone({"thigh.L": "Femur_A", "thigh.R": "Femur_B"}.get(b.name, b.name),
+                  {"thigh.L": "Femur_A", "thigh.R": "Femur_B"}.get(b.parent, b.parent)) for b in OURS]
+    mapping, missing = bone_map.detect_partial(bones)
+    assert "hips" in missing and "left.thigh" in missing
+    mapping, missing = bone_map.detect_partial(bones, {"left": {"thigh": "Femur_A"}, "right": {"thigh": "Femur_B"}})
+    assert missing == [] and mapping["hips"] == "hips" and mapping["left"]["thigh"] == "Femur_A"

@@ -110,12 +110,25 @@ def detect(bones: Sequence[Bone], rig: str = "rig") -> Dict[str, object]:
 
     Raises BoneMapError listing every role it could not map.
     """
+    mapping, missing = detect_partial(bones)
+    if missing:
+        raise BoneMapError(rig, missing)
+    return mapping
+
+
+def detect_partial(bones: Sequence[Bone], given: Optional[Dict[str, object]] = None):
+    """(the roles found, the roles missing as "left.toe", "hips", ...).
+
+    Roles in `given` are taken as they are, and the trunk is found from the
+    limbs given as well as from those found.
+    """
+    given = given or {}
     parents = {bone.name: bone.parent for bone in bones}
     mapping: Dict[str, object] = {side: {} for side in SIDES}
     missing = []
     for side in SIDES:
         for role in LIMB_ROLES:
-            found = _by_name(bones, parents, side, LIMB_SYNONYMS[role])
+            found = (given.get(side) or {}).get(role) or _by_name(bones, parents, side, LIMB_SYNONYMS[role])
             if found is None:
                 missing.append(f"{side}.{role}")
             else:
@@ -144,13 +157,12 @@ def detect(bones: Sequence[Bone], rig: str = "rig") -> Dict[str, object]:
     if neck is None and head is not None and parents.get(head) not in (None, chest):
         neck = parents[head]
     for role, bone in zip(CENTER_ROLES, (hips, spine, chest, neck, head)):
+        bone = given.get(role) or bone
         if bone is None:
             missing.append(role)
         else:
             mapping[role] = bone
-    if missing:
-        raise BoneMapError(rig, missing)
-    return mapping
+    return mapping, missing
 
 
 def validate_map(mapping: Dict[str, object], bone_names, rig: str = "rig") -> None:

@@ -1,9 +1,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""The Footfall sidebar panel."""
+"""The Footfall sidebar panels."""
 
 import bpy
 
 from ..core import native
+from .properties import MAPPING_FIELDS
 
 
 class FOOTFALL_PT_main(bpy.types.Panel):
@@ -17,3 +18,23 @@ class FOOTFALL_PT_main(bpy.types.Panel):
 
     def draw(self, context):
         self.layout.label(text=native.status())
+        self.layout.operator("footfall.import_rig", icon="ARMATURE_DATA")
+
+
+class FOOTFALL_PT_bone_map(bpy.types.Panel):
+    """Bone names for Import Rig, where detection cannot find them."""
+
+    bl_idname = "FOOTFALL_PT_bone_map"
+    bl_label = "Bone Mapping"
+    bl_parent_id = "FOOTFALL_PT_main"
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "Footfall"
+    bl_options = {"DEFAULT_CLOSED"}
+
+    def draw(self, context):
+        layout = self.layout
+        layout.label(text="Empty fields are detected")
+        fields = context.scene.footfall_bone_map
+        for name, _side, _role in MAPPING_FIELDS:
+            layout.prop(fields, name)

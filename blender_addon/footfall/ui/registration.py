@@ -3,16 +3,20 @@
 
 import bpy
 
-from .panel import FOOTFALL_PT_main
+from . import properties
+from .operators import FOOTFALL_OT_import_rig
+from .panel import FOOTFALL_PT_bone_map, FOOTFALL_PT_main
 
-classes = (FOOTFALL_PT_main,)
+classes = (properties.FOOTFALL_PG_bone_map, FOOTFALL_OT_import_rig, FOOTFALL_PT_main, FOOTFALL_PT_bone_map)
 
 
 def register():
     for cls in classes:
         bpy.utils.register_class(cls)
+    properties.register()
 
 
 def unregister():
+    properties.unregister()
     for cls in reversed(classes):
         bpy.utils.unregister_class(cls)

@@ -1,0 +1,140 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Importing a glTF humanoid: Blender's importer, then the bone map, clips and
+dimensions, stored on the armature as its rig profile.
+
+Either the whole import succeeds, or everything it created is removed again.
+"""
+
+import json
+import pathlib
+from dataclasses import dataclass, field
+from typing import Dict, List, Optional
+
+import bpy
+
+from ..core import bone_map, rig_measure, rig_profile
+from ..core.rig_profile import BEHAVIORS, RigProfile
+from . import datablocks
+
+PROFILE_PROPERTY = "footfall_profile"
+
+
+class RigImportError(ValueError):
+    """The file is not a humanoid rig Footfall can use; the message says why."""
+
+
+@dataclass
+class ImportedRig:
+    """The imported armature object, its profile, and notes for the user."""
+
+    armature: bpy.types.Object
+    profile: RigProfile
+    notes: List[str] = field(default_factory=list)
+
+
+def _run_gltf_importer(filepath: str) -> None:
+    # Debian's Blender 3.4 importer uses numpy.bool, which numpy 1.24 removed.
+    import numpy
+
+    if not hasattr(numpy, "bool"):
+        numpy.bool = bool
+    try:
+        result = bpy.ops.import_scene.gltf(filepath=filepath)
+    except RuntimeError as error:
+        raise RigImportError(f"{filepath}: Blender's glTF importer failed: {error}") from error
+    if "FINISHED" not in result:
+        raise RigImportError(f"{filepath}: Blender's glTF importer did not finish")
+
+
+def _merge(first: Dict[str, object], second: Dict[str, object]) -> Dict[str, object]:
+    """A bone map with the roles of `first`, and of `second` where `first` has none."""
+    merged = {k: (dict(v) if isinstance(v, dict) else v) for k, v in second.items()}
+    for role, value in first.items():
+        if isinstance(value, dict):
+            merged.setdefault(role, {}).update(value)
+        else:
+            merged[role] = value
+    return merged
+
+
+def _bone_map(armature, given: Dict[str, object], rig: str) -> Dict[str, object]:
+    bones = [bone_map.Bone(b.name, b.parent.name if b.parent else None) for b in armature.data.bones]
+    mapping, _missing = bone_map.detect_partial(bones, given)
+    bone_map.validate_map(mapping, [b.name for b in bones], rig)
+    return mapping
+
+
+def _foot_points(armature, bones: Dict[str, object]) -> Dict[str, list]:
+    """Rest positions of the vertices skinned (weight >= 0.5) to each side's
+    foot or toe bone, over every mesh the armature deforms."""
+    points = {"left": [], "right": []}
+    meshes = [o for o in bpy.data.objects if o.type == "MESH" and
+              any(m.type == "ARMATURE" and m.object == armature for m in o.modifiers)]
+    for mesh in meshes:
+        groups = {}
+        for side in points:
+            for role in ("foot", "toe"):
+                group = mesh.vertex_groups.get(bones[side][role])
+                if group is not None:
+                    groups[group.index] = side
+        world = mesh.matrix_world
+        for vertex in mesh.data.vertices:
+            for element in vertex.groups:
+                if element.group in groups and element.weight >= 0.5:
+                    points[groups[element.group]].append(tuple(world @ vertex.co))
+                    break
+    return points
+
+
+def _clip_for(behavior: str, wanted: Optional[str], actions) -> Optional[str]:
+    """The imported action for a behaviour. The importer may append the
+    object's name to an animation's ("walk_Armature")."""
+    name = wanted or behavior
+    for action in actions:
+        if action.name == name or action.name.startswith(name + "_"):
+            return action.name
+    return None
+
+
+def import_rig(filepath: str, mapping: Optional[Dict[str, object]] = None) -> ImportedRig:
+    """Imports the rig at `filepath`. `mapping` (roles to bone names) and a
+    profile beside the file (same name, .json) win over detection.
+
+    Raises RigImportError, bone_map.BoneMapError or rig_profile.ProfileError,
+    leaving the scene as it was.
+    """
+    path = pathlib.Path(filepath)
+    if not path.is_file():
+        raise RigImportError(f"{filepath}: no such file")
+    beside = path.with_suffix(".json")
+    given = rig_profile.load(str(beside), partial=True) if beside.is_file() else RigProfile(bones={})
+    given_bones = _merge(mapping or {}, given.bones)
+
+    before = datablocks.snapshot()
+    try:
+        _run_gltf_importer(str(path))
+        armatures = [o for o in datablocks.new_since(before, "objects") if o.type == "ARMATURE"]
+        if len(armatures) != 1:
+            raise RigImportError(f"{filepath}: expected one armature, found {len(armatures)}")
+        armature = armatures[0]
+        bones = _bone_map(armature, given_bones, path.name)
+        world = armature.matrix_world
+        heads = {b.name: tuple(world @ b.head_local) for b in armature.data.bones}
+        tails = {b.name: tuple(world @ b.tail_local) for b in armature.data.bones}
+        dimensions = rig_measure.measure(bones, heads, tails, _foot_points(armature, bones))
+        actions = datablocks.new_since(before, "actions")
+        clips = {b: _clip_for(b, given.clips.get(b), actions) for b in BEHAVIORS}
+        profile = RigProfile(bones=bones, clips=clips, dimensions=dimensions, rig=path.name)
+        armature[PROFILE_PROPERTY] = json.dumps(profile.to_document())
+    except Exception:
+        datablocks.remove_new(before)
+        raise
+    notes = [f"no '{b}' clip: a procedural one will be used" for b, clip in clips.items() if clip is None]
+    return ImportedRig(armature, profile, notes)
+
+
+def profile_of(armature) -> RigProfile:
+    """The profile stored on an imported armature."""
+    if PROFILE_PROPERTY not in armature:
+        raise RigImportError(f"'{armature.name}' was not imported with Footfall's Import Rig")
+    return rig_profile.parse(json.loads(armature[PROFILE_PROPERTY]), armature.name)

@@ -1,0 +1,177 @@
+"""Blender background test: footfall.import_rig on rigs of several naming
+schemes, exported to glTF by this test, and on the project's own rig.
+
+Run: blender -b --factory-startup --python-exit-code 1 --python tests/blender/test_import_rig.py
+"""
+
+import json
+import math
+import os
+import pathlib
+import sys
+import tempfile
+
+import addon_utils
+import bpy
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+sys.path.insert(0, os.environ.get("FOOTFALL_ADDON_DIR", str(ROOT / "blender_addon")))
+TMP = pathlib.Path(tempfile.mkdtemp(prefix="footfall-rigs-"))
+
+# Rest-pose joints of a 1.8 m humanoid facing -Y (x: left is +x).
+TRUNK = [("hips", None, (0, 0, 0.95), (0, 0, 1.05)), ("spine", "hips", (0, 0, 1.05), (0, 0, 1.2)),
+         ("chest", "spine", (0, 0, 1.2), (0, 0, 1.45)), ("neck", "chest", (0, 0, 1.45), (0, 0, 1.55)),
+         ("head", "neck", (0, 0, 1.55), (0, 0, 1.8))]
+
+
+def limb_bones(side, x):
+    s = 1 if side == "left" else -1
+    return [("upper_arm", "chest", (s * 0.19, 0, 1.42), (s * 0.35, 0, 1.2)),
+            ("forearm", "upper_arm", (s * 0.35, 0, 1.2), (s * 0.45, 0, 0.98)),
+            ("hand", "forearm", (s * 0.45, 0, 0.98), (s * 0.5, 0, 0.88)),
+            ("thigh", "hips", (s * x, 0, 0.95), (s * x, 0, 0.5)),
+            ("shin", "thigh", (s * x, 0, 0.5), (s * x, 0, 0.09)),
+            ("foot", "shin", (s * x, 0, 0.09), (s * x, -0.14, 0.02)),
+            ("toe", "foot", (s * x, -0.14, 0.02), (s * x, -0.2, 0.0))]
+
+
+def build_and_export(name, rename):
+    """A skinned rig whose bones are named by rename(role, side), written as TMP/name.glb."""
+    bpy.ops.wm.read_homefile(use_empty=True)
+    armature_data = bpy.data.armatures.new(name)
+    armature = bpy.data.objects.new(name, armature_data)
+    bpy.context.scene.collection.objects.link(armature)
+    bpy.context.view_layer.objects.active = armature
+    bpy.ops.object.mode_set(mode="EDIT")
+    names = {}
+    specs = [(r, None, p, h, t) for r, p, h, t in TRUNK]
+    for side in ("left", "right"):
+        specs += [(r, side, p, h, t) for r, p, h, t in limb_bones(side, 0.1)]
+    for role, side, parent, head, tail in specs:
+        bone = armature_data.edit_bones.new(rename(role, side))
+        bone.head, bone.tail = head, tail
+        names[(role, side)] = bone.name
+        if parent:
+            parent_side = side if parent in ("upper_arm", "forearm", "thigh", "shin", "foot") else None
+            bone.parent = armature_data.edit_bones[names[(parent, parent_side)]]
+    bpy.ops.object.mode_set(mode="OBJECT")
+    bpy.ops.mesh.primitive_cube_add(size=0.3, location=(0, 0, 1.2))
+    body = bpy.context.active_object
+    group = body.vertex_groups.new(name=names[("hips", None)])
+    group.add(range(len(body.data.vertices)), 1.0, "REPLACE")
+    body.parent = armature
+    body.modifiers.new("Armature", "ARMATURE").object = armature
+    path = TMP / f"{name}.glb"
+    bpy.ops.export_scene.gltf(filepath=str(path), export_format="GLB", export_skins=True)
+    return path
+
+
+def fresh_scene():
+    bpy.ops.wm.read_homefile(use_empty=True)
+    addon_utils.enable("footfall", default_set=True, handle_error=None)
+
+
+def inventory():
+    kinds = ("objects", "meshes", "armatures", "actions", "materials", "images", "collections")
+    return {kind: sorted(b.name for b in getattr(bpy.data, kind)) for kind in kinds}
+
+
+def check(condition, message):
+    if not condition:
+        raise AssertionError(message)
+
+
+def imported_profile():
+    from footfall.bridge import rig_import
+
+    (armature,) = [o for o in bpy.data.objects if o.type == "ARMATURE"]
+    return rig_import.profile_of(armature)
+
+
+def mixamo_name(role, side):
+    table = {"hips": "Hips", "spine": "Spine", "chest": "Spine2", "neck": "Neck", "head": "Head", "upper_arm": "Arm",
+             "forearm": "ForeArm", "hand": "Hand", "thigh": "UpLeg", "shin": "Leg", "foot": "Foot", "toe": "ToeBase"}
+    return "mixamorig:" + ("" if side is None else side.title()) + table[role]
+
+
+def odd_name(role, side):
+    """Names detection cannot read: the toes are 'Digit'."""
+    base = "Digit" if role == "toe" else role
+    return base if side is None else f"{base}_{side[0].upper()}"
+
+
+def test_mixamo_rig_is_detected():
+    path = build_and_export("mixamo", mixamo_name)
+    fresh_scene()
+    check(bpy.ops.footfall.import_rig(filepath=str(path)) == {"FINISHED"}, "import failed")
+    profile = imported_profile()
+    check(profile.bones["left"]["shin"] == "mixamorig:LeftLeg", profile.bones)
+    check(profile.bones["chest"] == "mixamorig:Spine2", profile.bones)
+    check(abs(profile.dimensions["hip_height"] - 0.95) < 1e-3, profile.dimensions)
+    check(abs(profile.dimensions["leg_length"] - 0.86) < 1e-3, profile.dimensions)
+    check(all(clip is None for clip in profile.clips.values()), profile.clips)
+
+
+def test_unmappable_rig_lists_bones_and_changes_nothing():
+    path = build_and_export("odd", odd_name)
+    fresh_scene()
+    bpy.ops.mesh.primitive_uv_sphere_add()  # something of the user's, which must survive
+    before = inventory()
+    try:
+        bpy.ops.footfall.import_rig(filepath=str(path))
+        raise AssertionError("no error")
+    except RuntimeError as error:
+        message = str(error)
+    check("left.toe, right.toe" in message, message)
+    check("profile JSON beside the file" in message and "Footfall panel" in message, message)
+    check(inventory() == before, f"scene changed: {inventory()} vs {before}")
+
+
+def test_panel_fields_complete_the_map():
+    path = build_and_export("odd_fields", odd_name)
+    fresh_scene()
+    fields = bpy.context.scene.footfall_bone_map
+    fields.left_toe, fields.right_toe = "Digit_L", "Digit_R"
+    check(bpy.ops.footfall.import_rig(filepath=str(path)) == {"FINISHED"}, "import failed")
+    check(imported_profile().bones["right"]["toe"] == "Digit_R", "toe not mapped")
+
+
+def test_profile_beside_the_file_completes_the_map():
+    path = build_and_export("odd_profile", odd_name)
+    path.with_suffix(".json").write_text(json.dumps(
+        {"format": "footfall-rig-profile", "version": 1, "bones": {"left": {"toe": "Digit_L"}, "right": {"toe": "Digit_R"}}}))
+    fresh_scene()
+    check(bpy.ops.footfall.import_rig(filepath=str(path)) == {"FINISHED"}, "import failed")
+    check(imported_profile().bones["left"]["toe"] == "Digit_L", "toe not mapped")
+
+
+def test_project_rig_matches_its_profile():
+    rig = ROOT / "rigs" / "footfall_humanoid.glb"
+    fresh_scene()
+    check(bpy.ops.footfall.import_rig(filepath=str(rig)) == {"FINISHED"}, "import failed")
+    profile = imported_profile()
+    stored = json.loads(rig.with_suffix(".json").read_text())
+    for key, value in stored["dimensions"].items():
+        check(abs(profile.dimensions[key] - value) < 1e-3, f"{key}: measured {profile.dimensions[key]}, profile {value}")
+    check(all(profile.clips[b] for b in ("walk", "arms_in", "side_step", "idle")), profile.clips)
+    check(profile.bones == stored["bones"], profile.bones)
+
+
+def main():
+    tests = [test_mixamo_rig_is_detected, test_unmappable_rig_lists_bones_and_changes_nothing,
+             test_panel_fields_complete_the_map, test_profile_beside_the_file_completes_the_map,
+             test_project_rig_matches_its_profile]
+    failed = 0
+    for test in tests:
+        try:
+            test()
+            print(f"PASS {test.__name__}")
+        except Exception as error:  # report every test, then fail the run
+            failed += 1
+            print(f"FAIL {test.__name__}: {error!r}")
+    print(f"{len(tests) - failed} passed, {failed} failed")
+    if failed:
+        sys.exit(1)
+
+
+main()
