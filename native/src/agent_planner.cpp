@@ -44,9 +44,37 @@ double AgentPlan::total_cost() const {
 
 double AgentPlan::end_time() const { return footsteps.empty() ? 0.0 : footsteps.back().end_time; }
 
+namespace {
+
+// The goal of the next search: the agent's goal, or the point
+// local_goal_distance toward it, moved back toward the agent until the agent
+// could stand there (an intermediate point may fall in or against an obstacle).
+Vec2 local_goal(const FootstepPlanner& planner, Vec2 from, Vec2 goal) {
+  const double to_goal = distance(from, goal);
+  const double reach = planner.params().local_goal_distance;
+  if (to_goal <= reach) return goal;
+  const double facing = angle_of(goal - from);
+  constexpr double kStep = 0.25;  // [m]
+  for (double along = reach; along > 0.0; along -= kStep) {
+    const Vec2 point = from + (along / to_goal) * (goal - from);
+    if (!planner.collides(standing_state(point, facing, planner.character()))) return point;
+  }
+  return from + (reach / to_goal) * (goal - from);
+}
+
+}  // namespace
+
 AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
                      const RunControl& control) {
   if (agent.goals.empty()) throw std::invalid_argument("agent " + agent.name + ": has no goals");
+  if (!in_world(agent.position) || !std::isfinite(agent.facing)) {
+    throw std::invalid_argument("agent " + agent.name +
+                                ": position and facing must be finite, within 1e9 m");
+  }
+  for (const Vec2& goal : agent.goals) {
+    if (!in_world(goal))
+      throw std::invalid_argument("agent " + agent.name + ": goals must be finite, within 1e9 m");
+  }
   const PlannerParams& params = planner.params();
   AgentPlan plan;
   plan.name = agent.name;
@@ -65,10 +93,7 @@ AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
     const Vec2 goal = agent.goals[goal_index];
     const double to_goal = distance(state.com, goal);
     const bool goal_in_reach = to_goal <= params.local_goal_distance;
-    const Vec2 local_goal =
-        goal_in_reach ? goal
-                      : state.com + (params.local_goal_distance / to_goal) * (goal - state.com);
-    const SearchResult search = planner.plan(state, local_goal);
+    const SearchResult search = planner.plan(state, local_goal(planner, state.com, goal));
     ++plan.searches;
     plan.nodes_generated += search.nodes_generated;
     plan.nodes_expanded += search.nodes_expanded;
@@ -84,8 +109,8 @@ AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
       }
       continue;
     }
-    const bool progressed = to_goal - distance(state.com, goal) >= params.min_progress;
-    if (search.status != Status::kSuccess && !progressed) {
+    // Every other search must bring the agent closer, or it is stuck.
+    if (to_goal - distance(state.com, goal) < params.min_progress) {
       come_to_rest(planner, state, plan.footsteps);
       plan.reason = "stuck";
       break;

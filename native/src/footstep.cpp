@@ -47,7 +47,7 @@ StepResult create_walk(const FootstepState& state, const FootstepAction& action,
   if (limits != StepValidity::kValid) return invalid(limits);
   const OrientationInterval reach = reachable_orientations(
       state.foot_orientation[static_cast<int>(other(foot))], other(foot), character.max_foot_turn);
-  return detail::walk_step(state, foot, heading, shape, action.phi, reach, character);
+  return detail::walk_step(state, foot, heading, shape, wrap_angle(action.phi), reach, character);
 }
 
 // The stop action: the COM decelerates uniformly to rest, and the stepping foot
@@ -263,7 +263,8 @@ bool intersect(const OrientationInterval& a, const OrientationInterval& b, Foot 
     double hi = std::min(wa, b0 + shift + wb);
     if (hi < lo - kIntervalTolerance) continue;
     if (hi < lo) lo = hi = 0.5 * (lo + hi);
-    *out = {a.inner + s * lo, a.inner + s * hi};
+    const double inner = wrap_angle(a.inner + s * lo);  // bounds never drift by whole turns
+    *out = {inner, inner + s * (hi - lo)};
     return true;
   }
   return false;
@@ -272,15 +273,16 @@ bool intersect(const OrientationInterval& a, const OrientationInterval& b, Foot 
 double clamp_orientation(double angle, const OrientationInterval& interval, Foot foot) {
   const double s = outward_sign(foot);
   const double u = s * wrap_angle(angle - interval.inner);
-  if (u >= 0.0 && u <= width(interval, foot)) return interval.inner + s * u;
+  if (u >= 0.0 && u <= width(interval, foot)) return wrap_angle(interval.inner + s * u);
   const double to_inner = std::fabs(wrap_angle(angle - interval.inner));
   const double to_outer = std::fabs(wrap_angle(angle - interval.outer));
-  return to_inner <= to_outer ? interval.inner : interval.outer;
+  return wrap_angle(to_inner <= to_outer ? interval.inner : interval.outer);
 }
 
 FootstepState standing_state(Vec2 position, double facing, const CharacterParams& character) {
   FootstepState state;
   state.com = position;
+  facing = wrap_angle(facing);
   state.facing = facing;
   const Vec2 left = perp(unit(facing));
   state.feet[static_cast<int>(Foot::kLeft)] = position + character.foot_offset * left;

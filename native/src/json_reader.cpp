@@ -4,6 +4,8 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace footfall::detail {
 
@@ -14,7 +16,10 @@ namespace {
 // the field that holds them.
 constexpr const char* kNonFiniteMarker = "\x01non-finite:";
 
-std::string mark_non_finite(const std::string& text) {
+// Returns the text with the tokens replaced; `shifts` gets, for each
+// replacement, where it ends in the new text and how many characters it added.
+std::string mark_non_finite(const std::string& text,
+                            std::vector<std::pair<size_t, size_t>>& shifts) {
   std::string out;
   out.reserve(text.size());
   bool in_string = false;
@@ -34,7 +39,9 @@ std::string mark_non_finite(const std::string& text) {
     for (const char* token : {"NaN", "Infinity", "-Infinity"}) {
       const size_t n = std::char_traits<char>::length(token);
       if (text.compare(i, n, token) == 0) {
-        out += std::string("\"") + "\\u0001non-finite:" + token + "\"";
+        const std::string marker = std::string("\"") + "\\u0001non-finite:" + token + "\"";
+        out += marker;
+        shifts.emplace_back(out.size(), marker.size() - n);
         i += n - 1;
         replaced = true;
         break;
@@ -45,17 +52,40 @@ std::string mark_non_finite(const std::string& text) {
   return out;
 }
 
+// "line L, column C" of byte `byte` (1-based, as the parser counts) of `text`.
+std::string position_in(const std::string& text, size_t byte) {
+  size_t line = 1, line_start = 0;
+  for (size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      line_start = i + 1;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(byte - line_start);
+}
+
 }  // namespace
 
 Json parse_json(const std::string& text, const std::string& source) {
+  std::vector<std::pair<size_t, size_t>> shifts;
   try {
-    return Json::parse(mark_non_finite(text));
+    return Json::parse(mark_non_finite(text, shifts));
   } catch (const Json::parse_error& error) {
     // Drop nlohmann's "[json.exception.parse_error.101] " prefix.
     std::string message = error.what();
     const size_t bracket = message.find("] ");
     if (message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) {
       message = message.substr(bracket + 2);
+    }
+    // Report the position in the text as written, before the markers.
+    size_t byte = error.byte;
+    for (const auto& [end, added] : shifts) {
+      if (end < error.byte) byte -= added;
+    }
+    const size_t at = message.find("line ");
+    const size_t colon = message.find(':', at);
+    if (!shifts.empty() && at != std::string::npos && colon != std::string::npos) {
+      message = message.substr(0, at) + position_in(text, byte) + message.substr(colon);
     }
     throw std::invalid_argument(source + ": not valid JSON: " + message);
   }
@@ -119,6 +149,9 @@ double number(const Json& value, const std::string& path) {
 
 long long integer(const Json& value, const std::string& path) {
   if (!value.is_number_integer()) fail(path, "expected an integer, got " + type_name(value));
+  if (value.is_number_unsigned() && value.get<unsigned long long>() > 9223372036854775807ull) {
+    fail(path, "too large");
+  }
   return value.get<long long>();
 }
 

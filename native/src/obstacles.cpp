@@ -96,7 +96,8 @@ bool ObstacleMap::circle_overlaps(int index, const Circle& circle) const {
 int ObstacleMap::cell_of(double v, double origin, int count) const {
   // Clamped before the conversion: a huge query must not overflow the int.
   const double cell = std::floor((v - origin) / cell_size_);
-  return static_cast<int>(std::clamp(cell, 0.0, static_cast<double>(count - 1)));
+  if (!(cell >= 0.0)) return 0;  // also NaN
+  return static_cast<int>(std::min(cell, static_cast<double>(count - 1)));
 }
 
 template <typename Visit>

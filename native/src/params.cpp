@@ -63,6 +63,10 @@ void validate(const PlannerParams& p, const std::string& path) {
   check_closed(p.heuristic_weight, path + ".heuristic_weight", 1.0, 10.0);
   check_open_low(p.goal_tolerance, path + ".goal_tolerance", 0.0, 10.0);
   check_closed(p.local_goal_distance, path + ".local_goal_distance", 1.0, 1000.0);
+  if (!(p.goal_tolerance < p.local_goal_distance)) {
+    throw std::invalid_argument(path + ".goal_tolerance: must be less than local_goal_distance (" +
+                                std::to_string(p.local_goal_distance) + ")");
+  }
   check_open_low(p.max_time, path + ".max_time", 0.0, 100000.0);
   check_open_low(p.stop_duration, path + ".stop_duration", 0.0, 5.0);
   check_closed(p.collision_sample_spacing, path + ".collision_sample_spacing", 0.005, 0.05);

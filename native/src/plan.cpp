@@ -11,6 +11,7 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kMaxLift = 0.12;          // [m] swing height of a full stride
 constexpr double kLiftPerStride = 0.15;    // swing height per metre of stride
 constexpr double kProgressInterval = 0.2;  // [s] between progress reports
+constexpr double kLeadIn = 0.25;           // [s] longest swing of a foot into a first step
 
 // Index of the step under way at time t: the last one that started at or
 // before t (clamped to the first and last). Plans are never empty here.
@@ -61,32 +62,60 @@ double facing_at(const AgentPlan& plan, double t) {
   return plan.footsteps[step_index(plan, t)].phi;
 }
 
+namespace {
+
+// `from` moved toward the planted pose `to` by the fraction u of a swing.
+FootPose swing(const FootPose& from, const Footstep& to, double u) {
+  const double s = smoothstep(std::clamp(u, 0.0, 1.0));
+  const double stride = distance(from.position, to.foot_position);
+  FootPose foot;
+  foot.position = from.position + s * (to.foot_position - from.position);
+  foot.orientation =
+      wrap_angle(from.orientation + s * wrap_angle(to.foot_orientation - from.orientation));
+  foot.lift = std::min(kMaxLift, kLiftPerStride * stride) * std::sin(kPi * std::clamp(u, 0.0, 1.0));
+  foot.planted = stride == 0.0 && to.foot_orientation == from.orientation;
+  return foot;
+}
+
+}  // namespace
+
 std::array<FootPose, 2> feet_at(const AgentPlan& plan, double t) {
   std::array<FootPose, 2> feet;
   for (int f = 0; f < 2; ++f) feet[f] = {plan.start.feet[f], plan.start.facing, 0.0, true};
   const auto& steps = plan.footsteps;
   if (steps.empty() || t < steps.front().start_time) return feet;
   const int k = step_index(plan, t);
-  // Every foot where it was last planted by step k.
-  for (int i = 0; i <= k; ++i) {
+  for (int i = 0; i < k; ++i) {
     feet[static_cast<int>(steps[i].foot)] = {steps[i].foot_position, steps[i].foot_orientation, 0.0,
                                              true};
   }
   const Footstep& step = steps[k];
-  const int swing = static_cast<int>(other(step.foot));
-  const bool next_lands_it =
-      k + 1 < static_cast<int>(steps.size()) && steps[k + 1].foot == other(step.foot);
-  if (step.kind != StepKind::kWalk || !next_lands_it || t >= step.end_time) return feet;
-  // The other foot swings from lift-off at the step's start to landing at its end.
-  const Footstep& landing = steps[k + 1];
-  const double u = std::clamp((t - step.start_time) / step.duration(), 0.0, 1.0);
-  const double s = smoothstep(u);
-  FootPose& foot = feet[swing];
-  const double stride = distance(foot.position, landing.foot_position);
-  foot.position = foot.position + s * (landing.foot_position - foot.position);
-  foot.orientation += s * wrap_angle(landing.foot_orientation - foot.orientation);
-  foot.lift = std::min(kMaxLift, kLiftPerStride * stride) * std::sin(kPi * u);
-  foot.planted = false;
+  const int stepping = static_cast<int>(step.foot);
+  const int other_foot = static_cast<int>(other(step.foot));
+  const FootPose before = feet[stepping];
+  feet[stepping] = {step.foot_position, step.foot_orientation, 0.0, true};
+  if (t >= step.end_time) return feet;
+  // A foot lands at its step's start, having swung during the step before,
+  // which the other foot took. The first step, or one taken from standing by
+  // the foot that stopped last, has no such step: its foot swings in a lead-in
+  // at the start of its own step, the other foot still planted.
+  double stance_start = step.start_time;
+  const bool swung_in = k > 0 && steps[k - 1].foot != step.foot;
+  const bool moves =
+      !(before.position == step.foot_position) || before.orientation != step.foot_orientation;
+  if (!swung_in && moves) {
+    const double lead = std::min(kLeadIn, 0.5 * step.duration());
+    if (t < step.start_time + lead) {
+      feet[stepping] = swing(before, step, (t - step.start_time) / lead);
+      return feet;
+    }
+    stance_start += lead;
+  }
+  // Meanwhile the other foot swings to where the next step plants it.
+  if (k + 1 < static_cast<int>(steps.size()) && steps[k + 1].foot == other(step.foot)) {
+    feet[other_foot] =
+        swing(feet[other_foot], steps[k + 1], (t - stance_start) / (step.end_time - stance_start));
+  }
   return feet;
 }
 

@@ -184,6 +184,9 @@ Plan read_plan(const Json& root) {
   Plan plan;
   if (root.contains("character")) read_character(root["character"], "character", plan.character);
   validate(plan.character, "character");
+  // The top-level stats are derived when writing; read, they must only be an object.
+  if (root.contains("stats") && !root["stats"].is_object())
+    fail("stats", "expected an object, got " + type_name(root["stats"]));
   const Json& agents = array(require(root, "", "agents"), "agents");
   for (size_t i = 0; i < agents.size(); ++i)
     plan.agents.push_back(read_agent(agents[i], item("agents", i), plan.character));

@@ -149,21 +149,26 @@ FootstepPlanner::FootstepPlanner(const CharacterParams& character, const Planner
   }
   // A normal step, through the model itself: straight, at the preferred speed
   // and duration, in steady walking (incoming at the same speed), the incoming
-  // heading turned outward from phi by the smallest turn angle.
+  // heading turned outward from phi by the smallest turn angle; by the right
+  // foot, or by the left if only it may take such a step (a limp).
   const double turn = *std::min_element(params_.turn_angles.begin(), params_.turn_angles.end());
-  FootstepState walking = standing_state({0.0, 0.0}, 0.0, character_);
-  walking.com_velocity = character_.preferred_speed * unit(-turn);
-  walking.last_foot = Foot::kLeft;
-  const StepResult normal =
-      create_footstep(walking,
-                      {StepKind::kWalk, Foot::kRight, 0.0, character_.preferred_speed,
-                       character_.preferred_step_duration},
-                      character_);
+  StepResult normal;
+  for (const Foot foot : {Foot::kRight, Foot::kLeft}) {
+    FootstepState walking = standing_state({0.0, 0.0}, 0.0, character_);
+    walking.com_velocity = character_.preferred_speed * unit(outward_sign(foot) * turn);
+    walking.last_foot = other(foot);
+    normal = create_footstep(walking,
+                             {StepKind::kWalk, foot, 0.0, character_.preferred_speed,
+                              character_.preferred_step_duration},
+                             character_);
+    if (normal.valid()) break;
+  }
   if (!normal.valid()) {
+    const bool duration = normal.validity == StepValidity::kDurationOutOfRange;
     throw std::invalid_argument(
-        std::string("character.preferred_speed: a step at the preferred speed and duration is "
-                    "invalid: ") +
-        to_string(normal.validity));
+        std::string(duration ? "character.preferred_step_duration" : "character.preferred_speed") +
+        ": a step at the preferred speed and duration breaks both feet's limits (" +
+        to_string(normal.validity) + ")");
   }
   expected_step_cost_ = normal.step.cost.total();
   expected_step_length_ = distance(normal.step.com_start, normal.step.com_end);
@@ -282,7 +287,7 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
     for (const TabledAction& action : actions_) {
       if (!action.allowed[f]) continue;
       const detail::StepShape& shape = action.shape;
-      const double phi = heading.angle + inward * shape.turn;
+      const double phi = wrap_angle(heading.angle + inward * shape.turn);
       add(detail::walk_step(state, foot, heading, shape, phi, reach, character_), StepKind::kWalk,
           foot, phi, shape.turn, shape.speed, shape.duration, phi + inward * shape.turn);
     }
@@ -298,7 +303,7 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
       const detail::StepShape shape =
           detail::step_shape(gait.speed, gait.duration, goal_turn, character_);
       if (detail::check_limits(shape, limits) != StepValidity::kValid) continue;
-      const double phi = heading.angle + inward * goal_turn;
+      const double phi = wrap_angle(heading.angle + inward * goal_turn);
       add(detail::walk_step(state, foot, heading, shape, phi, reach, character_), StepKind::kWalk,
           foot, phi, goal_turn, gait.speed, gait.duration, phi + inward * goal_turn);
     }
@@ -310,17 +315,21 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
 }
 
 SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal) const {
+  if (!in_world(start.com) || !is_finite(start.com_velocity) || !std::isfinite(start.facing) ||
+      !in_world(start.feet[0]) || !in_world(start.feet[1]) || !std::isfinite(start.time)) {
+    throw std::invalid_argument("start: the state must be finite and within 1e9 m of the origin");
+  }
+  if (!in_world(goal))
+    throw std::invalid_argument("goal: must be finite and within 1e9 m of the origin");
   SearchResult result;
   result.end_state = start;
   if (collides(start)) {
     result.status = Status::kInvalidStart;
     return result;
   }
-  for (int i = 0; i < static_cast<int>(obstacles_.obstacles().size()); ++i) {
-    if (obstacles_.contains(i, goal)) {
-      result.status = Status::kInvalidGoal;
-      return result;
-    }
+  if (obstacles_.overlaps({goal, 0.0})) {
+    result.status = Status::kInvalidGoal;
+    return result;
   }
 
   // Scratch memory is kept per thread, so that searches do not allocate.

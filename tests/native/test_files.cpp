@@ -92,6 +92,13 @@ TEST(ScenarioFile, BadInputIsNamedByFileAndField) {
   EXPECT_EQ(error_of(scenario_text(R"("agents": {})")),
             "scene.json: agents: expected an array, got object");
   EXPECT_EQ(error_of(scenario_text(R"("extra": 1)")), "scene.json: extra: unknown field");
+  EXPECT_EQ(error_of(scenario_text(R"("planner": {"max_expansions": 18446744073709551615})")),
+            "scene.json: planner.max_expansions: too large");
+  // A NaN before a syntax error does not move the error's reported position.
+  const std::string plain = error_of("{\"a\": [1, 2,\n  1 2]}");
+  const std::string with_nan = error_of("{\"a\": [NaN, 2,\n  1 2]}");
+  EXPECT_NE(plain.find("line 2, column 5"), std::string::npos) << plain;
+  EXPECT_NE(with_nan.find("line 2, column 5"), std::string::npos) << with_nan;
   EXPECT_EQ(error_of(scenario_text(R"("obstacles": [{"polygon": [[0, 0], [1e300, 0], [0, 1]]}])")),
             "scene.json: obstacles[0].polygon[1]: coordinates must be finite numbers within 1e9 m "
             "of the origin");

@@ -225,6 +225,84 @@ TEST(Planner, FootOrientationsKeepThePairRule) {
   }
 }
 
+TEST(Plan, FeetNeverJump) {
+  // The demo, and a walk with stops and restarts along the way (goal behind a wall).
+  Scenario stops = one_agent({box_obstacle({3, 0}, {0.2, 3})}, {0, 0}, 0, {6, 0});
+  stops.planner.max_expansions = 60;
+  for (const Scenario& scenario : {demo_scenario(), stops}) {
+    const AgentPlan agent = plan_scenario(scenario).agents[0];
+    std::array<FootPose, 2> last = feet_at(agent, -1.0);
+    for (double t = 0; t <= agent.end_time() + 0.01; t += 0.001) {
+      const auto feet = feet_at(agent, t);
+      for (int f = 0; f < 2; ++f) {
+        ASSERT_LT(distance(feet[f].position, last[f].position), 0.02)
+            << "foot " << f << " at t = " << t;
+        ASSERT_LT(std::fabs(wrap_angle(feet[f].orientation - last[f].orientation)), 0.05) << t;
+        ASSERT_GE(feet[f].lift, 0.0);
+      }
+      last = feet;
+    }
+    // Planted feet are exactly where their steps put them.
+    for (const Footstep& s : agent.footsteps) {
+      const auto feet = feet_at(agent, 0.5 * (s.start_time + s.end_time));
+      EXPECT_EQ(feet[static_cast<int>(s.foot)].position, s.foot_position);
+    }
+  }
+}
+
+TEST(Planner, LocalGoalInsideAnObstacleIsMovedOut) {
+  // The point 10 m ahead falls inside a small box: the walk goes on around it.
+  const AgentPlan agent =
+      plan_and_check(one_agent({box_obstacle({10, 0}, {0.4, 0.4})}, {0, 0}, 0, {20, 0}));
+  expect_reached(agent, {20, 0});
+}
+
+TEST(Planner, ALimpOnEitherFootIsAParameterChange) {
+  for (FootLimits CharacterParams::*foot : {&CharacterParams::left, &CharacterParams::right}) {
+    Scenario scenario = one_agent({}, {0, 0}, 0, {8, 0});
+    (scenario.character.*foot).max_speed = 1.0;
+    const AgentPlan agent = plan_and_check(scenario);
+    expect_reached(agent, {8, 0});
+  }
+}
+
+TEST(Planner, AnglesStayWrapped) {
+  const AgentPlan agent = plan_and_check(one_agent({}, {0, 0}, 1e6, {-3, 6}));
+  expect_reached(agent, {-3, 6});
+  const double pi = std::acos(-1.0);
+  for (const Footstep& s : agent.footsteps) {
+    EXPECT_GT(s.phi, -pi - 1e-12);
+    EXPECT_LE(s.phi, pi + 1e-12);
+    EXPECT_LE(std::fabs(s.foot_orientation), pi + 1e-12);
+    EXPECT_LE(std::fabs(s.orientation_interval.inner), pi + 1e-12);
+  }
+}
+
+TEST(Planner, MisuseIsRefusedNotCrashed) {
+  const CharacterParams character;
+  const ObstacleMap map({box_obstacle({3, 0}, {1, 1})});
+  EXPECT_FALSE(map.overlaps({{NAN, 0}, 0.5}));
+  EXPECT_FALSE(map.overlaps({{0, 0}, NAN}));
+  const FootstepPlanner planner(character, PlannerParams{}, map);
+  FootstepState start = standing_state({0, 0}, 0, character);
+  EXPECT_THROW(planner.plan(start, {NAN, 0}), std::invalid_argument);
+  start.com.x = INFINITY;
+  EXPECT_THROW(planner.plan(start, {5, 0}), std::invalid_argument);
+  EXPECT_THROW(plan_agent({"a", {0, 0}, NAN, {{5, 0}}}, planner), std::invalid_argument);
+  EXPECT_THROW(plan_agent({"a", {0, 0}, 0, {{1e200, 0}}}, planner), std::invalid_argument);
+  PlannerParams params;
+  params.goal_tolerance = 2;
+  params.local_goal_distance = 1.5;
+  try {
+    validate(params);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(
+                  "planner.goal_tolerance: must be less than local_goal_distance", 0),
+              0u);
+  }
+}
+
 TEST(Plan, EvaluatesFeetAndCirclesOverTime) {
   const AgentPlan agent = plan_scenario(demo_scenario()).agents[0];
   const CharacterParams character;

@@ -59,10 +59,12 @@ struct Gait {
 struct PlannerParams {
   int max_expansions = 1000;  ///< Horizon: nodes expanded per search. [1] [1, 1000000]
   /// Weight of h in f = g + weight * h. 1 is the paper's plain A*; the
-  /// default 1.5 (plans cost at most 1.5 times the optimum) expands 3-10
-  /// times fewer nodes around obstacles. [1] [1, 10]
+  /// default 1.5 leans the search toward the goal and expands 3-10 times
+  /// fewer nodes around obstacles (equation 6's h is not admissible, so this
+  /// is a preference, not a bound on the cost). [1] [1, 10]
   double heuristic_weight = 1.5;
-  double goal_tolerance = 0.3;      ///< The goal is reached when the COM is this close. [m] (0, 10]
+  /// The goal is reached when the COM is this close. [m] (0, 10], < local_goal_distance
+  double goal_tolerance = 0.3;
   double local_goal_distance = 10;  ///< Each search aims at most this far ahead. [m] [1, 1000]
   double max_time = 300;            ///< Simulated time limit per agent. [s] (0, 100000]
   double stop_duration = 0.5;       ///< Duration of a stop (or wait) step. [s] (0, 5]

@@ -34,8 +34,11 @@ struct FootPose {
 ComSample com_at(const AgentPlan& plan, double t);
 
 /// Both feet at time `t`, indexed by Foot. The foot of the current step is
-/// planted; the other swings from where it was planted to where it lands at
-/// the next step, on an arc whose height grows with the stride.
+/// planted; the other swings from where it was planted to where the next step
+/// plants it, on an arc whose height grows with the stride (a foot that does
+/// not move stays planted). The foot of a first step, or of a step from
+/// standing by the foot that stopped last, swings in a lead-in of at most
+/// 0.25 s (half the step) at the start of its step instead. No foot ever jumps.
 std::array<FootPose, 2> feet_at(const AgentPlan& plan, double t);
 
 /// Torso facing at time `t`: phi of the current step. [rad]

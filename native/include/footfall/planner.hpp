@@ -40,6 +40,7 @@ class FootstepPlanner {
   FootstepPlanner& operator=(const FootstepPlanner&) = delete;
 
   /// Best-first search from `start` toward `goal`, bounded by the horizon.
+  /// Throws std::invalid_argument for a non-finite or far-away start or goal.
   /// The foot orientations of the result are chosen by the post-process over
   /// these steps alone; a caller that chains searches runs
   /// choose_foot_orientations once more over the whole chain.
