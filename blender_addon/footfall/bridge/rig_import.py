@@ -36,7 +36,7 @@ def _run_gltf_importer(filepath: str) -> None:
     # Debian's Blender 3.4 importer uses numpy.bool, which numpy 1.24 removed.
     import numpy
 
-    if not hasattr(numpy, "bool"):
+    if "bool" not in numpy.__dict__:  # hasattr() would warn
         numpy.bool = bool
     try:
         result = bpy.ops.import_scene.gltf(filepath=filepath)

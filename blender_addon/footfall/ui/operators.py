@@ -32,3 +32,29 @@ class FOOTFALL_OT_import_rig(bpy.types.Operator, ImportHelper):
             self.report({"INFO"}, note)
         self.report({"INFO"}, f"Imported rig '{rig.armature.name}'")
         return {"FINISHED"}
+
+
+class FOOTFALL_OT_apply(bpy.types.Operator):
+    """Animate one instance of the imported rig per agent, from the stored plan or a plan file"""
+
+    bl_idname = "footfall.apply"
+    bl_label = "Apply Plan"
+    bl_options = {"REGISTER", "UNDO"}
+
+    plan_filepath: bpy.props.StringProperty(
+        name="Plan File", subtype="FILE_PATH", description="A plan file to apply; empty: the plan stored in this file"
+    )
+    rig: bpy.props.StringProperty(
+        name="Rig", description="The imported rig to instance; empty: the only rig imported with Footfall"
+    )
+
+    def execute(self, context):
+        from ..bridge import animate, apply_plan
+
+        try:
+            armatures = apply_plan.run(context, self.plan_filepath, self.rig)
+        except apply_plan.ApplyError as error:
+            self.report({"ERROR"}, str(error))
+            return {"CANCELLED"}
+        self.report({"INFO"}, f"Animated {len(armatures)} agents in '{animate.CROWD_COLLECTION}'")
+        return {"FINISHED"}

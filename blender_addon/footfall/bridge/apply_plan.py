@@ -1,0 +1,65 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The Apply operator's work: find the plan and the rig, animate, and on any
+failure remove everything the attempt created."""
+
+import bpy
+
+from ..core import native
+from . import animate, datablocks
+from .rig_import import PROFILE_PROPERTY
+
+
+class ApplyError(ValueError):
+    """The plan or the rig is missing or unusable; the message says which."""
+
+
+def _plan(ff, plan_filepath: str):
+    if plan_filepath:
+        path = bpy.path.abspath(plan_filepath)
+        try:
+            return ff.load_plan(path)
+        except ValueError as error:
+            raise ApplyError(str(error)) from error
+    from . import plan_store
+
+    text = plan_store.load()
+    if text is None:
+        raise ApplyError("No plan: run Plan first, or give a plan file")
+    try:
+        return ff.parse_plan(text, plan_store.TEXT_NAME)
+    except ValueError as error:
+        raise ApplyError(str(error)) from error
+
+
+def _rig(name: str):
+    rigs = [o for o in bpy.data.objects if o.type == "ARMATURE" and PROFILE_PROPERTY in o]
+    if name:
+        rig = bpy.data.objects.get(name)
+        if rig is None or rig not in rigs:
+            raise ApplyError(f"'{name}' is not a rig imported with Footfall's Import Rig")
+        return rig
+    if len(rigs) != 1:
+        found = ", ".join(sorted(r.name for r in rigs)) or "none"
+        raise ApplyError(f"Import one rig first (Footfall > Import Rig), or name the rig to use (rigs: {found})")
+    return rigs[0]
+
+
+def run(context, plan_filepath: str = "", rig_name: str = ""):
+    """Animates the plan on instances of the rig; returns their armatures."""
+    ff = native.load()
+    plan = _plan(ff, plan_filepath)
+    if not plan.agents:
+        raise ApplyError("The plan has no agents")
+    rig = _rig(rig_name)
+    if context.object is not None and context.object.mode != "OBJECT":
+        bpy.ops.object.mode_set(mode="OBJECT")
+    before = datablocks.snapshot()
+    window_manager = context.window_manager
+    window_manager.progress_begin(0, 100)
+    try:
+        return animate.apply_plan(ff, plan, rig, context.scene, lambda f: window_manager.progress_update(int(100 * f)))
+    except Exception:
+        datablocks.remove_new(before)
+        raise
+    finally:
+        window_manager.progress_end()

@@ -1,0 +1,58 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Upper-body clips for rigs that have none for a behaviour: an arm swing
+for walking, arms held against the body for tight passages, a still upper
+body for side steps and idle. Built from the bone map and the rest pose, so
+they suit any mapped humanoid."""
+
+import math
+
+import bpy
+from mathutils import Matrix, Vector
+
+CYCLE_FRAMES = {"walk": 24, "arms_in": 24, "side_step": 24, "idle": 48}
+SWING = math.radians(20)  # arm swing each way while walking
+SAMPLES = 8  # keys per cycle
+
+
+def _key(action, bone: str, frame: float, quaternion) -> None:
+    path = f'pose.bones["{bone}"].rotation_quaternion'
+    for i in range(4):
+        curve = action.fcurves.find(path, index=i) or action.fcurves.new(path, index=i, action_group=bone)
+        curve.keyframe_points.insert(frame, quaternion[i], options={"FAST"})
+
+
+def _basis(rest: Matrix, world_rotation: Matrix):
+    """The pose rotation of a bone (parents at rest) turning it by `world_rotation`."""
+    rest3 = rest.to_3x3()
+    return (rest3.inverted() @ world_rotation @ rest3).to_quaternion()
+
+
+def make(behavior: str, armature, profile) -> bpy.types.Action:
+    """A cyclic upper-body action for `behavior`, named 'footfall procedural BEHAVIOR'."""
+    name = f"footfall procedural {behavior}"
+    if name in bpy.data.actions:
+        return bpy.data.actions[name]
+    action = bpy.data.actions.new(name)
+    cycle = CYCLE_FRAMES[behavior]
+    bones = armature.data.bones
+    forward = Vector((0.0, 0.0, 0.0))
+    for side in ("left", "right"):
+        foot = bones[profile.bones[side]["foot"]]
+        forward += foot.tail_local - foot.head_local
+    forward = Vector((forward.x, forward.y, 0.0)).normalized()
+    right = Vector((forward.y, -forward.x, 0.0))  # turning about it swings a hanging arm forward
+    for side, sign in (("left", 1.0), ("right", -1.0)):
+        bone = bones[profile.bones[side]["upper_arm"]]
+        rest = bone.matrix_local
+        arm = (bone.tail_local - bone.head_local).normalized()
+        for k in range(SAMPLES + 1):
+            phase = k / SAMPLES
+            if behavior == "walk":
+                # Left arm forward at a quarter cycle, the right arm opposite.
+                turn = Matrix.Rotation(sign * SWING * math.sin(2 * math.pi * phase), 3, right)
+            elif behavior == "arms_in":
+                turn = arm.rotation_difference(Vector((0.0, 0.0, -1.0))).to_matrix()
+            else:
+                turn = Matrix.Identity(3)
+            _key(action, bone.name, 1 + phase * cycle, _basis(rest, turn))
+    return action

@@ -1,0 +1,102 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""When each upper-body clip plays: the plan's steps grouped into sections of
+one behaviour, and each section's clip scaled and phased to its steps.
+
+A clip cycle spans two steps (a left and a right). Walking clips are phased so
+that the clip's quarter-cycle point (the left arm swung furthest forward, by
+the clips' convention) falls on a right heel strike: arms swing opposite to
+the legs. A stop and standing still play "idle".
+"""
+
+import math
+from dataclasses import dataclass
+from typing import List, Sequence
+
+
+@dataclass(frozen=True)
+class Step:
+    """What timing needs of a footstep: times [s], foot, kind and behaviour."""
+
+    start: float
+    end: float
+    foot: str  # "left" or "right"
+    kind: str  # "walk" or "stop"
+    behavior: str  # "walk", "arms_in", "side_step"
+
+
+@dataclass(frozen=True)
+class Section:
+    """Consecutive steps of one behaviour (stops are "idle")."""
+
+    behavior: str
+    start: float
+    end: float
+    steps: Sequence[Step]
+
+
+@dataclass(frozen=True)
+class StripTiming:
+    """An NLA strip: where it plays [frames], which window of the clip it
+    loops, how much it is stretched and how many times it repeats."""
+
+    frame_start: float
+    action_frame_start: float
+    action_frame_end: float
+    scale: float
+    repeat: float
+
+
+def sections(steps: Sequence[Step]) -> List[Section]:
+    """The steps grouped into runs of one behaviour."""
+    result: List[Section] = []
+    run: List[Step] = []
+    for step in steps:
+        behavior = "idle" if step.kind == "stop" else step.behavior
+        if run and behavior != (("idle" if run[0].kind == "stop" else run[0].behavior)):
+            result.append(_section(run))
+            run = []
+        run.append(step)
+    if run:
+        result.append(_section(run))
+    return result
+
+
+def _section(run: List[Step]) -> Section:
+    behavior = "idle" if run[0].kind == "stop" else run[0].behavior
+    return Section(behavior, run[0].start, run[-1].end, tuple(run))
+
+
+def strip_timing(section: Section, clip_start: float, clip_end: float, fps: float, frame_offset: float,
+                 tail: float = 0.0) -> StripTiming:
+    """The strip that plays a cyclic clip (frames clip_start..clip_end) over a
+    section, `tail` seconds past its end. Frame = frame_offset + time * fps."""
+    cycle = clip_end - clip_start  # frames of the clip
+    duration = section.end - section.start + tail
+    walking = [s for s in section.steps if s.kind == "walk"]
+    if section.behavior == "idle" or not walking:
+        scale = 1.0
+        phase = 0.0
+    else:
+        step_time = sum(s.end - s.start for s in walking) / len(walking)
+        scale = 2.0 * step_time * fps / cycle
+        rights = [s.start for s in walking if s.foot == "right"]
+        strike = rights[0] if rights else walking[0].start + step_time
+        # The clip frame playing at the section's start, so that the quarter
+        # cycle falls on the right heel strike.
+        phase = (0.25 * cycle - (strike - section.start) * fps / scale) % cycle
+    repeat = max(duration * fps / (cycle * scale), 1e-3)
+    return StripTiming(
+        frame_start=frame_offset + section.start * fps,
+        action_frame_start=clip_start + phase,
+        action_frame_end=clip_start + phase + cycle,
+        scale=scale,
+        repeat=repeat,
+    )
+
+
+def clip_frame_at(timing: StripTiming, frame: float, clip_start: float) -> float:
+    """The frame of the cyclic clip (starting at clip_start) that a strip
+    plays at scene frame `frame`."""
+    local = (frame - timing.frame_start) / timing.scale
+    cycle = timing.action_frame_end - timing.action_frame_start
+    return clip_start + math.fmod(timing.action_frame_start - clip_start + local, cycle)

@@ -1,0 +1,41 @@
+"""Upper-body clip timing: sections of one behaviour, clips phased to steps."""
+
+import pytest
+
+from footfall.core.clip_timing import Step, clip_frame_at, sections, strip_timing
+
+
+def walk(n, start=0.0, duration=0.5, first="left", behavior="walk"):
+    feet = [first, "right" if first == "left" else "left"]
+    return [Step(start + i * duration, start + (i + 1) * duration, feet[i % 2], "walk", behavior) for i in range(n)]
+
+
+def test_sections_split_on_behaviour_and_stops():
+    steps = walk(4) + walk(3, start=2.0, first="left", behavior="arms_in") + [Step(3.5, 4.0, "right", "stop", "walk")]
+    result = sections(steps)
+    assert [s.behavior for s in result] == ["walk", "arms_in", "idle"]
+    assert (result[1].start, result[1].end) == (2.0, 3.5)
+    assert len(result[0].steps) == 4
+
+
+@pytest.mark.parametrize("first", ["left", "right"])
+def test_walk_clip_is_phased_to_right_heel_strikes(first):
+    fps, clip_start, clip_end = 24.0, 1.0, 25.0
+    (section,) = sections(walk(8, start=1.0, duration=0.55, first=first))
+    timing = strip_timing(section, clip_start, clip_end, fps, frame_offset=1.0)
+    # Two steps per clip cycle.
+    assert timing.scale * (clip_end - clip_start) == pytest.approx(2 * 0.55 * fps)
+    for step in section.steps:
+        frame = clip_frame_at(timing, 1.0 + step.start * fps, clip_start)
+        quarter = clip_start + 0.25 * (clip_end - clip_start)
+        three_quarters = clip_start + 0.75 * (clip_end - clip_start)
+        # Right heel strike: left arm forward (quarter); left heel strike: three quarters.
+        assert frame == pytest.approx(quarter if step.foot == "right" else three_quarters, abs=1e-9)
+    assert timing.repeat * timing.scale * 24 == pytest.approx((section.end - section.start) * fps)
+
+
+def test_idle_plays_at_its_own_pace():
+    (section,) = sections([Step(5.0, 5.5, "left", "stop", "walk")])
+    timing = strip_timing(section, 1.0, 49.0, 24.0, frame_offset=1.0, tail=2.0)
+    assert timing.scale == 1.0 and timing.action_frame_start == 1.0
+    assert timing.repeat == pytest.approx(2.5 * 24 / 48)
