@@ -14,8 +14,16 @@ missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
 done
+# Node.js runs the Khronos glTF validator; a machine may have its own.
+command -v npm >/dev/null || missing+=(nodejs npm)
 if ((${#missing[@]})); then
   echo "Installing: ${missing[*]}"
   apt-get update -qq
   DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# The glTF validator, pinned by tests/gltf/package-lock.json.
+cd "$(dirname "$0")/.."
+if [ ! -d tests/gltf/node_modules/gltf-validator ]; then
+  npm ci --prefix tests/gltf --no-audit --no-fund --loglevel=error >/dev/null
 fi

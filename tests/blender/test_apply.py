@@ -89,8 +89,84 @@ def test_feet_and_pelvis_follow_the_plan():
     check(worst_pelvis <= 0.02, f"the pelvis is {worst_pelvis * 100:.2f} cm off the COM")
 
 
+def glb_json(path):
+    """The JSON chunk of a .glb file."""
+    import struct
+
+    data = pathlib.Path(path).read_bytes()
+    length, kind = struct.unpack_from("<I4s", data, 12)
+    check(kind == b"JSON", "not a GLB file")
+    return json.loads(data[20:20 + length])
+
+
+def feet_now(names, profile):
+    """World positions of every agent's foot bones at the current frame."""
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    result = {}
+    for name in names:
+        armature = bpy.data.objects[name].evaluated_get(depsgraph)
+        for side in ("left", "right"):
+            bone = profile.bones[side]["foot"]
+            result[(name, side)] = armature.matrix_world @ armature.pose.bones[bone].head
+    return result
+
+
+def test_export_validates_and_reimports():
+    import subprocess
+
+    from footfall.bridge import rig_import
+    from footfall.core import native
+
+    ff = native.load()
+    fresh_scene_with_rig()
+    plan, path = doorway_plan(ff)
+    check(bpy.ops.footfall.apply(plan_filepath=str(path)) == {"FINISHED"}, "apply failed")
+    (rig,) = [o for o in bpy.data.objects if o.type == "ARMATURE" and rig_import.PROFILE_PROPERTY in o]
+    profile = rig_import.profile_of(rig)
+    names = [agent.name for agent in plan.agents]
+    scene = bpy.context.scene
+    probe_frames = [scene.frame_start + 12, (scene.frame_start + scene.frame_end) // 2, scene.frame_end - 5]
+    expected = {}
+    for frame in probe_frames:
+        scene.frame_set(frame)
+        expected[frame] = feet_now(names, profile)
+    objects_before = sorted(o.name for o in bpy.data.objects)
+
+    out = TMP / "crowd.glb"
+    check(bpy.ops.footfall.export_gltf(filepath=str(out)) == {"FINISHED"}, "export failed")
+    check(sorted(o.name for o in bpy.data.objects) == objects_before, "the export changed the scene")
+    check(not pathlib.Path(str(out) + ".partial.glb").exists(), "a partial file was left")
+    validator = ROOT / "tests" / "gltf" / "validate.mjs"
+    run = subprocess.run(["node", str(validator), str(out)], capture_output=True, text=True)
+    report = json.loads(run.stdout)["issues"]
+    print(f"validator: {report['numErrors']} errors, {report['numWarnings']} warnings")
+    check(run.returncode == 0 and report["numErrors"] == 0, f"the validator found errors: {run.stdout[:2000]}")
+    gltf = glb_json(out)
+    check(sorted(a["name"] for a in gltf["animations"]) == sorted(names), [a["name"] for a in gltf["animations"]])
+
+    bpy.ops.wm.read_homefile(use_empty=True)
+    import numpy
+
+    if "bool" not in numpy.__dict__:
+        numpy.bool = bool  # Debian's Blender 3.4 importer
+    bpy.ops.import_scene.gltf(filepath=str(out))
+    for name in names:
+        data = bpy.data.objects[name].animation_data
+        if data.action is None:  # the importer may leave the animation on an NLA track
+            data.action = data.nla_tracks[0].strips[0].action
+        for track in data.nla_tracks:
+            track.mute = True
+    worst = 0.0
+    for frame, feet in expected.items():
+        bpy.context.scene.frame_set(frame)
+        for key, position in feet_now(names, profile).items():
+            worst = max(worst, (position - feet[key]).length)
+    print(f"re-imported feet: worst {worst * 1000:.2f} mm off")
+    check(worst <= 0.005, f"re-imported feet are {worst * 1000:.2f} mm off")
+
+
 def main():
-    tests = [test_feet_and_pelvis_follow_the_plan]
+    tests = [test_feet_and_pelvis_follow_the_plan, test_export_validates_and_reimports]
     failed = 0
     for test in tests:
         try:

@@ -3,7 +3,7 @@
 scene as it was."""
 
 import bpy
-from bpy_extras.io_utils import ImportHelper
+from bpy_extras.io_utils import ExportHelper, ImportHelper
 
 from ..core.bone_map import BoneMapError
 from ..core.rig_profile import ProfileError
@@ -57,4 +57,25 @@ class FOOTFALL_OT_apply(bpy.types.Operator):
             self.report({"ERROR"}, str(error))
             return {"CANCELLED"}
         self.report({"INFO"}, f"Animated {len(armatures)} agents in '{animate.CROWD_COLLECTION}'")
+        return {"FINISHED"}
+
+
+class FOOTFALL_OT_export_gltf(bpy.types.Operator, ExportHelper):
+    """Bake every animated agent to one action each and export the crowd as glTF"""
+
+    bl_idname = "footfall.export_gltf"
+    bl_label = "Export Crowd glTF"
+
+    filename_ext = ".glb"
+    filter_glob: bpy.props.StringProperty(default="*.glb", options={"HIDDEN"})
+
+    def execute(self, context):
+        from ..bridge import export
+
+        try:
+            count = export.export_crowd(self.filepath, context.scene)
+        except export.ExportError as error:
+            self.report({"ERROR"}, str(error))
+            return {"CANCELLED"}
+        self.report({"INFO"}, f"Exported {count} agents to {self.filepath}")
         return {"FINISHED"}
