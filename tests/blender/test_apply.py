@@ -13,6 +13,7 @@ import tempfile
 
 import addon_utils
 import bpy
+import mathutils
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, os.environ.get("FOOTFALL_ADDON_DIR", str(ROOT / "blender_addon")))
@@ -165,8 +166,94 @@ def test_export_validates_and_reimports():
     check(worst <= 0.005, f"re-imported feet are {worst * 1000:.2f} mm off")
 
 
+def behaviour_plan(ff):
+    """A planned straight walk, edited by hand: steps 4-9 'arms_in', 10-15
+    'side_step' with the feet turned across the way, as a plan file."""
+    from footfall.core import scenario as sc
+
+    plan = sc.plan(sc.scenario_document(sc.ScenarioInput([sc.AgentInput("dee", (0, 0), [(14, 0)])])))
+    document = json.loads(ff.plan_to_json(plan))
+    steps = document["agents"][0]["footsteps"]
+    for i, step in enumerate(steps):
+        if 4 <= i <= 9:
+            step["behavior"] = "arms_in"
+        elif 10 <= i <= 15:
+            step["behavior"] = "side_step"
+            step["foot_orientation"] = step["phi"] + math.pi / 2
+    path = TMP / "behaviours-plan.json"
+    path.write_text(json.dumps(document))
+    return ff.load_plan(str(path)), path
+
+
+def torso_half_width(rig, profile):
+    """Half the torso's width below the armpits, from the vertices skinned to the trunk."""
+    (body,) = [c for c in rig.children if c.type == "MESH"]
+    armpit = rig.data.bones[profile.bones["left"]["upper_arm"]].head_local.z
+    groups = {body.vertex_groups[profile.bones[r]].index for r in ("hips", "spine", "chest")}
+    xs = [abs(v.co.x) for v in body.data.vertices if v.co.z < armpit and any(
+        g.group in groups and g.weight >= 0.5 for g in v.groups)]
+    return max(xs)
+
+
+def test_behaviours_play_their_clips():
+    from footfall.bridge import rig_import
+    from footfall.core import clip_timing, native
+
+    ff = native.load()
+    fresh_scene_with_rig()
+    plan, path = behaviour_plan(ff)
+    check(bpy.ops.footfall.apply(plan_filepath=str(path)) == {"FINISHED"}, "apply failed")
+    (rig,) = [o for o in bpy.data.objects if o.type == "ARMATURE" and rig_import.PROFILE_PROPERTY in o]
+    profile = rig_import.profile_of(rig)
+    agent = plan.agents[0]
+    scene = bpy.context.scene
+    fps = scene.render.fps / scene.render.fps_base
+    sections = clip_timing.sections([clip_timing.Step(s.start_time, s.end_time, s.foot.name.lower(),
+                                                      s.kind.name.lower(), s.behavior.name.lower())
+                                     for s in agent.footsteps])
+    check([s.behavior for s in sections] == ["walk", "arms_in", "side_step", "walk", "idle"],
+          [s.behavior for s in sections])
+    strips = sorted((strip for track in bpy.data.objects["dee"].animation_data.nla_tracks
+                     for strip in track.strips), key=lambda strip: strip.frame_start)
+    check(len(strips) == len(sections), f"{len(strips)} strips for {len(sections)} sections")
+    for strip, section in zip(strips, sections):
+        start, end = scene.frame_start + section.start * fps, scene.frame_start + section.end * fps
+        check(strip.action.name == profile.clips[section.behavior], f"{strip.name} plays {strip.action.name}")
+        check(strip.frame_start <= start + 1e-6 and strip.frame_end >= end - 1e-6,
+              f"{strip.name} spans {strip.frame_start}-{strip.frame_end}, its section {start}-{end}")
+
+    half_width = torso_half_width(rig, profile)
+    hips_rest = rig.data.bones[profile.bones["hips"]].matrix_local
+    worst_hand, worst_facing = 0.0, 0.0
+    for section in sections[1:3]:
+        settle = 0.3  # past the cross-fade
+        for frame in range(math.ceil(scene.frame_start + (section.start + settle) * fps),
+                           math.floor(scene.frame_start + (section.end - settle) * fps) + 1):
+            scene.frame_set(frame)
+            armature = evaluated("dee")
+            hips = armature.pose.bones[profile.bones["hips"]]
+            body_frame = (armature.matrix_world @ hips.matrix @ hips_rest.inverted()).inverted()
+            if section.behavior == "arms_in":
+                for side, sign in (("left", 1), ("right", -1)):
+                    hand = armature.pose.bones[profile.bones[side]["hand"]]
+                    local = body_frame @ (armature.matrix_world @ ((hand.head + hand.tail) / 2))
+                    worst_hand = max(worst_hand, abs(local.x - sign * half_width))
+            else:
+                t = (frame - scene.frame_start) / fps
+                velocity = ff.com_at(agent, t).velocity
+                forward = (armature.matrix_world @ hips.matrix).to_3x3() @ hips_rest.to_3x3().inverted() @ \
+                    mathutils.Vector((0.0, -1.0, 0.0))  # the rig faces -Y at rest
+                angle = math.degrees(math.atan2(velocity[1], velocity[0]) - math.atan2(forward.y, forward.x))
+                worst_facing = max(worst_facing, abs(abs(math.remainder(angle, 360.0)) - 90.0))
+    print(f"arms_in: hands at most {worst_hand * 100:.1f} cm from the torso's side; "
+          f"side_step: facing at most {worst_facing:.1f} degrees from across the way")
+    check(worst_hand <= 0.15, f"a hand is {worst_hand * 100:.1f} cm from the torso's side")
+    check(worst_facing <= 20.0, f"the pelvis faces {worst_facing:.1f} degrees off across the way")
+
+
 def main():
-    tests = [test_feet_and_pelvis_follow_the_plan, test_export_validates_and_reimports]
+    tests = [test_feet_and_pelvis_follow_the_plan, test_behaviours_play_their_clips,
+             test_export_validates_and_reimports]
     failed = 0
     for test in tests:
         try:

@@ -14,6 +14,7 @@ Every planned foot position is the point on the ground under the ankle; the
 ankle stays at its rest height while the foot is planted.
 """
 
+import bisect
 import math
 from dataclasses import dataclass, field
 from typing import Callable, Dict, List, Optional
@@ -185,17 +186,30 @@ class _Channels:
         return action
 
 
+def _facing(feet, step) -> float:
+    """The body's facing: between the feet; in a side step, across the step's
+    direction of travel, on the side the feet point to."""
+    between = math.atan2(sum(math.sin(f.orientation) for f in feet), sum(math.cos(f.orientation) for f in feet))
+    if step is None or step.behavior.name != "SIDE_STEP":
+        return between
+    travel = math.atan2(step.com_end[1] - step.com_start[1], step.com_end[0] - step.com_start[0])
+    across = (travel + math.pi / 2, travel - math.pi / 2)
+    return min(across, key=lambda a: abs(math.remainder(a - between, 2 * math.pi)))
+
+
 def _locomotion(ff, agent, rest: RigRest, frames: List[float], frame_offset: float, fps: float) -> _Channels:
     """Hips on the COM path, foot targets on the feet, poles ahead of the knees."""
     channels = _Channels()
     hips_rotation = _rotation(rest.hips_rest)
     hips_z = rest.hips_rest.to_translation().z
+    steps = agent.footsteps
+    starts = [step.start_time for step in steps]
     for frame in frames:
         t = (frame - frame_offset) / fps
         com = ff.com_at(agent, t).position
         feet = ff.feet_at(agent, t)
-        facing = math.atan2(sum(math.sin(f.orientation) for f in feet), sum(math.cos(f.orientation) for f in feet))
-        turn = _yaw(facing - rest.forward_yaw)
+        index = bisect.bisect_right(starts, t) - 1
+        turn = _yaw(_facing(feet, steps[index] if index >= 0 else None) - rest.forward_yaw)
         # The hips as high as at rest, but low enough for both legs to reach.
         height = hips_z
         ankles = {}
@@ -235,25 +249,23 @@ def _upper_body(armature, agent, clips: Dict[str, bpy.types.Action], fps: float,
     tracks = [armature.animation_data.nla_tracks.new() for _ in range(2)]
     for track, label in zip(tracks, ("A", "B")):
         track.name = f"Footfall upper body {label}"
-    blend = BLEND_SECONDS * fps
     for i, section in enumerate(sections):
         action = clips[section.behavior]
         first, last = action.frame_range
-        tail = (last_frame - frame_offset) / fps - section.end if i == len(sections) - 1 else 0.0
-        timing = clip_timing.strip_timing(section, first, last, fps, frame_offset, tail)
+        # Neighbouring strips overlap by the blend time; the last plays to the scene's end.
+        lead = BLEND_SECONDS if i > 0 else 0.0
+        tail = BLEND_SECONDS if i < len(sections) - 1 else (last_frame - frame_offset) / fps - section.end
+        timing = clip_timing.strip_timing(section, first, last, fps, frame_offset, lead, max(tail, 0.0))
         strip = tracks[i % 2].strips.new(f"{section.behavior} {i}", int(timing.frame_start), action)
+        # The start first: Blender 3.4 moves only the start; scale and repeat then set the end.
+        strip.frame_start = timing.frame_start
         strip.action_frame_start, strip.action_frame_end = timing.action_frame_start, timing.action_frame_end
         strip.scale, strip.repeat = timing.scale, timing.repeat
-        strip.frame_start = timing.frame_start
         strip.extrapolation = "NOTHING" if i < len(sections) - 1 else "HOLD_FORWARD"
-        # Overlap the neighbours; the upper track fades in and out over the lower.
-        if i > 0:
-            strip.frame_start -= blend
-        if i < len(sections) - 1:
-            strip.frame_end += blend
+        # The upper track fades in and out over the lower one.
         if i % 2:
             strip.use_auto_blend = False
-            strip.blend_in = strip.blend_out = min(blend, 0.5 * (strip.frame_end - strip.frame_start))
+            strip.blend_in = strip.blend_out = min(BLEND_SECONDS * fps, 0.5 * (strip.frame_end - strip.frame_start))
 
 
 def clips_of(armature, profile) -> Dict[str, bpy.types.Action]:

@@ -67,11 +67,14 @@ def _section(run: List[Step]) -> Section:
 
 
 def strip_timing(section: Section, clip_start: float, clip_end: float, fps: float, frame_offset: float,
-                 tail: float = 0.0) -> StripTiming:
+                 lead: float = 0.0, tail: float = 0.0) -> StripTiming:
     """The strip that plays a cyclic clip (frames clip_start..clip_end) over a
-    section, `tail` seconds past its end. Frame = frame_offset + time * fps."""
+    section, from `lead` seconds before it to `tail` seconds past its end (the
+    overlaps where neighbouring sections cross-fade). Frame = frame_offset +
+    time * fps."""
     cycle = clip_end - clip_start  # frames of the clip
-    duration = section.end - section.start + tail
+    start = section.start - lead
+    duration = section.end + tail - start
     walking = [s for s in section.steps if s.kind == "walk"]
     if section.behavior == "idle" or not walking:
         scale = 1.0
@@ -81,12 +84,12 @@ def strip_timing(section: Section, clip_start: float, clip_end: float, fps: floa
         scale = 2.0 * step_time * fps / cycle
         rights = [s.start for s in walking if s.foot == "right"]
         strike = rights[0] if rights else walking[0].start + step_time
-        # The clip frame playing at the section's start, so that the quarter
+        # The clip frame playing at the strip's start, so that the quarter
         # cycle falls on the right heel strike.
-        phase = (0.25 * cycle - (strike - section.start) * fps / scale) % cycle
+        phase = (0.25 * cycle - (strike - start) * fps / scale) % cycle
     repeat = max(duration * fps / (cycle * scale), 1e-3)
     return StripTiming(
-        frame_start=frame_offset + section.start * fps,
+        frame_start=frame_offset + start * fps,
         action_frame_start=clip_start + phase,
         action_frame_end=clip_start + phase + cycle,
         scale=scale,
