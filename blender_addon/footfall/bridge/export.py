@@ -1,11 +1,12 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Baking the animated crowd and exporting it as glTF.
 
-The scene is left as it is: temporary copies of the agents are baked (visual
-keying, so IK and clips become plain bone keys; constraints removed), each
-baked action is put on one NLA track named after its agent, so that every
-agent becomes exactly one glTF animation, the copies are exported, and then
-removed with everything made for them.
+The scene is left as it is: temporary copies of the agents' armatures are
+baked (visual keying, so IK and clips become plain bone keys; constraints
+removed), each baked action is put on one NLA track named after its agent, so
+that every agent becomes exactly one glTF animation, the copies get the
+agents' meshes and are exported, and then removed with everything made for
+them.
 """
 
 import os
@@ -35,7 +36,9 @@ def _exporter_options(filepath: str) -> dict:
         options["export_animation_mode"] = "NLA_TRACKS"
     else:  # Blender 3.x
         options["export_nla_strips"] = True
-    for name, value in (("export_anim_single_armature", False), ("export_force_sampling", True),
+    # The baked actions hold a key at every frame: they are written as they are,
+    # without the exporter sampling the scene again.
+    for name, value in (("export_anim_single_armature", False), ("export_force_sampling", False),
                         ("export_optimize_animation_size", False), ("export_cameras", False),
                         ("export_lights", False)):
         if name in available:
@@ -43,11 +46,8 @@ def _exporter_options(filepath: str) -> dict:
     return options
 
 
-def _copy_for_export(armature, scene_collection):
-    """A copy of an agent (armature and bodies) that may be baked and deleted."""
-    copy = armature.copy()
-    copy.data = armature.data.copy()
-    scene_collection.objects.link(copy)
+def _bodies_for(copy, armature, scene_collection):
+    """Copies of the agent's meshes, deformed by `copy` (the mesh data shared)."""
     bodies = []
     for child in armature.children:
         body = child.copy()
@@ -57,7 +57,17 @@ def _copy_for_export(armature, scene_collection):
                 modifier.object = copy
         scene_collection.objects.link(body)
         bodies.append(body)
-    return copy, bodies
+    return bodies
+
+
+def _layer_collection(layer, collection):
+    if layer.collection == collection:
+        return layer
+    for child in layer.children:
+        found = _layer_collection(child, collection)
+        if found is not None:
+            return found
+    return None
 
 
 def export_crowd(filepath: str, scene) -> int:
@@ -68,21 +78,29 @@ def export_crowd(filepath: str, scene) -> int:
     before = datablocks.snapshot()
     names = {a: a.name for a in armatures}
     frame = scene.frame_current
+    crowd = _layer_collection(bpy.context.view_layer.layer_collection, bpy.data.collections[animate.CROWD_COLLECTION])
+    excluded = crowd.exclude
     try:
+        # The animated agents leave the view layer while their copies are baked:
+        # only the copies' armatures (no meshes) are evaluated at every frame.
+        crowd.exclude = True
         # The copies take the agents' names, so that glTF nodes and animations carry them.
         for armature in armatures:
             armature.name = armature.name + " (animated)"
         copies = []
         for armature in armatures:
-            copy, bodies = _copy_for_export(armature, scene.collection)
+            copy = armature.copy()
+            copy.data = armature.data.copy()
             copy.name = names[armature]
-            copies.append((copy, bodies))
+            scene.collection.objects.link(copy)
+            copies.append(copy)
         bpy.context.view_layer.update()
         frames = range(scene.frame_start, scene.frame_end + 1)
         baked = anim_utils.bake_action_objects(
-            [(copy, None) for copy, _bodies in copies], frames=frames, only_selected=False, do_pose=True,
+            [(copy, None) for copy in copies], frames=frames, only_selected=False, do_pose=True,
             do_object=False, do_visual_keying=True, do_constraint_clear=True, do_parents_clear=False, do_clean=False)
-        for (copy, _bodies), action in zip(copies, baked):
+        bpy.ops.object.select_all(action="DESELECT")
+        for copy, armature, action in zip(copies, armatures, baked):
             action.name = f"{copy.name} baked"
             data = copy.animation_data
             for track in list(data.nla_tracks):
@@ -91,9 +109,7 @@ def export_crowd(filepath: str, scene) -> int:
             track = data.nla_tracks.new()
             track.name = copy.name
             track.strips.new(copy.name, scene.frame_start, action)
-        bpy.ops.object.select_all(action="DESELECT")
-        for copy, bodies in copies:
-            for obj in [copy, *bodies]:
+            for obj in [copy, *_bodies_for(copy, armature, scene.collection)]:
                 obj.select_set(True)
         # Written beside the target and moved into place: a failure leaves no half-written file.
         partial = filepath + ".partial.glb"
@@ -112,4 +128,5 @@ def export_crowd(filepath: str, scene) -> int:
         datablocks.remove_new(before)
         for armature, name in names.items():
             armature.name = name
+        crowd.exclude = excluded
         scene.frame_set(frame)

@@ -18,6 +18,8 @@ class FOOTFALL_PT_main(bpy.types.Panel):
 
     def draw(self, context):
         self.layout.label(text=native.status())
+        self.layout.operator("footfall.load_scenario", icon="FILE_FOLDER")
+        self.layout.operator("footfall.plan", icon="TRACKING")
         self.layout.operator("footfall.import_rig", icon="ARMATURE_DATA")
         self.layout.operator("footfall.apply", icon="ANIM")
         self.layout.operator("footfall.export_gltf", icon="EXPORT")

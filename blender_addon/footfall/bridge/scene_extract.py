@@ -1,0 +1,185 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Reading the Blender scene back into a scenario document
+(docs/blender-scenes.md). Pure reading: nothing in the scene changes.
+
+Only objects in the two Footfall collections (or collections inside them)
+count, hidden ones included:
+
+- every MESH object in "Footfall Obstacles" gives one obstacle polygon per face
+  of its evaluated mesh (modifiers applied) whose projection onto the ground
+  (world XY) has an area; its height is the object's highest world Z;
+- every EMPTY in "Footfall Agents" whose parent is not an agent is an agent:
+  its name, world XY and world rotation about Z; its child EMPTYs in that
+  collection are its goals, by "footfall_goal_index", then by name.
+
+The scene's custom property "footfall_overrides" holds the "character" and
+"planner" overrides as JSON text.
+"""
+
+import json
+import math
+import re
+from dataclasses import dataclass
+from typing import List, Sequence
+
+import bpy
+
+from ..core.scenario import AgentInput, ObstacleInput, ScenarioInput, scenario_document
+
+OBSTACLES = "Footfall Obstacles"
+AGENTS = "Footfall Agents"
+GOAL_INDEX = "footfall_goal_index"
+OVERRIDES = "footfall_overrides"
+OVERRIDE_KEYS = ("character", "planner")
+MIN_AREA = 1e-8  # [m²] a face seen from above with less area is edge-on: no footprint
+MIN_HEIGHT = 0.01  # [m]
+
+
+class SceneError(ValueError):
+    """The scene cannot be read as a scenario; the message names the object."""
+
+
+@dataclass(frozen=True)
+class SceneScenario:
+    """The scene as a scenario document, and for each obstacle polygon the
+    name of the object whose face it is."""
+
+    document: dict
+    obstacle_objects: List[str]
+
+    def locate(self, message: str) -> str:
+        """The core's error `message` with the objects behind the
+        agents[i] and obstacles[i] that it names."""
+        notes = []
+        for kind, index in dict.fromkeys(re.findall(r"\b(agents|obstacles)\[(\d+)\]", message)):
+            if kind == "agents":
+                notes.append(f"{kind}[{index}] is agent '{self.document['agents'][int(index)]['name']}'")
+            else:
+                notes.append(f"{kind}[{index}] is a face of '{self.obstacle_objects[int(index)]}'")
+        return f"{message} ({'; '.join(notes)})" if notes else message
+
+
+def signed_area(polygon: Sequence[Sequence[float]]) -> float:
+    """Area of a polygon in the XY plane [m²]: positive counter-clockwise."""
+    count = len(polygon)
+    return 0.5 * sum(polygon[k][0] * polygon[(k + 1) % count][1] - polygon[(k + 1) % count][0] * polygon[k][1]
+                     for k in range(count))
+
+
+def collection_in(scene, name: str):
+    """The collection `name` if it is in the scene's hierarchy, else None."""
+    return next((c for c in scene.collection.children_recursive if c.name == name), None)
+
+
+def _members(scene, name: str) -> list:
+    collection = collection_in(scene, name)
+    return list(collection.all_objects) if collection else []
+
+
+def overrides(scene) -> dict:
+    """The parameter overrides stored on the scene ({"character": {...},
+    "planner": {...}}, either may be missing); their values are checked by
+    the core when planning."""
+    text = scene.get(OVERRIDES)
+    if text is None:
+        return {}
+    where = f"Scene '{scene.name}', custom property '{OVERRIDES}'"
+    if not isinstance(text, str):
+        raise SceneError(f"{where}: must be JSON text, got {type(text).__name__}")
+    try:
+        value = json.loads(text)
+    except json.JSONDecodeError as error:
+        raise SceneError(f"{where}: not valid JSON: {error}") from error
+    if not (isinstance(value, dict) and set(value) <= set(OVERRIDE_KEYS)
+            and all(isinstance(v, dict) for v in value.values())):
+        raise SceneError(f"{where}: must be a JSON object with a 'character' and/or a 'planner' object, got {text}")
+    return value
+
+
+def _xy(vector) -> List[float]:
+    return [float(vector.x), float(vector.y)]
+
+
+def _goal_order(goal):
+    """Sort key: goals with an index first, by index, then the others by name."""
+    index = goal.get(GOAL_INDEX)
+    if index is None:
+        return (1, 0, goal.name)
+    if isinstance(index, float) and index.is_integer():  # the UI makes float properties by default
+        index = int(index)
+    if not isinstance(index, int):
+        raise SceneError(f"Goal '{goal.name}': custom property '{GOAL_INDEX}' must be an integer, got {index!r}")
+    return (0, index, goal.name)
+
+
+def _agents(objects, depsgraph) -> List[AgentInput]:
+    empties = {o for o in objects if o.type == "EMPTY"}
+
+    def is_agent(obj):
+        return obj in empties and not (obj.parent is not None and is_agent(obj.parent))
+
+    agents = []
+    for agent in sorted(filter(is_agent, empties), key=lambda o: o.name):
+        goals = sorted((child for child in agent.children if child in empties), key=_goal_order)
+        if not goals:
+            raise SceneError(f"Agent '{agent.name}' has no goals: parent one or more empties to it "
+                             f"in '{AGENTS}' (docs/blender-scenes.md)")
+        world = agent.evaluated_get(depsgraph).matrix_world
+        agents.append(AgentInput(
+            name=agent.name,
+            position=_xy(world.translation),
+            goals=[_xy(goal.evaluated_get(depsgraph).matrix_world.translation) for goal in goals],
+            facing=math.atan2(world[1][0], world[0][0]),  # where the local X axis points
+        ))
+    return agents
+
+
+def _footprint(obj, depsgraph):
+    """The object's faces projected onto the ground that have an area, and its
+    highest world Z."""
+    evaluated = obj.evaluated_get(depsgraph)
+    mesh = evaluated.to_mesh()
+    try:
+        world = evaluated.matrix_world
+        points = [world @ vertex.co for vertex in mesh.vertices]
+        polygons = []
+        for face in mesh.polygons:
+            polygon = [_xy(points[k]) for k in face.vertices]
+            if abs(signed_area(polygon)) > MIN_AREA:
+                polygons.append(polygon)
+        top = max((p.z for p in points), default=0.0)
+    finally:
+        evaluated.to_mesh_clear()
+    if not polygons:
+        raise SceneError(f"Obstacle '{obj.name}' has no footprint: none of its faces covers an area seen from "
+                         f"above (give a flat wall a thickness, e.g. with a Solidify modifier)")
+    return polygons, max(float(top), MIN_HEIGHT)
+
+
+def _obstacles(objects, depsgraph):
+    obstacles, owners = [], []
+    for obj in sorted((o for o in objects if o.type == "MESH"), key=lambda o: o.name):
+        polygons, height = _footprint(obj, depsgraph)
+        obstacles += [ObstacleInput(polygon, height) for polygon in polygons]
+        owners += [obj.name] * len(polygons)
+    return obstacles, owners
+
+
+def read(scene) -> SceneScenario:
+    """The scene as a scenario document, with the objects behind its
+    obstacles. Raises SceneError naming the object that cannot be read."""
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    if depsgraph.scene != scene:
+        raise SceneError(f"Scene '{scene.name}' is not the active scene; only the active scene can be read")
+    obstacles, owners = _obstacles(_members(scene, OBSTACLES), depsgraph)
+    agents = _agents(_members(scene, AGENTS), depsgraph)
+    params = overrides(scene)
+    document = scenario_document(ScenarioInput(agents=agents, obstacles=obstacles,
+                                               character=params.get("character", {}),
+                                               planner=params.get("planner", {})))
+    return SceneScenario(document, owners)
+
+
+def extract(scene) -> dict:
+    """The scene as a scenario document (docs/file-formats.md)."""
+    return read(scene).document

@@ -1,0 +1,83 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Operators for the scene (docs/blender-scenes.md): load a scenario file
+into it, and plan it. Errors leave the scene and the stored plan as they were."""
+
+import time
+
+import bpy
+from bpy_extras.io_utils import ImportHelper
+
+from ..core import native
+
+
+class FOOTFALL_OT_load_scenario(bpy.types.Operator, ImportHelper):
+    """Add the obstacles and agents of a Footfall scenario file to the scene"""
+
+    bl_idname = "footfall.load_scenario"
+    bl_label = "Load Scenario"
+    bl_options = {"REGISTER", "UNDO"}
+
+    filename_ext = ".json"
+    filter_glob: bpy.props.StringProperty(default="*.json", options={"HIDDEN"})
+
+    def execute(self, context):
+        from ..bridge import scene_build
+
+        try:
+            document = scene_build.load_file(context.scene, bpy.path.abspath(self.filepath))
+        except (ValueError, native.CoreMissingError) as error:
+            self.report({"ERROR"}, str(error))
+            return {"CANCELLED"}
+        self.report({"INFO"}, f"Added {len(document['agents'])} agents and "
+                              f"{len(document['obstacles'])} obstacles from {self.filepath}")
+        return {"FINISHED"}
+
+
+def _plan_scene(context):
+    """Plans the scene with a progress bar; returns the plan and the seconds it took.
+    Raises SceneError naming the object or field at fault."""
+    from ..bridge.scene_extract import AGENTS, SceneError, read
+    from ..core.scenario import plan
+
+    extracted = read(context.scene)
+    if not extracted.document["agents"]:
+        raise SceneError(f"No agents to plan: add empties to the collection '{AGENTS}', "
+                         "or load a scenario (docs/blender-scenes.md)")
+    window_manager = context.window_manager
+    window_manager.progress_begin(0, 100)
+    start = time.perf_counter()
+    try:
+        result = plan(extracted.document, "scene", progress=lambda f: window_manager.progress_update(round(100 * f)))
+    except ValueError as error:
+        raise SceneError(extracted.locate(str(error))) from error
+    finally:
+        window_manager.progress_end()
+    return result, time.perf_counter() - start
+
+
+class FOOTFALL_OT_plan(bpy.types.Operator):
+    """Plan the footsteps of every agent in the scene and store the plan in this file"""
+
+    bl_idname = "footfall.plan"
+    bl_label = "Plan"
+    bl_options = {"REGISTER", "UNDO"}
+
+    def execute(self, context):
+        from ..bridge import plan_store
+
+        try:
+            result, seconds = _plan_scene(context)
+        except (ValueError, native.CoreMissingError) as error:
+            self.report({"ERROR"}, str(error))
+            return {"CANCELLED"}
+        ff = native.load()
+        plan_store.store(ff.plan_to_json(result))
+        reached = sum(agent.status == ff.AgentStatus.REACHED for agent in result.agents)
+        steps = sum(len(agent.footsteps) for agent in result.agents)
+        level = "INFO" if reached == len(result.agents) else "WARNING"
+        self.report({level}, f"{reached}/{len(result.agents)} agents reached their goals, {steps} footsteps, "
+                             f"planned in {seconds:.2f} s; stored in the Text '{plan_store.TEXT_NAME}'")
+        return {"FINISHED"}
+
+
+classes = (FOOTFALL_OT_load_scenario, FOOTFALL_OT_plan)

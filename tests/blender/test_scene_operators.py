@@ -1,0 +1,356 @@
+"""Blender background test: footfall.load_scenario and footfall.plan, the
+scene's conventions read back by scene_extract (loaded and hand-made), the
+plan stored in the .blend, and errors that leave the scene as it was.
+
+Run: blender -b --factory-startup -noaudio --python-exit-code 1 --python tests/blender/test_scene_operators.py
+"""
+
+import json
+import math
+import os
+import pathlib
+import sys
+import tempfile
+
+import addon_utils
+import bpy
+from mathutils import Matrix
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+sys.path.insert(0, os.environ.get("FOOTFALL_ADDON_DIR", str(ROOT / "blender_addon")))
+TMP = pathlib.Path(tempfile.mkdtemp(prefix="footfall-scenes-"))
+
+L_SHAPE = [[2, 2], [3, 2], [3, 0], [4, 0], [4, -1], [2, -1]]  # concave, clockwise
+BOX = [[5, 3], [6, 3], [6, 4], [5, 4]]
+SCENARIO = {
+    "format": "footfall-scenario", "version": 1,
+    "obstacles": [{"polygon": L_SHAPE, "height": 1.5}, {"polygon": BOX}],
+    "agents": [{"name": "alice", "position": [0, -2.5], "facing": 0.3, "goals": [[5, -2.5], [5.5, 1]]},
+               {"name": "bob", "position": [0, 4.5], "goals": [[7, 5.5], [7, 2]]}],
+    "character": {"mass": 65.0, "left": {"max_speed": 2.0}},
+    "planner": {"max_expansions": 3000},
+}
+FACINGS = {"alice": 0.3, "bob": math.atan2(1, 7)}  # bob's default: toward his first goal
+
+
+def check(condition, message):
+    if not condition:
+        raise AssertionError(message)
+
+
+def close(a, b, tolerance=1e-6):
+    return len(a) == len(b) and all(abs(x - y) <= tolerance for x, y in zip(a, b))
+
+
+def fresh_scene():
+    bpy.ops.wm.read_homefile(use_empty=True)
+    addon_utils.enable("footfall", default_set=True, handle_error=None)
+    from footfall.ui import scene_operators  # until ui/registration.py lists them
+
+    for cls in scene_operators.classes:
+        if not hasattr(bpy.types, cls.__name__):
+            bpy.utils.register_class(cls)
+
+
+def write(name, content):
+    path = TMP / name
+    path.write_text(content if isinstance(content, str) else json.dumps(content))
+    return str(path)
+
+
+def extract():
+    from footfall.bridge import scene_extract
+
+    return scene_extract.extract(bpy.context.scene)
+
+
+def world_vertices(obj):
+    return [obj.matrix_world @ v.co for v in obj.data.vertices]
+
+
+def inside(point, polygon):
+    """Even-odd rule."""
+    x, y = point
+    result = False
+    for (x0, y0), (x1, y1) in zip(polygon, polygon[1:] + polygon[:1]):
+        if (y0 > y) != (y1 > y) and x < x0 + (y - y0) * (x1 - x0) / (y1 - y0):
+            result = not result
+    return result
+
+
+def boundary_distance(point, polygon):
+    def to_segment(a, b):
+        ax, ay, bx, by = *a, *b
+        length2 = (bx - ax) ** 2 + (by - ay) ** 2
+        t = max(0.0, min(1.0, ((point[0] - ax) * (bx - ax) + (point[1] - ay) * (by - ay)) / length2))
+        return math.dist(point, (ax + t * (bx - ax), ay + t * (by - ay)))
+
+    return min(to_segment(a, b) for a, b in zip(polygon, polygon[1:] + polygon[:1]))
+
+
+def check_union(expected, polygons, x_range, y_range, step=0.1):
+    """Every sample point (not on an expected edge) is inside the union of
+    `polygons` exactly if it is inside one of the `expected` polygons."""
+    count = 0
+    for i in range(int((x_range[1] - x_range[0]) / step)):
+        for j in range(int((y_range[1] - y_range[0]) / step)):
+            p = (x_range[0] + (i + 0.5) * step, y_range[0] + (j + 0.5) * step)
+            if min(boundary_distance(p, e) for e in expected) < 1e-4:
+                continue
+            want = any(inside(p, e) for e in expected)
+            check(any(inside(p, q) for q in polygons) == want, f"{p}: inside the footprint should be {want}")
+            count += want
+    check(count > 0, "no sample point inside the expected footprint")
+
+
+def convex_hull(points):
+    points = sorted(set(points))
+
+    def half(sequence):
+        hull = []
+        for p in sequence:
+            while len(hull) >= 2 and ((hull[-1][0] - hull[-2][0]) * (p[1] - hull[-2][1])
+                                      - (hull[-1][1] - hull[-2][1]) * (p[0] - hull[-2][0])) <= 0:
+                hull.pop()
+            hull.append(p)
+        return hull[:-1]
+
+    return half(points) + half(reversed(points))
+
+
+def load_good_scenario():
+    path = write("good.json", SCENARIO)
+    check(bpy.ops.footfall.load_scenario(filepath=path) == {"FINISHED"}, "load_scenario did not finish")
+    bpy.context.view_layer.update()
+    return path
+
+
+def test_load_builds_the_conventions_and_extracts_back():
+    fresh_scene()
+    load_good_scenario()
+    agents = bpy.data.collections["Footfall Agents"]
+    obstacles = bpy.data.collections["Footfall Obstacles"]
+    check({c.name for c in bpy.context.scene.collection.children} == {agents.name, obstacles.name}, "collections")
+    check(sorted(o.name for o in agents.objects) == ["alice", "alice goal 1", "alice goal 2",
+                                                     "bob", "bob goal 1", "bob goal 2"], list(agents.objects))
+    for spec in SCENARIO["agents"]:
+        agent = bpy.data.objects[spec["name"]]
+        check(agent.type == "EMPTY" and agent.parent is None, f"{agent.name}: not a top-level empty")
+        check(close(agent.matrix_world.translation.xy, spec["position"]), f"{agent.name}: at {agent.location}")
+        check(abs(agent.rotation_euler.z - FACINGS[agent.name]) < 1e-6, f"{agent.name}: facing {agent.rotation_euler}")
+        goals = sorted(agent.children, key=lambda g: g["footfall_goal_index"])
+        check([g.name for g in goals] == [f"{agent.name} goal {k}" for k in (1, 2)], [g.name for g in goals])
+        check([g["footfall_goal_index"] for g in goals] == [1, 2], "goal indices")
+        check(all(g.empty_display_type == "SPHERE" and abs(g.empty_display_size - 0.25) < 1e-9 for g in goals),
+              "goals are spheres of size 0.25")
+        for goal, point in zip(goals, spec["goals"]):
+            check(close(goal.matrix_world.translation.xy, point), f"{goal.name}: at {goal.matrix_world.translation}")
+    check(sorted(o.name for o in obstacles.objects) == ["Obstacle 0", "Obstacle 1"], list(obstacles.objects))
+    for name, spec, height in (("Obstacle 0", L_SHAPE, 1.5), ("Obstacle 1", BOX, 2.0)):
+        obj = bpy.data.objects[name]
+        points = world_vertices(obj)
+        check(abs(max(p.z for p in points) - height) < 1e-6 and abs(min(p.z for p in points)) < 1e-6,
+              f"{name}: from {min(p.z for p in points)} to {max(p.z for p in points)}")
+        check(len(obj.data.polygons) == len(spec) + 2, f"{name}: {len(obj.data.polygons)} faces")
+        for corner in spec:
+            check(any(close(p.xy, corner) for p in points), f"{name}: no vertex at {corner}")
+
+    document = extract()
+    check([a["name"] for a in document["agents"]] == ["alice", "bob"], document["agents"])
+    for got, spec in zip(document["agents"], SCENARIO["agents"]):
+        check(close(got["position"], spec["position"]), f"{got['name']}: position {got['position']}")
+        check(abs(got["facing"] - FACINGS[got["name"]]) < 1e-6, f"{got['name']}: facing {got['facing']}")
+        check(len(got["goals"]) == 2 and all(close(g, s) for g, s in zip(got["goals"], spec["goals"])),
+              f"{got['name']}: goals {got['goals']}")
+    check_union([L_SHAPE, BOX], [o["polygon"] for o in document["obstacles"]], (0, 7), (-3, 5))
+    heights = sorted({round(o["height"], 6) for o in document["obstacles"]})
+    check(heights == [1.5, 2.0], heights)
+    check(document["character"] == SCENARIO["character"], document.get("character"))
+    check(document["planner"] == SCENARIO["planner"], document.get("planner"))
+
+
+def link_to(collection, obj):
+    for owner in obj.users_collection:
+        owner.objects.unlink(obj)
+    collection.objects.link(obj)
+
+
+def new_empty(name, collection, parent=None, location=(0, 0, 0)):
+    obj = bpy.data.objects.new(name, None)
+    obj.parent = parent
+    obj.location = location
+    collection.objects.link(obj)
+    return obj
+
+
+def test_hand_made_agents_and_obstacles_are_extracted():
+    fresh_scene()
+    scene = bpy.context.scene
+    agents = bpy.data.collections.new("Footfall Agents")
+    obstacles = bpy.data.collections.new("Footfall Obstacles")
+    scene.collection.children.link(agents)
+    scene.collection.children.link(obstacles)
+    hand = new_empty("hand", agents, location=(1, -2, 0.5))
+    hand.rotation_euler.z = 1.0
+    hand.scale = (2, 2, 2)
+    new_empty("hand b", agents, hand, (1, 0, 0))["footfall_goal_index"] = 1
+    new_empty("hand a", agents, hand, (0, 1, 0))["footfall_goal_index"] = 2
+    plain = new_empty("plain", agents, location=(-3, 0, 0))
+    new_empty("plain g2", agents, plain, (0, 2, 0))
+    new_empty("plain g1", agents, plain, (2, 0, 0))
+    new_empty("not a goal", scene.collection, plain, (5, 5, 0))  # outside the collections: ignored
+    new_empty("not an agent", scene.collection, location=(9, 9, 0))
+    plain.hide_set(True)  # hidden objects count
+
+    bpy.ops.mesh.primitive_cube_add(size=2, location=(5, 5, 1), rotation=(0.3, 0.2, 0.7), scale=(1.5, 0.5, 1))
+    cube = bpy.context.active_object
+    link_to(obstacles, cube)
+    bpy.ops.mesh.primitive_cube_add(size=1, location=(10, 0, 0.5))
+    arrayed = bpy.context.active_object  # its modifier doubles it along +X
+    arrayed.modifiers.new("Array", "ARRAY").count = 2
+    link_to(obstacles, arrayed)
+    arrayed.hide_set(True)
+    bpy.context.view_layer.update()
+
+    document = extract()
+    check([a["name"] for a in document["agents"]] == ["hand", "plain"], document["agents"])
+    hand_doc, plain_doc = document["agents"]
+    c, s = math.cos(1.0), math.sin(1.0)
+    check(close(hand_doc["position"], [1, -2]) and abs(hand_doc["facing"] - 1.0) < 1e-6, hand_doc)
+    check(close(hand_doc["goals"][0], [1 + 2 * c, -2 + 2 * s]), f"goal by index first: {hand_doc['goals']}")
+    check(close(hand_doc["goals"][1], [1 - 2 * s, -2 + 2 * c]), hand_doc["goals"])
+    check(plain_doc["goals"] == [[-1.0, 0.0], [-3.0, 2.0]], f"goals by name: {plain_doc['goals']}")
+    check(abs(plain_doc["facing"]) < 1e-9, plain_doc)
+
+    cube_points = world_vertices(cube)
+    hull = convex_hull([(p.x, p.y) for p in cube_points])
+    cube_polygons = [o["polygon"] for o in document["obstacles"] if min(x for x, _ in o["polygon"]) < 8]
+    check_union([hull], cube_polygons, (2, 8), (2, 8))
+    check(all(abs(o["height"] - max(p.z for p in cube_points)) < 1e-6 for o in document["obstacles"]
+              if o["polygon"] in cube_polygons), "cube height")
+    arrayed_polygons = [o["polygon"] for o in document["obstacles"] if o["polygon"] not in cube_polygons]
+    check_union([[[9.5, -0.5], [11.5, -0.5], [11.5, 0.5], [9.5, 0.5]]], arrayed_polygons, (9, 12), (-1, 1))
+    check("character" not in document and "planner" not in document, "overrides without a property")
+
+
+def test_plan_is_stored_and_saved_with_the_file():
+    from footfall.bridge import plan_store
+
+    fresh_scene()
+    load_good_scenario()
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan did not finish")
+    check("footfall_plan.json" in bpy.data.texts, "no Text footfall_plan.json")
+    document = json.loads(plan_store.load())
+    check({a["name"]: a["status"] for a in document["agents"]} == {"alice": "reached", "bob": "reached"},
+          [(a["name"], a["status"]) for a in document["agents"]])
+    check(document["character"]["mass"] == 65.0, "character override not planned with")
+    text = plan_store.load()
+    plan = plan_store.load_plan()
+    check(len(plan.agents) == 2 and all(len(a.footsteps) > 0 for a in plan.agents), "the core cannot read the plan")
+
+    path = str(TMP / "planned.blend")
+    bpy.ops.wm.save_as_mainfile(filepath=path)
+    bpy.ops.wm.read_homefile(use_empty=True)
+    check(plan_store.load() is None, "a new file still has the plan")
+    bpy.ops.wm.open_mainfile(filepath=path)
+    check(plan_store.load() == text, "the reopened plan differs")
+    check([a.name for a in plan_store.load_plan().agents] == ["alice", "bob"], "reopened plan")
+
+
+def plain_value(value):
+    return value.to_dict() if hasattr(value, "to_dict") else value.to_list() if hasattr(value, "to_list") else value
+
+
+def inventory():
+    """The data-blocks, the scene's collections and what they hold, and the custom properties."""
+    scene = bpy.context.scene
+    kinds = ("objects", "meshes", "collections", "texts")
+    state = {kind: sorted(b.name for b in getattr(bpy.data, kind)) for kind in kinds}
+    state["scene"] = sorted((c.name, sorted(o.name for o in c.objects)) for c in scene.collection.children_recursive)
+    state["scene properties"] = {k: plain_value(v) for k, v in scene.items()}
+    state["object properties"] = {o.name: {k: plain_value(v) for k, v in o.items()} for o in bpy.data.objects}
+    return state
+
+
+def operator_error(operator, **options):
+    try:
+        operator(**options)
+    except RuntimeError as error:
+        return str(error)
+    raise AssertionError(f"{operator.idname()} gave no error")
+
+
+def test_errors_leave_the_scene_as_it_was():
+    from footfall.bridge import scene_build
+
+    fresh_scene()
+    check("No agents to plan" in operator_error(bpy.ops.footfall.plan), "planning an empty scene")
+    good = load_good_scenario()
+    bpy.ops.mesh.primitive_uv_sphere_add()  # something of the user's
+    before = inventory()
+
+    bad = write("nan.json", '{"format": "footfall-scenario", "version": 1, "agents": '
+                            '[{"name": "carol", "position": [NaN, 1], "goals": [[3, 3]]}]}')
+    message = operator_error(bpy.ops.footfall.load_scenario, filepath=bad)
+    check("nan.json: agents[0].position[0]: must be a finite number" in message, message)
+    check(inventory() == before, "a NaN position changed the scene")
+
+    two = write("two.json", {"format": "footfall-scenario", "version": 1,
+                             "obstacles": [{"polygon": [[0, 0], [1, 1]]}], "character": {"mass": 80}})
+    message = operator_error(bpy.ops.footfall.load_scenario, filepath=two)
+    check("two.json: obstacles[0].polygon: needs at least 3 points" in message, message)
+    check(inventory() == before, "a 2-point polygon changed the scene")
+
+    xml = write("crowd.xml", "<SteerBenchTestCase/>")
+    message = operator_error(bpy.ops.footfall.load_scenario, filepath=xml)
+    check(message.strip().endswith(f"{xml}: SteerSuite XML scenarios are not supported yet; convert it to a Footfall "
+                           "scenario JSON (docs/file-formats.md)"), message)
+
+    message = operator_error(bpy.ops.footfall.load_scenario, filepath=good)
+    check("good.json: agents[0].name: an object named 'alice' exists already" in message, message)
+    check(inventory() == before, "loading twice changed the scene")
+
+    # A failure in the middle of building removes what was built: collections too.
+    fresh_scene()
+    before = inventory()
+    def fail(*_args):
+        raise RuntimeError("injected failure after the agents and obstacles were built (expected)")
+
+    add_goals = scene_build._add_goals
+    scene_build._add_goals = fail
+    try:
+        operator_error(bpy.ops.footfall.load_scenario, filepath=good)
+    finally:
+        scene_build._add_goals = add_goals
+    check(inventory() == before, f"a failed build left {inventory()}")
+
+    # Planning: a goal inside an obstacle is named with its objects; an agent without goals by name.
+    load_good_scenario()
+    bpy.data.objects["bob goal 2"].matrix_world = Matrix.Translation((5.5, 3.5, 0))  # inside the box
+    message = operator_error(bpy.ops.footfall.plan)
+    check("scene: agents[1].goals[1]: inside obstacles[" in message and "is agent 'bob'" in message
+          and "is a face of 'Obstacle 1'" in message, message)
+    lonely = bpy.data.objects.new("lonely", None)
+    bpy.data.collections["Footfall Agents"].objects.link(lonely)
+    message = operator_error(bpy.ops.footfall.plan)
+    check("Agent 'lonely' has no goals" in message, message)
+    check("footfall_plan.json" not in bpy.data.texts, "a failed plan stored a Text")
+
+
+def main():
+    tests = [test_load_builds_the_conventions_and_extracts_back, test_hand_made_agents_and_obstacles_are_extracted,
+             test_plan_is_stored_and_saved_with_the_file, test_errors_leave_the_scene_as_it_was]
+    failed = 0
+    for test in tests:
+        try:
+            test()
+            print(f"PASS {test.__name__}")
+        except Exception as error:  # report every test, then fail the run
+            failed += 1
+            print(f"FAIL {test.__name__}: {error!r}")
+    print(f"{len(tests) - failed} passed, {failed} failed")
+    if failed:
+        sys.exit(1)
+
+
+main()
