@@ -12,8 +12,6 @@ them.
 import os
 
 import bpy
-from bpy_extras import anim_utils
-
 from . import animate, datablocks
 
 
@@ -70,6 +68,67 @@ def _layer_collection(layer, collection):
     return None
 
 
+def _bake(copies, scene):
+    """Bakes each armature's visual pose (IK and clips included) to a new action
+    with a key on every channel at every frame, then removes its constraints,
+    NLA tracks and old action. One scene evaluation per frame; keys written in bulk."""
+    frames = list(range(scene.frame_start, scene.frame_end + 1))
+    samples = {copy: {bone.name: [] for bone in copy.pose.bones} for copy in copies}
+    for frame in frames:
+        scene.frame_set(frame)
+        for copy in copies:
+            for bone in copy.pose.bones:
+                local = copy.convert_space(pose_bone=bone, matrix=bone.matrix, from_space="POSE", to_space="LOCAL")
+                samples[copy][bone.name].append(local.decompose())
+    actions = []
+    for copy in copies:
+        action = bpy.data.actions.new(f"{copy.name} baked")
+        for bone in copy.pose.bones:
+            for constraint in list(bone.constraints):
+                bone.constraints.remove(constraint)
+            bone.rotation_mode = "QUATERNION"
+            pose = samples[copy][bone.name]
+            rotations = [rotation for _location, rotation, _scale in pose]
+            for i in range(1, len(rotations)):
+                if rotations[i - 1].dot(rotations[i]) < 0:  # the shorter way round
+                    rotations[i].negate()
+            path = f'pose.bones["{bone.name}"].'
+            channels = [(path + "location", 3, [p[0] for p in pose], (0.0, 0.0, 0.0)),
+                        (path + "rotation_quaternion", 4, rotations, (1.0, 0.0, 0.0, 0.0)),
+                        (path + "scale", 3, [p[2] for p in pose], (1.0, 1.0, 1.0))]
+            for data_path, size, values, rest in channels:
+                # A channel that never leaves its rest value is left out: less for the exporter.
+                if all(abs(v[i] - rest[i]) < 1e-7 for v in values for i in range(size)):
+                    continue
+                for index in range(size):
+                    curve = action.fcurves.new(data_path, index=index, action_group=bone.name)
+                    curve.keyframe_points.add(len(frames))
+                    curve.keyframe_points.foreach_set(
+                        "co", [x for frame, value in zip(frames, values) for x in (frame, value[index])])
+                    curve.update()
+        data = copy.animation_data
+        for track in list(data.nla_tracks):
+            data.nla_tracks.remove(track)
+        data.action = None
+        _remove_controls(copy, action)
+        actions.append(action)
+    return actions
+
+
+def _remove_controls(armature, action) -> None:
+    """Removes the IK foot targets and knee poles, which only drove the bake."""
+    controls = [b.name for b in armature.data.bones if b.name.startswith(("footfall_ik_foot.", "footfall_pole."))]
+    for curve in [c for c in action.fcurves if c.group and c.group.name in controls]:
+        action.fcurves.remove(curve)
+    previous = bpy.context.view_layer.objects.active
+    bpy.context.view_layer.objects.active = armature
+    bpy.ops.object.mode_set(mode="EDIT")
+    for name in controls:
+        armature.data.edit_bones.remove(armature.data.edit_bones[name])
+    bpy.ops.object.mode_set(mode="OBJECT")
+    bpy.context.view_layer.objects.active = previous
+
+
 def export_crowd(filepath: str, scene) -> int:
     """Bakes and exports every agent animated by apply; returns how many."""
     armatures = crowd_armatures()
@@ -95,18 +154,10 @@ def export_crowd(filepath: str, scene) -> int:
             scene.collection.objects.link(copy)
             copies.append(copy)
         bpy.context.view_layer.update()
-        frames = range(scene.frame_start, scene.frame_end + 1)
-        baked = anim_utils.bake_action_objects(
-            [(copy, None) for copy in copies], frames=frames, only_selected=False, do_pose=True,
-            do_object=False, do_visual_keying=True, do_constraint_clear=True, do_parents_clear=False, do_clean=False)
+        baked = _bake(copies, scene)
         bpy.ops.object.select_all(action="DESELECT")
         for copy, armature, action in zip(copies, armatures, baked):
-            action.name = f"{copy.name} baked"
-            data = copy.animation_data
-            for track in list(data.nla_tracks):
-                data.nla_tracks.remove(track)
-            data.action = None
-            track = data.nla_tracks.new()
+            track = copy.animation_data.nla_tracks.new()
             track.name = copy.name
             track.strips.new(copy.name, scene.frame_start, action)
             for obj in [copy, *_bodies_for(copy, armature, scene.collection)]:
