@@ -242,3 +242,14 @@ def test_given_limbs_guide_the_trunk():
     assert "hips" in missing and "left.thigh" in missing
     mapping, missing = bone_map.detect_partial(bones, {"left": {"thigh": "Femur_A"}, "right": {"thigh": "Femur_B"}})
     assert missing == [] and mapping["hips"] == "hips" and mapping["left"]["thigh"] == "Femur_A"
+
+
+def test_with_rig_keeps_the_documents_own_overrides():
+    document = {"format": "footfall-scenario", "version": 1, "agents": [],
+                "character": {"mass": 60.0, "max_step_length": 0.8}}
+    result = character.with_rig(document, {"hip_height": 1.1, "leg_length": 1.05, "shoulder_width": 0.46,
+                                           "foot_length": 0.3})
+    assert result["character"]["mass"] == 60.0 and result["character"]["max_step_length"] == 0.8
+    assert result["character"]["com_height"] == pytest.approx(1.155)
+    assert len(result["planner"]["gaits"]) == 3
+    assert document["character"] == {"mass": 60.0, "max_step_length": 0.8}  # not changed in place

@@ -6,7 +6,7 @@ import bpy
 
 from ..core import native
 from . import animate, datablocks
-from .rig_import import PROFILE_PROPERTY
+from .rig_import import imported_rigs
 
 
 class ApplyError(ValueError):
@@ -32,7 +32,7 @@ def _plan(ff, plan_filepath: str):
 
 
 def _rig(name: str):
-    rigs = [o for o in bpy.data.objects if o.type == "ARMATURE" and PROFILE_PROPERTY in o]
+    rigs = imported_rigs()
     if name:
         rig = bpy.data.objects.get(name)
         if rig is None or rig not in rigs:

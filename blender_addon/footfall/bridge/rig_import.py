@@ -133,6 +133,11 @@ def import_rig(filepath: str, mapping: Optional[Dict[str, object]] = None) -> Im
     return ImportedRig(armature, profile, notes)
 
 
+def imported_rigs():
+    """The armatures imported with Footfall's Import Rig."""
+    return [o for o in bpy.data.objects if o.type == "ARMATURE" and PROFILE_PROPERTY in o]
+
+
 def profile_of(armature) -> RigProfile:
     """The profile stored on an imported armature."""
     if PROFILE_PROPERTY not in armature:

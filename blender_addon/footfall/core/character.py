@@ -43,3 +43,13 @@ def derive_parameters(dimensions: Mapping[str, float]) -> Tuple[Dict[str, object
         "gaits": [{"speed": v * speed_scale, "duration": t * time_scale} for v, t in DEFAULT_GAITS],
     }
     return character, planner
+
+
+def with_rig(document: dict, dimensions: Mapping[str, float]) -> dict:
+    """A scenario document whose character and planner take the rig's derived
+    parameters, except where the document sets its own."""
+    character, planner = derive_parameters(dimensions)
+    result = dict(document)
+    result["character"] = {**character, **document.get("character", {})}
+    result["planner"] = {**planner, **document.get("planner", {})}
+    return result

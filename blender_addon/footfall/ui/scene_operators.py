@@ -36,18 +36,24 @@ class FOOTFALL_OT_load_scenario(bpy.types.Operator, ImportHelper):
 def _plan_scene(context):
     """Plans the scene with a progress bar; returns the plan and the seconds it took.
     Raises SceneError naming the object or field at fault."""
+    from ..bridge.rig_import import imported_rigs, profile_of
     from ..bridge.scene_extract import AGENTS, SceneError, read
+    from ..core.character import with_rig
     from ..core.scenario import plan
 
     extracted = read(context.scene)
-    if not extracted.document["agents"]:
+    document = extracted.document
+    rigs = imported_rigs()
+    if len(rigs) == 1:  # the rig's size sets the stride; the scene's own overrides win
+        document = with_rig(document, profile_of(rigs[0]).dimensions)
+    if not document["agents"]:
         raise SceneError(f"No agents to plan: add empties to the collection '{AGENTS}', "
                          "or load a scenario (docs/blender-scenes.md)")
     window_manager = context.window_manager
     window_manager.progress_begin(0, 100)
     start = time.perf_counter()
     try:
-        result = plan(extracted.document, "scene", progress=lambda f: window_manager.progress_update(round(100 * f)))
+        result = plan(document, "scene", progress=lambda f: window_manager.progress_update(round(100 * f)))
     except ValueError as error:
         raise SceneError(extracted.locate(str(error))) from error
     finally:
