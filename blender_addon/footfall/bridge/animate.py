@@ -135,6 +135,7 @@ def _instance(name: str, template, rig, rest: RigRest, collection) -> bpy.types.
     for mesh in (c for c in rig.children if c.type == "MESH"):
         body = mesh.copy()  # mesh data linked, vertex groups and modifiers copied
         body.name = f"{name} body"
+        body.hide_render = body.hide_viewport = False  # whatever the template's visibility
         body.parent = armature
         for modifier in body.modifiers:
             if modifier.type == "ARMATURE":
