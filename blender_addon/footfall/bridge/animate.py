@@ -14,13 +14,13 @@ Every planned foot position is the point on the ground under the ankle; the
 ankle stays at its rest height while the foot is planted.
 """
 
-import bisect
 import math
 from dataclasses import dataclass, field
 from typing import Callable, Dict, List, Optional
 
 import bpy
-from mathutils import Matrix, Quaternion, Vector
+import numpy
+from mathutils import Matrix, Vector
 
 from ..core import clip_timing
 from . import procedural_clips
@@ -58,14 +58,6 @@ class RigRest:
     legs: Dict[str, _Leg] = field(default_factory=dict)
 
 
-def _yaw(angle: float) -> Matrix:
-    return Matrix.Rotation(angle, 4, "Z")
-
-
-def _rotation(matrix: Matrix) -> Matrix:
-    return matrix.to_3x3().to_4x4()
-
-
 def _pole_angle(thigh, shin, pole: Vector) -> float:
     """The IK pole angle that leaves the knee where it is at rest."""
     axis = shin.tail_local - thigh.head_local
@@ -93,7 +85,8 @@ def _template(rig, profile) -> bpy.types.Armature:
     bpy.context.view_layer.objects.active = holder
     try:
         bpy.ops.object.mode_set(mode="EDIT")
-        forward = Vector((math.cos(_forward_yaw(data, profile.bones)), math.sin(_forward_yaw(data, profile.bones)), 0))
+        yaw = _forward_yaw(data, profile.bones)
+        forward = Vector((math.cos(yaw), math.sin(yaw), 0.0))
         for side, suffix in SIDES:
             bones = profile.bones[side]
             foot = data.edit_bones[bones["foot"]]
@@ -154,84 +147,93 @@ def _instance(name: str, template, rig, rest: RigRest, collection) -> bpy.types.
     return armature
 
 
-class _Channels:
-    """Per-frame values of pose-bone channels, written as keyframes in bulk."""
+def _pose_arrays(rest: Matrix, positions, yaws=None):
+    """Pose-bone location (and quaternion) arrays, one row per frame, that put
+    an unparented bone's head at `positions` turned by `yaws` about world Z.
 
-    def __init__(self):
-        self.values: Dict[tuple, List[float]] = {}
-        self.last_quaternion: Dict[str, Quaternion] = {}
-
-    def pose(self, bone: str, rest: Matrix, target: Matrix, rotate: bool = True):
-        """Keys the bone so that its armature-space matrix is `target`."""
-        basis = rest.inverted() @ target
-        location = basis.to_translation()
-        for i in range(3):
-            self.values.setdefault((f'pose.bones["{bone}"].location', i), []).append(location[i])
-        if rotate:
-            quaternion = basis.to_quaternion()
-            last = self.last_quaternion.get(bone)
-            if last is not None and last.dot(quaternion) < 0:  # the shorter way round
-                quaternion.negate()
-            self.last_quaternion[bone] = quaternion
-            for i in range(4):
-                self.values.setdefault((f'pose.bones["{bone}"].rotation_quaternion', i), []).append(quaternion[i])
-
-    def write(self, armature, name: str, frames: List[float]) -> bpy.types.Action:
-        action = bpy.data.actions.new(name)
-        armature.animation_data_create().action = action
-        for (path, index), values in self.values.items():
-            curve = action.fcurves.new(path, index=index, action_group=path.split('"')[1])
-            curve.keyframe_points.add(len(frames))
-            curve.keyframe_points.foreach_set("co", [x for pair in zip(frames, values) for x in pair])
-            curve.update()
-        return action
+    With rest = T(h) R, the pose basis is T(R^T (p - h)) and the rotation by
+    the yaw about R^T z."""
+    rotation = numpy.array(rest.to_3x3())
+    head = numpy.array(rest.to_translation())
+    locations = (positions - head) @ rotation  # rows: R^T (p - h)
+    if yaws is None:
+        return locations, None
+    axis = rotation[2]  # R^T z
+    half = 0.5 * yaws
+    quaternions = numpy.column_stack((numpy.cos(half), numpy.outer(numpy.sin(half), axis)))
+    return locations, quaternions
 
 
-def _facing(feet, step) -> float:
-    """The body's facing: between the feet; in a side step, across the step's
-    direction of travel, on the side the feet point to."""
-    between = math.atan2(sum(math.sin(f.orientation) for f in feet), sum(math.cos(f.orientation) for f in feet))
-    if step is None or step.behavior.name != "SIDE_STEP":
+def _write_action(armature, name: str, frames, channels) -> bpy.types.Action:
+    """A new active action with a key at every frame: channels maps a bone
+    to its (locations, quaternions or None) arrays."""
+    action = bpy.data.actions.new(name)
+    armature.animation_data_create().action = action
+    for bone, arrays in channels.items():
+        for path, values in zip(("location", "rotation_quaternion"), arrays):
+            if values is None:
+                continue
+            for index in range(values.shape[1]):
+                curve = action.fcurves.new(f'pose.bones["{bone}"].{path}', index=index, action_group=bone)
+                curve.keyframe_points.add(len(frames))
+                curve.keyframe_points.foreach_set("co", numpy.column_stack((frames, values[:, index])).ravel())
+                curve.update()
+    return action
+
+
+def _facings(feet_yaw, steps, step_index):
+    """The body's facing per frame: between the feet; in a side step, across
+    the step's direction of travel, on the side the feet point to."""
+    between = numpy.arctan2(numpy.sin(feet_yaw).sum(axis=1), numpy.cos(feet_yaw).sum(axis=1))
+    side_step = numpy.array([s.behavior.name == "SIDE_STEP" for s in steps], dtype=bool)
+    if not side_step.any():
         return between
-    travel = math.atan2(step.com_end[1] - step.com_start[1], step.com_end[0] - step.com_start[0])
-    across = (travel + math.pi / 2, travel - math.pi / 2)
-    return min(across, key=lambda a: abs(math.remainder(a - between, 2 * math.pi)))
+    travel = numpy.array([math.atan2(s.com_end[1] - s.com_start[1], s.com_end[0] - s.com_start[0]) for s in steps])
+    index = numpy.clip(step_index, 0, len(steps) - 1)
+    across = travel[index] + math.pi / 2
+    across = numpy.where(numpy.cos(across - between) >= 0, across, across - math.pi)
+    return numpy.where((step_index >= 0) & side_step[index], across, between)
 
 
-def _locomotion(ff, agent, rest: RigRest, frames: List[float], frame_offset: float, fps: float) -> _Channels:
-    """Hips on the COM path, foot targets on the feet, poles ahead of the knees."""
-    channels = _Channels()
-    hips_rotation = _rotation(rest.hips_rest)
-    hips_z = rest.hips_rest.to_translation().z
+def _locomotion(ff, agent, rest: RigRest, frames, frame_offset: float, fps: float):
+    """Channels of the hips on the COM path, the foot targets on the feet and
+    the poles ahead of the knees, at every frame."""
+    times = (frames - frame_offset) / fps
+    count = len(times)
+    com = numpy.empty((count, 2))
+    feet_xy = numpy.empty((count, 2, 2))
+    feet_yaw = numpy.empty((count, 2))
+    lift = numpy.empty((count, 2))
+    for i, t in enumerate(times):
+        com[i] = ff.com_at(agent, t).position
+        for side, foot in enumerate(ff.feet_at(agent, t)):
+            feet_xy[i, side] = foot.position
+            feet_yaw[i, side] = foot.orientation
+            lift[i, side] = foot.lift
     steps = agent.footsteps
-    starts = [step.start_time for step in steps]
-    for frame in frames:
-        t = (frame - frame_offset) / fps
-        com = ff.com_at(agent, t).position
-        feet = ff.feet_at(agent, t)
-        index = bisect.bisect_right(starts, t) - 1
-        turn = _yaw(_facing(feet, steps[index] if index >= 0 else None) - rest.forward_yaw)
-        # The hips as high as at rest, but low enough for both legs to reach.
-        height = hips_z
-        ankles = {}
-        for (side, _suffix), foot in zip(SIDES, feet):
-            leg = rest.legs[side]
-            ankles[side] = Vector((foot.position[0], foot.position[1], leg.ankle.z + foot.lift))
-            hip_offset = turn @ (leg.thigh_head - rest.hips_rest.to_translation())
-            horizontal = (Vector(com) + hip_offset.xy - ankles[side].xy).length
-            reach = REACH * leg.length
-            rise = math.sqrt(max(reach * reach - horizontal * horizontal, 0.0))
-            height = min(height, ankles[side].z + rise - hip_offset.z)
-        channels.pose(rest.hips, rest.hips_rest, Matrix.Translation((com[0], com[1], height)) @ turn @ hips_rotation)
-        for (side, suffix), foot in zip(SIDES, feet):
-            leg = rest.legs[side]
-            foot_turn = _yaw(foot.orientation - rest.forward_yaw)
-            channels.pose(IK_FOOT.format(suffix), leg.foot_rest,
-                          Matrix.Translation(ankles[side]) @ foot_turn @ _rotation(leg.foot_rest))
-            knee = (foot_turn @ (leg.knee - leg.ankle)) + ankles[side]
-            ahead = foot_turn @ (leg.pole_rest.to_translation() - leg.knee)
-            channels.pose(POLE.format(suffix), leg.pole_rest,
-                          Matrix.Translation(knee + ahead) @ _rotation(leg.pole_rest), rotate=False)
+    step_index = numpy.searchsorted([s.start_time for s in steps], times, side="right") - 1
+    body_yaw = numpy.unwrap(_facings(feet_yaw, steps, step_index)) - rest.forward_yaw
+    hips_head = numpy.array(rest.hips_rest.to_translation())
+    cos, sin = numpy.cos(body_yaw), numpy.sin(body_yaw)
+    # The hips as high as at rest, but low enough for both legs to reach.
+    height = numpy.full(count, hips_head[2])
+    channels = {}
+    for side, (name, suffix) in enumerate(SIDES):
+        leg = rest.legs[name]
+        ankles = numpy.column_stack((feet_xy[:, side], leg.ankle.z + lift[:, side]))
+        offset = numpy.array(leg.thigh_head) - hips_head
+        hip_xy = com + numpy.column_stack((cos * offset[0] - sin * offset[1], sin * offset[0] + cos * offset[1]))
+        horizontal = numpy.linalg.norm(hip_xy - ankles[:, :2], axis=1)
+        rise = numpy.sqrt(numpy.maximum((REACH * leg.length) ** 2 - horizontal ** 2, 0.0))
+        height = numpy.minimum(height, ankles[:, 2] + rise - offset[2])
+        foot_yaw = numpy.unwrap(feet_yaw[:, side]) - rest.forward_yaw
+        channels[IK_FOOT.format(suffix)] = _pose_arrays(leg.foot_rest, ankles, foot_yaw)
+        ahead = numpy.array(leg.pole_rest.to_translation() - leg.ankle)  # the pole, seen from the ankle
+        poles = ankles + numpy.column_stack((numpy.cos(foot_yaw) * ahead[0] - numpy.sin(foot_yaw) * ahead[1],
+                                             numpy.sin(foot_yaw) * ahead[0] + numpy.cos(foot_yaw) * ahead[1],
+                                             numpy.full(count, ahead[2])))
+        channels[POLE.format(suffix)] = _pose_arrays(leg.pole_rest, poles)
+    channels[rest.hips] = _pose_arrays(rest.hips_rest, numpy.column_stack((com, height)), body_yaw)
     return channels
 
 
@@ -290,7 +292,7 @@ def apply_plan(ff, plan, rig, scene, progress: Optional[Callable[[float], None]]
     frame_offset = float(scene.frame_start)
     end_time = max((agent.end_time() for agent in plan.agents), default=0.0)
     last_frame = frame_offset + math.ceil(end_time * fps)
-    frames = [float(f) for f in range(int(frame_offset), int(last_frame) + 1)]
+    frames = numpy.arange(int(frame_offset), int(last_frame) + 1, dtype=float)
     collection = bpy.data.collections.get(CROWD_COLLECTION) or bpy.data.collections.new(CROWD_COLLECTION)
     if collection.name not in scene.collection.children:
         scene.collection.children.link(collection)
@@ -300,7 +302,8 @@ def apply_plan(ff, plan, rig, scene, progress: Optional[Callable[[float], None]]
     armatures = []
     for i, agent in enumerate(plan.agents):
         armature = _instance(agent.name, template, rig, rest, collection)
-        _locomotion(ff, agent, rest, frames, frame_offset, fps).write(armature, f"{agent.name} locomotion", frames)
+        _write_action(armature, f"{agent.name} locomotion", frames,
+                      _locomotion(ff, agent, rest, frames, frame_offset, fps))
         _upper_body(armature, agent, clips, fps, frame_offset, last_frame)
         armatures.append(armature)
         if progress:
