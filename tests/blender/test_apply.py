@@ -251,9 +251,53 @@ def test_behaviours_play_their_clips():
     check(worst_facing <= 20.0, f"the pelvis faces {worst_facing:.1f} degrees off across the way")
 
 
+def inventory():
+    kinds = ("objects", "meshes", "armatures", "actions", "collections")
+    return {kind: sorted(b.name for b in getattr(bpy.data, kind)) for kind in kinds}
+
+
+def expect_error(operator, fragment, **arguments):
+    try:
+        operator(**arguments)
+    except RuntimeError as error:
+        check(fragment in str(error), f"unexpected message: {error}")
+        return
+    raise AssertionError("no error")
+
+
+def test_failures_leave_the_scene_as_it_was():
+    from footfall.core import native
+
+    ff = native.load()
+    bpy.ops.wm.read_homefile(use_empty=True)
+    addon_utils.enable("footfall", default_set=True, handle_error=None)
+    _plan, path = doorway_plan_without_rig(ff)
+    before = inventory()
+    expect_error(bpy.ops.footfall.apply, "Import one rig first", plan_filepath=str(path))
+    expect_error(bpy.ops.footfall.apply, "No plan: run Plan first")
+    expect_error(bpy.ops.footfall.export_gltf, "Nothing to export", filepath=str(TMP / "none.glb"))
+    check(inventory() == before, "a failed operator changed the scene")
+    check(not (TMP / "none.glb").exists(), "a failed export left a file")
+    check(bpy.ops.footfall.import_rig(filepath=str(RIG)) == {"FINISHED"}, "rig import failed")
+    bad = TMP / "bad-plan.json"
+    bad.write_text(path.read_text().replace('"foot": "left"', '"foot": "middle"', 1))
+    before = inventory()
+    expect_error(bpy.ops.footfall.apply, 'footsteps[0].foot: "middle" is not one of', plan_filepath=str(bad))
+    check(inventory() == before, "a failed apply changed the scene")
+
+
+def doorway_plan_without_rig(ff):
+    from footfall.core import scenario as sc
+
+    plan = sc.plan(sc.scenario_document(sc.ScenarioInput([sc.AgentInput("ann", (0, 0), [(4, 0)])])))
+    path = TMP / "plain-plan.json"
+    ff.write_plan_file(plan, str(path))
+    return plan, path
+
+
 def main():
     tests = [test_feet_and_pelvis_follow_the_plan, test_behaviours_play_their_clips,
-             test_export_validates_and_reimports]
+             test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was]
     failed = 0
     for test in tests:
         try:
