@@ -12,13 +12,12 @@ import sys
 import addon_utils
 import bpy
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from harness import check, run  # noqa: E402
+
 ADDON_DIR = os.environ.get("FOOTFALL_ADDON_DIR", str(pathlib.Path(__file__).resolve().parents[2] / "blender_addon"))
 sys.path.insert(0, ADDON_DIR)
 
-
-def check(condition, message):
-    if not condition:
-        raise AssertionError(message)
 
 
 def test_registers_and_unregisters_cleanly():
@@ -46,19 +45,5 @@ def test_plans_a_walk_inside_blender():
     check(math.dist(end, (11.0, 0.3)) < 1.0, f"ended at {end}")
 
 
-def main():
-    tests = [test_registers_and_unregisters_cleanly, test_plans_a_walk_inside_blender]
-    failed = 0
-    for test in tests:
-        try:
-            test()
-            print(f"PASS {test.__name__}")
-        except Exception as error:  # report every test, then fail the run
-            failed += 1
-            print(f"FAIL {test.__name__}: {error!r}")
-    print(f"{len(tests) - failed} passed, {failed} failed")
-    if failed:
-        sys.exit(1)
 
-
-main()
+run([test_registers_and_unregisters_cleanly, test_plans_a_walk_inside_blender])

@@ -13,6 +13,9 @@ import tempfile
 
 import addon_utils
 import bpy
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from harness import check, run  # noqa: E402
 import mathutils
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -20,10 +23,6 @@ sys.path.insert(0, os.environ.get("FOOTFALL_ADDON_DIR", str(ROOT / "blender_addo
 TMP = pathlib.Path(tempfile.mkdtemp(prefix="footfall-apply-"))
 RIG = ROOT / "rigs" / "footfall_humanoid.glb"
 
-
-def check(condition, message):
-    if not condition:
-        raise AssertionError(message)
 
 
 def fresh_scene_with_rig():
@@ -34,11 +33,9 @@ def fresh_scene_with_rig():
 
 def doorway_plan(ff):
     """Three agents through a 1.2 m doorway, planned with the rig's parameters, as a plan file."""
-    from footfall.bridge import rig_import
     from footfall.core import character, scenario as sc
 
-    (rig,) = [o for o in bpy.data.objects if o.type == "ARMATURE"]
-    c, p = character.derive_parameters(rig_import.profile_of(rig).dimensions)
+    c, p = character.derive_parameters(imported_rig()[1].dimensions)
     walls = [sc.ObstacleInput(o.polygon, o.height) for o in ff.wall_with_door(4.0, 1.2)]
     agents = [sc.AgentInput("ann", (0, 0.2), [(8, 0.1)]), sc.AgentInput("bob", (-1.5, -0.4), [(8, -0.2)]),
               sc.AgentInput("cy", (-3, 0.5), [(7, 0.3)])]
@@ -49,20 +46,26 @@ def doorway_plan(ff):
     return plan, path
 
 
+def imported_rig():
+    """The rig imported with Footfall, and its profile."""
+    from footfall.bridge import rig_import
+
+    (rig,) = rig_import.imported_rigs()
+    return rig, rig_import.profile_of(rig)
+
+
 def evaluated(name):
     return bpy.data.objects[name].evaluated_get(bpy.context.evaluated_depsgraph_get())
 
 
 def test_feet_and_pelvis_follow_the_plan():
     from footfall.core import native
-    from footfall.bridge import rig_import
 
     ff = native.load()
     fresh_scene_with_rig()
     plan, path = doorway_plan(ff)
     check(bpy.ops.footfall.apply(plan_filepath=str(path)) == {"FINISHED"}, "apply failed")
-    (rig,) = [o for o in bpy.data.objects if o.type == "ARMATURE" and rig_import.PROFILE_PROPERTY in o]
-    profile = rig_import.profile_of(rig)
+    rig, profile = imported_rig()
     ankle_z = {side: rig.data.bones[profile.bones[side]["foot"]].head_local.z for side in ("left", "right")}
     scene = bpy.context.scene
     fps = scene.render.fps / scene.render.fps_base
@@ -115,15 +118,13 @@ def feet_now(names, profile):
 def test_export_validates_and_reimports():
     import subprocess
 
-    from footfall.bridge import rig_import
     from footfall.core import native
 
     ff = native.load()
     fresh_scene_with_rig()
     plan, path = doorway_plan(ff)
     check(bpy.ops.footfall.apply(plan_filepath=str(path)) == {"FINISHED"}, "apply failed")
-    (rig,) = [o for o in bpy.data.objects if o.type == "ARMATURE" and rig_import.PROFILE_PROPERTY in o]
-    profile = rig_import.profile_of(rig)
+    rig, profile = imported_rig()
     names = [agent.name for agent in plan.agents]
     scene = bpy.context.scene
     probe_frames = [scene.frame_start + 12, (scene.frame_start + scene.frame_end) // 2, scene.frame_end - 5]
@@ -196,15 +197,13 @@ def torso_half_width(rig, profile):
 
 
 def test_behaviours_play_their_clips():
-    from footfall.bridge import rig_import
     from footfall.core import clip_timing, native
 
     ff = native.load()
     fresh_scene_with_rig()
     plan, path = behaviour_plan(ff)
     check(bpy.ops.footfall.apply(plan_filepath=str(path)) == {"FINISHED"}, "apply failed")
-    (rig,) = [o for o in bpy.data.objects if o.type == "ARMATURE" and rig_import.PROFILE_PROPERTY in o]
-    profile = rig_import.profile_of(rig)
+    rig, profile = imported_rig()
     agent = plan.agents[0]
     scene = bpy.context.scene
     fps = scene.render.fps / scene.render.fps_base
@@ -295,22 +294,6 @@ def doorway_plan_without_rig(ff):
     return plan, path
 
 
-def main():
-    tests = [test_feet_and_pelvis_follow_the_plan, test_behaviours_play_their_clips,
-             test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was]
-    failed = 0
-    for test in tests:
-        try:
-            test()
-            print(f"PASS {test.__name__}")
-        except Exception as error:  # report every test, then fail the run
-            failed += 1
-            import traceback
-            traceback.print_exc()
-            print(f"FAIL {test.__name__}: {error!r}")
-    print(f"{len(tests) - failed} passed, {failed} failed")
-    if failed:
-        sys.exit(1)
 
-
-main()
+run([test_feet_and_pelvis_follow_the_plan, test_behaviours_play_their_clips,
+             test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was])

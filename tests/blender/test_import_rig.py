@@ -14,6 +14,9 @@ import tempfile
 import addon_utils
 import bpy
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from harness import check, run  # noqa: E402
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, os.environ.get("FOOTFALL_ADDON_DIR", str(ROOT / "blender_addon")))
 TMP = pathlib.Path(tempfile.mkdtemp(prefix="footfall-rigs-"))
@@ -75,10 +78,6 @@ def inventory():
     kinds = ("objects", "meshes", "armatures", "actions", "materials", "images", "collections")
     return {kind: sorted(b.name for b in getattr(bpy.data, kind)) for kind in kinds}
 
-
-def check(condition, message):
-    if not condition:
-        raise AssertionError(message)
 
 
 def imported_profile():
@@ -157,21 +156,7 @@ def test_project_rig_matches_its_profile():
     check(profile.bones == stored["bones"], profile.bones)
 
 
-def main():
-    tests = [test_mixamo_rig_is_detected, test_unmappable_rig_lists_bones_and_changes_nothing,
+
+run([test_mixamo_rig_is_detected, test_unmappable_rig_lists_bones_and_changes_nothing,
              test_panel_fields_complete_the_map, test_profile_beside_the_file_completes_the_map,
-             test_project_rig_matches_its_profile]
-    failed = 0
-    for test in tests:
-        try:
-            test()
-            print(f"PASS {test.__name__}")
-        except Exception as error:  # report every test, then fail the run
-            failed += 1
-            print(f"FAIL {test.__name__}: {error!r}")
-    print(f"{len(tests) - failed} passed, {failed} failed")
-    if failed:
-        sys.exit(1)
-
-
-main()
+             test_project_rig_matches_its_profile])

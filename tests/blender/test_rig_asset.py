@@ -15,6 +15,9 @@ import numpy
 numpy.bool = bool
 
 import bpy
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from harness import check, run  # noqa: E402
 from mathutils import Vector
 
 RIGS_DIR = pathlib.Path(__file__).resolve().parents[2] / "rigs"
@@ -22,10 +25,6 @@ PROFILE = json.loads((RIGS_DIR / "footfall_humanoid.json").read_text())
 SIDES = {"left": "L", "right": "R"}
 LOWER_BODY = {"hips", "thigh", "shin", "foot", "toe"}
 
-
-def check(condition, message):
-    if not condition:
-        raise AssertionError(message)
 
 
 def bone_names():
@@ -248,8 +247,8 @@ def test_dimensions_match_the_rest_pose():
     check(1.7 < height < 1.9, f"height {height:.3f} m")
 
 
-def main():
-    tests = [
+
+run([
         test_profile_format,
         test_one_armature_with_every_profile_bone,
         test_bone_hierarchy,
@@ -258,18 +257,4 @@ def main():
         test_walk_swings_the_arms,
         test_arms_in_keeps_the_hands_at_the_torso,
         test_dimensions_match_the_rest_pose,
-    ]
-    failed = 0
-    for test in tests:
-        try:
-            test()
-            print(f"PASS {test.__name__}")
-        except Exception as error:  # report every test, then fail the run
-            failed += 1
-            print(f"FAIL {test.__name__}: {error!r}")
-    print(f"{len(tests) - failed} passed, {failed} failed")
-    if failed:
-        sys.exit(1)
-
-
-main()
+    ])

@@ -14,6 +14,9 @@ import tempfile
 
 import addon_utils
 import bpy
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from harness import check, run  # noqa: E402
 from mathutils import Matrix
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -32,10 +35,6 @@ SCENARIO = {
 }
 FACINGS = {"alice": 0.3, "bob": math.atan2(1, 7)}  # bob's default: toward his first goal
 
-
-def check(condition, message):
-    if not condition:
-        raise AssertionError(message)
 
 
 def close(a, b, tolerance=1e-6):
@@ -337,20 +336,6 @@ def test_errors_leave_the_scene_as_it_was():
     check("footfall_plan.json" not in bpy.data.texts, "a failed plan stored a Text")
 
 
-def main():
-    tests = [test_load_builds_the_conventions_and_extracts_back, test_hand_made_agents_and_obstacles_are_extracted,
-             test_plan_is_stored_and_saved_with_the_file, test_errors_leave_the_scene_as_it_was]
-    failed = 0
-    for test in tests:
-        try:
-            test()
-            print(f"PASS {test.__name__}")
-        except Exception as error:  # report every test, then fail the run
-            failed += 1
-            print(f"FAIL {test.__name__}: {error!r}")
-    print(f"{len(tests) - failed} passed, {failed} failed")
-    if failed:
-        sys.exit(1)
 
-
-main()
+run([test_load_builds_the_conventions_and_extracts_back, test_hand_made_agents_and_obstacles_are_extracted,
+             test_plan_is_stored_and_saved_with_the_file, test_errors_leave_the_scene_as_it_was])

@@ -1,0 +1,27 @@
+"""Shared by the Blender background tests: a check, and a runner that reports
+every test and makes Blender exit non-zero when any fails."""
+
+import sys
+import traceback
+
+
+def check(condition, message):
+    """Fails the current test with `message` unless `condition` holds."""
+    if not condition:
+        raise AssertionError(message)
+
+
+def run(tests):
+    """Runs the test functions in order; prints PASS/FAIL each and 'N passed, M failed'."""
+    failed = 0
+    for test in tests:
+        try:
+            test()
+            print(f"PASS {test.__name__}")
+        except Exception as error:  # report every test, then fail the run
+            failed += 1
+            traceback.print_exc()
+            print(f"FAIL {test.__name__}: {error!r}")
+    print(f"{len(tests) - failed} passed, {failed} failed")
+    if failed:
+        sys.exit(1)
