@@ -19,15 +19,6 @@ sys.path.insert(0, str(ROOT / "blender_addon"))
 OUT = pathlib.Path(sys.argv[sys.argv.index("--") + 1] if "--" in sys.argv else ROOT / "out").resolve()
 
 
-def demo_document(ff):
-    from footfall.core import scenario as sc
-
-    demo = ff.demo_scenario()
-    return sc.scenario_document(sc.ScenarioInput(
-        agents=[sc.AgentInput(a.name, a.position, a.goals, a.facing) for a in demo.agents],
-        obstacles=[sc.ObstacleInput(o.polygon, o.height) for o in demo.obstacles]))
-
-
 def stage(scene, target: Vector) -> None:
     """Ground, sun, colours and a camera looking down at `target`."""
     bpy.ops.mesh.primitive_plane_add(size=40, location=(target.x, target.y, 0))
@@ -57,13 +48,14 @@ def check(result, what):
 def main():
     from footfall.bridge import rig_import, scene_build
     from footfall.core import native
+    from footfall.core.scenario import document_of
 
     ff = native.load()
     OUT.mkdir(parents=True, exist_ok=True)
     bpy.ops.wm.read_homefile(use_empty=True)
     addon_utils.enable("footfall", default_set=True, handle_error=None)
     scene = bpy.context.scene
-    scene_build.build(scene, demo_document(ff), "demo")
+    scene_build.build(scene, document_of(ff.demo_scenario()), "demo")
     check(bpy.ops.footfall.import_rig(filepath=str(ROOT / "rigs" / "footfall_humanoid.glb")), "import_rig")
     for rig in rig_import.imported_rigs():  # the template stays out of the picture
         for obj in (rig, *rig.children):

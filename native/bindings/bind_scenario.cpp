@@ -6,6 +6,7 @@
 #include "footfall/plan_io.hpp"
 #include "footfall/scenario.hpp"
 #include "footfall/scenes.hpp"
+#include "footfall/steersuite.hpp"
 
 namespace py = pybind11;
 
@@ -60,6 +61,11 @@ void bind_scenario(py::module_& m) {
   m.def("parse_scenario", &parse_scenario, py::arg("text"), py::arg("source") = "<string>",
         "Parses and validates scenario JSON; ValueError 'SOURCE: FIELD.PATH: problem'.");
   m.def("load_scenario", &load_scenario, py::arg("path"));
+  m.def("parse_steersuite", &parse_steersuite, py::arg("text"), py::arg("source") = "<string>",
+        py::arg("seed") = 1, "Reads a SteerSuite test case (XML, Y-up) as a scenario.");
+  m.def("load_steersuite", &load_steersuite, py::arg("path"), py::arg("seed") = 1);
+  m.def("load_scenario_file", &load_scenario_file, py::arg("path"),
+        "A scenario file of either kind: SteerSuite XML for .xml, Footfall JSON otherwise.");
   m.def("demo_scenario", &demo_scenario, "The built-in demo: a doorway and a box.");
   m.def("box_obstacle", &box_obstacle, py::arg("center"), py::arg("size"), py::arg("height") = 1.0);
   m.def("wall_with_door", &wall_with_door, py::arg("x"), py::arg("door_width"),

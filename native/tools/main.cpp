@@ -13,13 +13,15 @@
 #include "footfall/plan.hpp"
 #include "footfall/plan_io.hpp"
 #include "footfall/scenes.hpp"
+#include "footfall/steersuite.hpp"
 
 namespace {
 
 constexpr int kExitBadInput = 2;
 
 const char* const kUsage =
-    "usage: footfall plan SCENARIO -o PLAN    plan every agent of a scenario file\n"
+    "usage: footfall plan SCENARIO -o PLAN    plan every agent of a scenario (JSON, or SteerSuite "
+    ".xml)\n"
     "       footfall demo [-o PLAN]           plan the built-in demo (default out/demo-plan.json)\n"
     "       footfall bench [--repeat N]       time the planner on the standard workloads\n"
     "       footfall --version | --help\n";
@@ -89,7 +91,7 @@ int run(int argc, char** argv) {
     const auto positional = parse_arguments(argc, argv, output);
     if (positional.size() != 1) throw UsageError("plan takes one scenario file");
     if (output.empty()) throw UsageError("plan needs -o PLAN");
-    return plan_and_write(footfall::load_scenario(positional[0]), output);
+    return plan_and_write(footfall::load_scenario_file(positional[0]), output);
   }
   if (verb == "demo") {
     std::string output = "out/demo-plan.json";

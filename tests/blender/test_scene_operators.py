@@ -22,6 +22,7 @@ from mathutils import Matrix
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, os.environ.get("FOOTFALL_ADDON_DIR", str(ROOT / "blender_addon")))
 TMP = pathlib.Path(tempfile.mkdtemp(prefix="footfall-scenes-"))
+STEERSUITE = ROOT.parent / "shared" / "steersuite-testcases"
 
 L_SHAPE = [[2, 2], [3, 2], [3, 0], [4, 0], [4, -1], [2, -1]]  # concave, clockwise
 BOX = [[5, 3], [6, 3], [6, 4], [5, 4]]
@@ -300,10 +301,10 @@ def test_errors_leave_the_scene_as_it_was():
     check("two.json: obstacles[0].polygon: needs at least 3 points" in message, message)
     check(inventory() == before, "a 2-point polygon changed the scene")
 
-    xml = write("crowd.xml", "<SteerBenchTestCase/>")
-    message = operator_error(bpy.ops.footfall.load_scenario, filepath=xml)
-    check(message.strip().endswith(f"{xml}: SteerSuite XML scenarios are not supported yet; convert it to a Footfall "
-                           "scenario JSON (docs/file-formats.md)"), message)
+    example = str(STEERSUITE / "EXAMPLE.xml")  # a goal type Footfall does not follow
+    message = operator_error(bpy.ops.footfall.load_scenario, filepath=example)
+    check("agent 'Agent A' (agent[4]): goal type fleeDynamicTarget is not supported" in message, message)
+    check(inventory() == before, "a refused SteerSuite case changed the scene")
 
     message = operator_error(bpy.ops.footfall.load_scenario, filepath=good)
     check("good.json: agents[0].name: an object named 'alice' exists already" in message, message)
@@ -337,5 +338,19 @@ def test_errors_leave_the_scene_as_it_was():
 
 
 
+def test_steersuite_case_loads():
+    """doorway-two-way: two agents facing each other, the walls of the door (Y-up mapped to Z-up)."""
+    fresh_scene()
+    check(bpy.ops.footfall.load_scenario(filepath=str(STEERSUITE / "doorway-two-way.xml")) == {"FINISHED"},
+          "load failed")
+    agents = bpy.data.collections["Footfall Agents"]
+    a, b = bpy.data.objects["A"], bpy.data.objects["B"]
+    check(a.name in agents.objects and b.name in agents.objects, "agents missing")
+    check((a.location.x, a.location.y) == (-10, -1) and (b.location.x, b.location.y) == (10, -1),
+          f"positions {tuple(a.location)}, {tuple(b.location)}")
+    check(abs(a.rotation_euler.z) < 1e-6 and abs(abs(b.rotation_euler.z) - math.pi) < 1e-6, "facings")
+    check(len(bpy.data.collections["Footfall Obstacles"].objects) == 4, "the walls of the doorway")
+
+
 run([test_load_builds_the_conventions_and_extracts_back, test_hand_made_agents_and_obstacles_are_extracted,
-             test_plan_is_stored_and_saved_with_the_file, test_errors_leave_the_scene_as_it_was])
+     test_plan_is_stored_and_saved_with_the_file, test_errors_leave_the_scene_as_it_was, test_steersuite_case_loads])

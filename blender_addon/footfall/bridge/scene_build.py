@@ -19,7 +19,7 @@ import bmesh
 import bpy
 
 from ..core import native
-from ..core.scenario import AgentInput, ObstacleInput, ScenarioInput, parse, scenario_document
+from ..core.scenario import document_of, parse
 from . import datablocks
 from .scene_extract import (AGENTS, GOAL_INDEX, MIN_AREA, OBSTACLES, OVERRIDE_KEYS, OVERRIDES,
                             collection_in, overrides, signed_area)
@@ -39,9 +39,8 @@ def load_file(scene, path: str) -> dict:
 
     Raises ValueError "PATH: FIELD.PATH: problem" (ScenarioError for what
     the core accepts but the scene cannot hold)."""
-    if pathlib.Path(path).suffix.lower() == ".xml":
-        raise ScenarioError(f"{path}: SteerSuite XML scenarios are not supported yet; "
-                            "convert it to a Footfall scenario JSON (docs/file-formats.md)")
+    if pathlib.Path(path).suffix.lower() == ".xml":  # a SteerSuite test case, read by the core
+        return build(scene, document_of(native.load().load_steersuite(path)), path)
     native.load().load_scenario(path)  # the core's messages: malformed JSON with line and column
     with open(path, encoding="utf-8") as file:
         document = json.load(file)
@@ -83,12 +82,9 @@ def build(scene, document: dict, source: str = "<scenario>") -> dict:
 
 def _complete(scenario, document: dict) -> dict:
     """The document as the core read it: every default filled in."""
-    return scenario_document(ScenarioInput(
-        agents=[AgentInput(a.name, a.position, a.goals, a.facing) for a in scenario.agents],
-        obstacles=[ObstacleInput(o.polygon, o.height) for o in scenario.obstacles],
-        character=document.get("character", {}),
-        planner=document.get("planner", {}),
-    ))
+    complete = document_of(scenario)
+    complete.update({key: document[key] for key in ("character", "planner") if document.get(key)})
+    return complete
 
 
 def _check(document: dict, source: str) -> None:

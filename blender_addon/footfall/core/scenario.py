@@ -75,6 +75,14 @@ def scenario_document(scenario: ScenarioInput) -> dict:
     return document
 
 
+def document_of(scenario) -> dict:
+    """The document of a scenario the core has read (a native Scenario, as
+    from a SteerSuite file), its agents and obstacles; parameters at their defaults."""
+    return scenario_document(ScenarioInput(
+        agents=[AgentInput(a.name, a.position, a.goals, a.facing) for a in scenario.agents],
+        obstacles=[ObstacleInput(o.polygon, o.height) for o in scenario.obstacles]))
+
+
 def parse(document: dict, source: str = "<scene>"):
     """Validates a document with the core; returns its native Scenario.
 
