@@ -1,8 +1,8 @@
 """Benchmark: apply a plan of many agents walking for a minute, then bake and
 export it, timing each stage.
 
-Run: blender -b --factory-startup --python bench/blender_crowd.py -- [AGENTS] [SECONDS]
-(defaults 200 agents, 60 s at 24 fps).
+Run: blender -b --factory-startup --python bench/blender_crowd.py -- [AGENTS] [SECONDS] [apply-only]
+(defaults 200 agents, 60 s at 24 fps, then bake and export).
 """
 
 import math
@@ -19,6 +19,7 @@ sys.path.insert(0, str(ROOT / "blender_addon"))
 arguments = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 AGENTS = int(arguments[0]) if arguments else 200
 SECONDS = float(arguments[1]) if len(arguments) > 1 else 60.0
+EXPORT = "apply-only" not in arguments[2:]
 
 
 def main():
@@ -45,6 +46,8 @@ def main():
     bpy.ops.footfall.apply(plan_filepath=str(plan_path))
     applied = time.perf_counter() - begin
     print(f"apply {applied:.2f} s", flush=True)
+    if not EXPORT:
+        return
     begin = time.perf_counter()
     bpy.ops.footfall.export_gltf(filepath=str(folder / "crowd.glb"))
     exported = time.perf_counter() - begin

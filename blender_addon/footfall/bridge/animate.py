@@ -121,7 +121,8 @@ def rig_rest(data, profile) -> RigRest:
     return rest
 
 
-def _instance(name: str, template, rig, rest: RigRest, collection) -> bpy.types.Object:
+def _instance(name: str, template, rig, collection) -> bpy.types.Object:
+    """A new armature with its own copy of the template and the rig's meshes linked."""
     armature = bpy.data.objects.new(name, template.copy())
     armature.data.name = name
     collection.objects.link(armature)
@@ -134,7 +135,11 @@ def _instance(name: str, template, rig, rest: RigRest, collection) -> bpy.types.
             if modifier.type == "ARMATURE":
                 modifier.object = armature
         collection.objects.link(body)
-    bpy.context.view_layer.update()  # a new armature object gets its pose here
+    return armature
+
+
+def _add_controls(armature, rest: RigRest) -> None:
+    """The shins reach for the foot targets (IK with a knee pole); the feet copy their rotation."""
     for side, suffix in SIDES:
         leg = rest.legs[side]
         ik = armature.pose.bones[leg.shin].constraints.new("IK")
@@ -144,7 +149,6 @@ def _instance(name: str, template, rig, rest: RigRest, collection) -> bpy.types.
         ik.chain_count = 2
         copy = armature.pose.bones[leg.foot].constraints.new("COPY_ROTATION")
         copy.target, copy.subtarget = armature, IK_FOOT.format(suffix)
-    return armature
 
 
 def _pose_arrays(rest: Matrix, positions, yaws=None):
@@ -299,13 +303,13 @@ def apply_plan(ff, plan, rig, scene, progress: Optional[Callable[[float], None]]
     template = _template(rig, profile)
     rest = rig_rest(template, profile)
     clips = clips_of(rig, profile)
-    armatures = []
-    for i, agent in enumerate(plan.agents):
-        armature = _instance(agent.name, template, rig, rest, collection)
+    armatures = [_instance(agent.name, template, rig, collection) for agent in plan.agents]
+    bpy.context.view_layer.update()  # new armature objects get their poses here, all at once
+    for i, (agent, armature) in enumerate(zip(plan.agents, armatures)):
+        _add_controls(armature, rest)
         _write_action(armature, f"{agent.name} locomotion", frames,
                       _locomotion(ff, agent, rest, frames, frame_offset, fps))
         _upper_body(armature, agent, clips, fps, frame_offset, last_frame)
-        armatures.append(armature)
         if progress:
             progress((i + 1) / len(plan.agents))
     bpy.data.armatures.remove(template)
