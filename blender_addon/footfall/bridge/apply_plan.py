@@ -22,13 +22,13 @@ def _plan(ff, plan_filepath: str):
             raise ApplyError(str(error)) from error
     from . import plan_store
 
-    text = plan_store.load()
-    if text is None:
-        raise ApplyError("No plan: run Plan first, or give a plan file")
     try:
-        return ff.parse_plan(text, plan_store.TEXT_NAME)
+        plan = plan_store.load_plan()
     except ValueError as error:
         raise ApplyError(str(error)) from error
+    if plan is None:
+        raise ApplyError("No plan: run Plan first, or give a plan file")
+    return plan
 
 
 def _rig(name: str):

@@ -11,14 +11,14 @@ from ..core import native
 
 
 class FOOTFALL_OT_load_scenario(bpy.types.Operator, ImportHelper):
-    """Add the obstacles and agents of a Footfall scenario file to the scene"""
+    """Add the obstacles and agents of a Footfall scenario file (or a SteerSuite test case) to the scene"""
 
     bl_idname = "footfall.load_scenario"
     bl_label = "Load Scenario"
     bl_options = {"REGISTER", "UNDO"}
 
     filename_ext = ".json"
-    filter_glob: bpy.props.StringProperty(default="*.json", options={"HIDDEN"})
+    filter_glob: bpy.props.StringProperty(default="*.json;*.xml", options={"HIDDEN"})
 
     def execute(self, context):
         from ..bridge import scene_build
