@@ -93,6 +93,39 @@ def test_feet_and_pelvis_follow_the_plan():
     check(worst_pelvis <= 0.02, f"the pelvis is {worst_pelvis * 100:.2f} cm off the COM")
 
 
+def test_arms_swing_opposite_to_the_legs():
+    """At each right heel strike of a walk the left hand is ahead of the right, and the other way round."""
+    from footfall.core import native
+
+    ff = native.load()
+    fresh_scene_with_rig()
+    plan, path = doorway_plan(ff)
+    check(bpy.ops.footfall.apply(plan_filepath=str(path)) == {"FINISHED"}, "apply failed")
+    rig, profile = imported_rig()
+    hips_rest = rig.data.bones[profile.bones["hips"]].matrix_local
+    scene = bpy.context.scene
+    fps = scene.render.fps / scene.render.fps_base
+    agent = plan.agents[0]
+    walks = [s for s in agent.footsteps if s.kind == ff.StepKind.WALK][2:-2]  # past the start, before the stop
+    checked = 0
+    for step in walks:
+        frame = scene.frame_start + step.start_time * fps
+        scene.frame_set(int(frame), subframe=frame % 1)
+        armature = evaluated(agent.name)
+        hips = armature.pose.bones[profile.bones["hips"]]
+        body = (armature.matrix_world @ hips.matrix @ hips_rest.inverted()).inverted()
+        ahead = {}
+        for side in ("left", "right"):
+            hand = armature.pose.bones[profile.bones[side]["hand"]]
+            ahead[side] = -(body @ (armature.matrix_world @ hand.tail)).y  # the rig faces -Y at rest
+        leading = "left" if step.foot == ff.Foot.RIGHT else "right"
+        other = "right" if leading == "left" else "left"
+        check(ahead[leading] > ahead[other] + 0.05,
+              f"at the {step.foot.name.lower()} heel strike at {step.start_time:.2f} s the {leading} hand is not ahead: {ahead}")
+        checked += 1
+    check(checked >= 8, f"only {checked} heel strikes checked")
+
+
 def glb_json(path):
     """The JSON chunk of a .glb file."""
     import struct
@@ -295,5 +328,5 @@ def doorway_plan_without_rig(ff):
 
 
 
-run([test_feet_and_pelvis_follow_the_plan, test_behaviours_play_their_clips,
+run([test_feet_and_pelvis_follow_the_plan, test_arms_swing_opposite_to_the_legs, test_behaviours_play_their_clips,
              test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was])

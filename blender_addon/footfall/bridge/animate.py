@@ -242,9 +242,15 @@ def _locomotion(ff, agent, rest: RigRest, frames, frame_offset: float, fps: floa
 
 
 def _make_cyclic(action) -> None:
+    """Loops the clip, and spans two cycles: a strip plays a one-cycle window
+    that may start anywhere in the first, and NLA strips hold an action's last
+    value past its frame range instead of letting the Cycles modifier go on."""
+    first, last = action.curve_frame_range
     for curve in action.fcurves:
         if not any(m.type == "CYCLES" for m in curve.modifiers):
             curve.modifiers.new("CYCLES")
+    action.use_frame_range = True
+    action.frame_start, action.frame_end = first, last + (last - first)
 
 
 def _upper_body(armature, agent, clips: Dict[str, bpy.types.Action], fps: float, frame_offset: float,
@@ -258,7 +264,7 @@ def _upper_body(armature, agent, clips: Dict[str, bpy.types.Action], fps: float,
         track.name = f"Footfall upper body {label}"
     for i, section in enumerate(sections):
         action = clips[section.behavior]
-        first, last = action.frame_range
+        first, last = action.curve_frame_range  # one cycle: the clip's keys
         # Neighbouring strips overlap by the blend time; the last plays to the scene's end.
         lead = BLEND_SECONDS if i > 0 else 0.0
         tail = BLEND_SECONDS if i < len(sections) - 1 else (last_frame - frame_offset) / fps - section.end
