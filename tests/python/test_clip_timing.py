@@ -1,8 +1,18 @@
 """Upper-body clip timing: sections of one behaviour, clips phased to steps."""
 
+import math
+
 import pytest
 
-from footfall.core.clip_timing import Step, clip_frame_at, sections, strip_timing
+from footfall.core.clip_timing import Step, sections, strip_timing
+
+
+def clip_frame_at(timing, frame, clip_start):
+    """The frame of the cyclic clip (starting at clip_start) that a strip
+    plays at scene frame `frame`, as Blender's NLA maps it."""
+    local = (frame - timing.frame_start) / timing.scale
+    cycle = timing.action_frame_end - timing.action_frame_start
+    return clip_start + math.fmod(timing.action_frame_start - clip_start + local, cycle)
 
 
 def walk(n, start=0.0, duration=0.5, first="left", behavior="walk"):

@@ -8,7 +8,6 @@ the clips' convention) falls on a right heel strike: arms swing opposite to
 the legs. A stop and standing still play "idle".
 """
 
-import math
 from dataclasses import dataclass
 from typing import List, Sequence
 
@@ -95,11 +94,3 @@ def strip_timing(section: Section, clip_start: float, clip_end: float, fps: floa
         scale=scale,
         repeat=repeat,
     )
-
-
-def clip_frame_at(timing: StripTiming, frame: float, clip_start: float) -> float:
-    """The frame of the cyclic clip (starting at clip_start) that a strip
-    plays at scene frame `frame`."""
-    local = (frame - timing.frame_start) / timing.scale
-    cycle = timing.action_frame_end - timing.action_frame_start
-    return clip_start + math.fmod(timing.action_frame_start - clip_start + local, cycle)
