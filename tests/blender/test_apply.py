@@ -126,6 +126,24 @@ def test_arms_swing_opposite_to_the_legs():
     check(checked >= 8, f"only {checked} heel strikes checked")
 
 
+def test_applying_again_replaces_the_crowd():
+    from footfall.bridge import animate
+    from footfall.core import native
+
+    ff = native.load()
+    fresh_scene_with_rig()
+    plan, path = doorway_plan(ff)
+    for _ in range(2):
+        check(bpy.ops.footfall.apply(plan_filepath=str(path)) == {"FINISHED"}, "apply failed")
+    crowd = bpy.data.collections[animate.CROWD_COLLECTION]
+    names = sorted(o.name for o in crowd.objects if o.type == "ARMATURE")
+    check(names == sorted(a.name for a in plan.agents), f"agents after a second apply: {names}")
+    check(len(crowd.objects) == 2 * len(plan.agents), f"{len(crowd.objects)} objects in the crowd")
+    locomotion = [a for a in bpy.data.actions if a.name.endswith("locomotion")]
+    check(len(locomotion) == len(plan.agents), f"{len(locomotion)} locomotion actions")
+    check(not [o for o in bpy.data.objects if "(replaced)" in o.name], "replaced agents were left")
+
+
 def glb_json(path):
     """The JSON chunk of a .glb file."""
     import struct
@@ -329,4 +347,5 @@ def doorway_plan_without_rig(ff):
 
 
 run([test_feet_and_pelvis_follow_the_plan, test_arms_swing_opposite_to_the_legs, test_behaviours_play_their_clips,
-             test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was])
+     test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was,
+     test_applying_again_replaces_the_crowd])

@@ -44,8 +44,21 @@ def _rig(name: str):
     return rigs[0]
 
 
+def _remove(objects) -> None:
+    """Removes agents made by an earlier apply: objects, armatures, locomotion
+    actions (the meshes stay: they are the rig's)."""
+    for obj in objects:
+        data = obj.data if obj.type == "ARMATURE" else None
+        action = obj.animation_data.action if obj.animation_data else None
+        bpy.data.objects.remove(obj)
+        for block, blocks in ((data, bpy.data.armatures), (action, bpy.data.actions)):
+            if block is not None and block.users == 0:
+                blocks.remove(block)
+
+
 def run(context, plan_filepath: str = "", rig_name: str = ""):
-    """Animates the plan on instances of the rig; returns their armatures."""
+    """Animates the plan on instances of the rig, replacing the agents of an
+    earlier apply once the new ones are made; returns their armatures."""
     ff = native.load()
     plan = _plan(ff, plan_filepath)
     if not plan.agents:
@@ -53,13 +66,28 @@ def run(context, plan_filepath: str = "", rig_name: str = ""):
     rig = _rig(rig_name)
     if context.object is not None and context.object.mode != "OBJECT":
         bpy.ops.object.mode_set(mode="OBJECT")
+    crowd = bpy.data.collections.get(animate.CROWD_COLLECTION)
+    objects = list(crowd.objects) if crowd else []
+    # Frees the agents' names (objects, armatures, actions) for the new instances.
+    renamed = {}
+    for obj in objects:
+        for block in (obj, obj.data if obj.type == "ARMATURE" else None,
+                      obj.animation_data.action if obj.animation_data else None):
+            if block is not None and block not in renamed:
+                renamed[block] = block.name
+                block.name += " (replaced)"
     before = datablocks.snapshot()
     window_manager = context.window_manager
     window_manager.progress_begin(0, 100)
     try:
-        return animate.apply_plan(ff, plan, rig, context.scene, lambda f: window_manager.progress_update(int(100 * f)))
+        armatures = animate.apply_plan(ff, plan, rig, context.scene,
+                                       lambda f: window_manager.progress_update(int(100 * f)))
     except Exception:
         datablocks.remove_new(before)
+        for block, name in renamed.items():
+            block.name = name
         raise
     finally:
         window_manager.progress_end()
+    _remove(objects)
+    return armatures

@@ -35,7 +35,8 @@ class FOOTFALL_OT_import_rig(bpy.types.Operator, ImportHelper):
 
 
 class FOOTFALL_OT_apply(bpy.types.Operator):
-    """Animate one instance of the imported rig per agent, from the stored plan or a plan file"""
+    """Animate one instance of the imported rig per agent, from the stored plan or a plan file,
+    replacing the agents of an earlier Apply"""
 
     bl_idname = "footfall.apply"
     bl_label = "Apply Plan"
@@ -50,10 +51,11 @@ class FOOTFALL_OT_apply(bpy.types.Operator):
 
     def execute(self, context):
         from ..bridge import animate, apply_plan
+        from ..core.native import CoreMissingError
 
         try:
             armatures = apply_plan.run(context, self.plan_filepath, self.rig)
-        except apply_plan.ApplyError as error:
+        except (apply_plan.ApplyError, CoreMissingError) as error:
             self.report({"ERROR"}, str(error))
             return {"CANCELLED"}
         self.report({"INFO"}, f"Animated {len(armatures)} agents in '{animate.CROWD_COLLECTION}'")
