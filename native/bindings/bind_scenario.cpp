@@ -2,6 +2,7 @@
 #include <optional>
 
 #include "bindings.hpp"
+#include "footfall/metrics.hpp"
 #include "footfall/plan.hpp"
 #include "footfall/plan_io.hpp"
 #include "footfall/scenario.hpp"
@@ -85,6 +86,26 @@ void bind_scenario(py::module_& m) {
         "Plans every agent, without holding the GIL. progress(fraction) is called at most a few "
         "times a second; a set CancelFlag stops the run (status CANCELLED).");
   m.def("plan_to_json", &plan_to_json, py::arg("plan"));
+
+  py::class_<AgentMetrics>(m, "AgentMetrics", "One agent's figures (see metrics.hpp).")
+      .def_readonly("name", &AgentMetrics::name)
+      .def_readonly("reached", &AgentMetrics::reached)
+      .def_readonly("time", &AgentMetrics::time)
+      .def_readonly("path_length", &AgentMetrics::path_length)
+      .def_readonly("effort", &AgentMetrics::effort)
+      .def_readonly("overlaps", &AgentMetrics::overlaps)
+      .def_readonly("collision_episodes", &AgentMetrics::collision_episodes)
+      .def_readonly("energy", &AgentMetrics::energy)
+      .def_readonly("acceleration", &AgentMetrics::acceleration);
+  py::class_<PlanMetrics>(m, "PlanMetrics", "A plan's figures, SteerBench's composites among them.")
+      .def_readonly("agents", &PlanMetrics::agents)
+      .def_readonly("rate", &PlanMetrics::rate)
+      .def_readonly("composite01", &PlanMetrics::composite01)
+      .def_readonly("composite02", &PlanMetrics::composite02)
+      .def_readonly("overlaps", &PlanMetrics::overlaps);
+  m.def("measure_plan", &measure_plan, py::arg("plan"), py::arg("rate") = 20.0,
+        py::call_guard<py::gil_scoped_release>(),
+        "Our figures and SteerBench's, sampled at `rate` Hz.");
   m.def("parse_plan", &parse_plan, py::arg("text"), py::arg("source") = "<string>");
   m.def("load_plan", &load_plan, py::arg("path"));
   m.def("write_plan_file", &write_plan_file, py::arg("plan"), py::arg("path"),

@@ -2,6 +2,9 @@
 // readers and writers cannot disagree.
 #pragma once
 
+#include <vector>
+
+#include "footfall/obstacles.hpp"
 #include "footfall/params.hpp"
 #include "json_reader.hpp"
 
@@ -52,6 +55,8 @@ inline constexpr DoubleField<PlannerParams> kPlannerFields[] = {
 void read_character(const Json& json, const std::string& path, CharacterParams& params);
 /// Applies the overrides in `json` to `params`.
 void read_planner(const Json& json, const std::string& path, PlannerParams& params);
+/// The "obstacles" array of a scenario or plan (its shape; ObstacleMap checks the values).
+std::vector<Obstacle> read_obstacles(const Json& json);
 /// All character parameters as JSON.
 Json character_to_json(const CharacterParams& params);
 

@@ -33,6 +33,7 @@ Plan plan_scenario(const Scenario& scenario, const RunControl& control) {
   const FootstepPlanner planner(scenario.character, scenario.planner, obstacles);
   Plan plan;
   plan.character = scenario.character;
+  plan.obstacles = scenario.obstacles;
   auto last_report = std::chrono::steady_clock::now();
   for (size_t i = 0; i < scenario.agents.size(); ++i) {
     if (control.cancelled()) {

@@ -180,8 +180,12 @@ AgentPlan read_agent(const Json& json, const std::string& path, const CharacterP
 
 Plan read_plan(const Json& root) {
   expect_header(root, "footfall-plan", 1);
-  expect_object(root, "", {"format", "version", "character", "agents", "stats"});
+  expect_object(root, "", {"format", "version", "character", "obstacles", "agents", "stats"});
   Plan plan;
+  if (root.contains("obstacles")) {
+    plan.obstacles = read_obstacles(root["obstacles"]);
+    ObstacleMap checked(plan.obstacles);  // the same checks as a scenario's obstacles
+  }
   if (root.contains("character")) read_character(root["character"], "character", plan.character);
   validate(plan.character, "character");
   // The top-level stats are derived when writing; read, they must only be an object.
@@ -207,10 +211,17 @@ std::string plan_to_json(const Plan& plan) {
     expanded += agent.nodes_expanded;
     reached += agent.status == AgentStatus::kReached ? 1 : 0;
   }
+  Json obstacles = Json::array();
+  for (const Obstacle& obstacle : plan.obstacles) {
+    Json polygon = Json::array();
+    for (const Vec2 p : obstacle.polygon) polygon.push_back(to_json(p));
+    obstacles.push_back({{"polygon", std::move(polygon)}, {"height", obstacle.height}});
+  }
   const Json root{
       {"format", "footfall-plan"},
       {"version", 1},
       {"character", character_to_json(plan.character)},
+      {"obstacles", std::move(obstacles)},
       {"agents", std::move(agents)},
       {"stats",
        {{"status", to_string(plan.status)},

@@ -97,6 +97,26 @@ void read_planner(const Json& json, const std::string& path, PlannerParams& para
   }
 }
 
+std::vector<Obstacle> read_obstacles(const Json& json) {
+  std::vector<Obstacle> result;
+  const Json& obstacles = array(json, "obstacles");
+  for (size_t i = 0; i < obstacles.size(); ++i) {
+    const std::string path = item("obstacles", i);
+    expect_object(obstacles[i], path, {"polygon", "height"});
+    Obstacle obstacle;
+    const std::string polygon_path = child(path, "polygon");
+    const Json& polygon = array(require(obstacles[i], path, "polygon"), polygon_path);
+    for (size_t k = 0; k < polygon.size(); ++k) {
+      obstacle.polygon.push_back(point(polygon[k], item(polygon_path, k)));
+    }
+    if (obstacles[i].contains("height")) {
+      obstacle.height = number(obstacles[i]["height"], child(path, "height"));
+    }
+    result.push_back(std::move(obstacle));
+  }
+  return result;
+}
+
 Json character_to_json(const CharacterParams& params) {
   Json json = fields_to_json(kCharacterFields, params);
   json["left"] = fields_to_json(kFootLimitFields, params.left);
@@ -155,21 +175,7 @@ Scenario read_scenario(const Json& root) {
   expect_header(root, "footfall-scenario", 1);
   expect_object(root, "", {"format", "version", "obstacles", "agents", "character", "planner"});
   Scenario scenario;
-  if (root.contains("obstacles")) {
-    const Json& obstacles = array(root["obstacles"], "obstacles");
-    for (size_t i = 0; i < obstacles.size(); ++i) {
-      const std::string path = item("obstacles", i);
-      expect_object(obstacles[i], path, {"polygon", "height"});
-      Obstacle obstacle;
-      const std::string polygon_path = child(path, "polygon");
-      const Json& polygon = array(require(obstacles[i], path, "polygon"), polygon_path);
-      for (size_t k = 0; k < polygon.size(); ++k)
-        obstacle.polygon.push_back(point(polygon[k], item(polygon_path, k)));
-      if (obstacles[i].contains("height"))
-        obstacle.height = number(obstacles[i]["height"], child(path, "height"));
-      scenario.obstacles.push_back(std::move(obstacle));
-    }
-  }
+  if (root.contains("obstacles")) scenario.obstacles = read_obstacles(root["obstacles"]);
   if (root.contains("agents")) {
     const Json& agents = array(root["agents"], "agents");
     for (size_t i = 0; i < agents.size(); ++i) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bench_command.hpp"
+#include "footfall/metrics.hpp"
 #include "footfall/plan.hpp"
 #include "footfall/plan_io.hpp"
 #include "footfall/scenes.hpp"
@@ -23,6 +24,7 @@ const char* const kUsage =
     "usage: footfall plan SCENARIO -o PLAN    plan every agent of a scenario (JSON, or SteerSuite "
     ".xml)\n"
     "       footfall demo [-o PLAN]           plan the built-in demo (default out/demo-plan.json)\n"
+    "       footfall metrics PLAN             our figures and SteerBench's, per agent, at 20 Hz\n"
     "       footfall bench [--repeat N]       time the planner on the standard workloads\n"
     "       footfall --version | --help\n";
 
@@ -45,6 +47,24 @@ void print_table(const footfall::Plan& plan, std::ostream& out) {
         << agent.total_cost() << std::setw(10) << agent.searches << std::setw(10)
         << agent.nodes_expanded << "\n";
   }
+}
+
+void print_metrics(const footfall::PlanMetrics& metrics, std::ostream& out) {
+  out << std::left << std::setw(14) << "agent" << std::setw(9) << "reached" << std::right
+      << std::setw(9) << "time [s]" << std::setw(10) << "path [m]" << std::setw(11) << "effort [J]"
+      << std::setw(10) << "overlaps" << std::setw(11) << "episodes" << std::setw(10) << "energy"
+      << std::setw(13) << "acceleration"
+      << "\n";
+  for (const footfall::AgentMetrics& m : metrics.agents) {
+    out << std::left << std::setw(14) << m.name << std::setw(9) << (m.reached ? "yes" : "no")
+        << std::right << std::fixed << std::setprecision(2) << std::setw(9) << m.time
+        << std::setw(10) << m.path_length << std::setprecision(1) << std::setw(11) << m.effort
+        << std::setw(10) << m.overlaps << std::setw(11) << m.collision_episodes << std::setw(10)
+        << m.energy << std::setw(13) << m.acceleration << "\n";
+  }
+  out << std::setprecision(2) << "five-circle overlaps: " << metrics.overlaps << "\n"
+      << "SteerBench (" << metrics.rate << " Hz): composite01 " << metrics.composite01
+      << ", composite02 " << metrics.composite02 << "\n";
 }
 
 // Plans, writes the plan atomically (creating the folder), prints the table.
@@ -97,6 +117,13 @@ int run(int argc, char** argv) {
     std::string output = "out/demo-plan.json";
     if (!parse_arguments(argc, argv, output).empty()) throw UsageError("demo takes no file");
     return plan_and_write(footfall::demo_scenario(), output);
+  }
+  if (verb == "metrics") {
+    std::string output;
+    const auto positional = parse_arguments(argc, argv, output);
+    if (positional.size() != 1 || !output.empty()) throw UsageError("metrics takes one plan file");
+    print_metrics(footfall::measure_plan(footfall::load_plan(positional[0])), std::cout);
+    return 0;
   }
   if (verb == "bench") {
     int repeat = 20;

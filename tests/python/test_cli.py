@@ -71,3 +71,14 @@ def test_bench_prints_every_workload(cli):
     assert result.returncode == 0, result.stderr
     for workload in ("open 10 m", "around a box", "0.7 m door", "field of 700 boxes"):
         assert workload in result.stdout
+
+
+def test_metrics_of_the_demo(cli, tmp_path):
+    plan = tmp_path / "demo.json"
+    assert run(cli, "demo", "-o", str(plan)).returncode == 0
+    result = run(cli, "metrics", str(plan))
+    assert result.returncode == 0, result.stderr
+    assert "five-circle overlaps: 0" in result.stdout
+    assert "composite01" in result.stdout and "walker" in result.stdout
+    missing = run(cli, "metrics", str(tmp_path / "none.json"))
+    assert missing.returncode == 2 and "cannot open the file" in missing.stderr

@@ -135,3 +135,12 @@ def test_planning_releases_the_gil(ff):
         done.set()
         counter.join()
     assert len(ticks) > 100
+
+
+def test_measure_plan(ff):
+    metrics = ff.measure_plan(ff.plan_scenario(ff.demo_scenario()))
+    (walker,) = metrics.agents
+    assert walker.reached and walker.overlaps == 0 and walker.collision_episodes == 0
+    assert metrics.composite02 == pytest.approx(metrics.composite01 + walker.acceleration)
+    with pytest.raises(ValueError, match="rate"):
+        ff.measure_plan(ff.plan_scenario(ff.demo_scenario()), 0.0)

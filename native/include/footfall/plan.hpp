@@ -14,6 +14,7 @@ namespace footfall {
 struct Plan {
   std::vector<AgentPlan> agents;     ///< One per scenario agent, in the same order.
   CharacterParams character;         ///< The character the plan was made for.
+  std::vector<Obstacle> obstacles;   ///< The scenario's static obstacles, for measuring the plan.
   Status status = Status::kSuccess;  ///< kCancelled if the run was stopped.
 };
 

@@ -1,0 +1,71 @@
+// Measuring plans: our five-circle overlaps and SteerBench's figures.
+#include <gtest/gtest.h>
+
+#include "footfall/metrics.hpp"
+#include "footfall/plan_io.hpp"
+#include "footfall/scenes.hpp"
+
+namespace footfall {
+namespace {
+
+TEST(Metrics, AValidWalkHasNoOverlapsAndSteerBenchFigures) {
+  const Plan plan = plan_scenario(demo_scenario());
+  const PlanMetrics metrics = measure_plan(plan);
+  ASSERT_EQ(metrics.agents.size(), 1u);
+  const AgentMetrics& m = metrics.agents[0];
+  EXPECT_TRUE(m.reached);
+  EXPECT_EQ(m.overlaps, 0);
+  EXPECT_EQ(m.collision_episodes, 0);
+  EXPECT_DOUBLE_EQ(m.time, plan.agents[0].end_time());
+  EXPECT_DOUBLE_EQ(m.effort, plan.agents[0].total_cost());
+  EXPECT_GT(m.path_length, 11.0);  // start to goal is 11.0 m; the walk sways and detours
+  EXPECT_LT(m.path_length, 13.0);
+  // Energy: half the squared speed per sample, walking at 0.8 to 1.7 m/s.
+  const double samples = m.time * metrics.rate;
+  EXPECT_GT(m.energy, 0.5 * 0.8 * 0.8 * samples * 0.8);
+  EXPECT_LT(m.energy, 0.5 * 1.7 * 1.7 * samples);
+  EXPECT_GT(m.acceleration, 0.0);
+  EXPECT_DOUBLE_EQ(metrics.composite01, 50.0 * 0 + m.time + m.energy);
+  EXPECT_DOUBLE_EQ(metrics.composite02, metrics.composite01 + m.acceleration);
+}
+
+TEST(Metrics, AgentsWalkingThroughEachOtherCollide) {
+  // Head-on, on one line: the agents do not yet read each other's plans.
+  Scenario scenario;
+  scenario.agents.push_back({"a", {0, 0}, 0, {{8, 0}}});
+  scenario.agents.push_back({"b", {8, 0}, 3.14159265358979, {{0, 0}}});
+  const PlanMetrics metrics = measure_plan(plan_scenario(scenario));
+  for (const AgentMetrics& m : metrics.agents) {
+    EXPECT_GE(m.collision_episodes, 1) << m.name;
+    EXPECT_GT(m.overlaps, 0) << m.name;
+  }
+  EXPECT_EQ(metrics.overlaps, metrics.agents[0].overlaps + metrics.agents[1].overlaps);
+  EXPECT_NEAR(
+      metrics.composite01,
+      50.0 * (metrics.agents[0].collision_episodes + metrics.agents[1].collision_episodes) / 2 +
+          (metrics.agents[0].time + metrics.agents[1].time) / 2 +
+          (metrics.agents[0].energy + metrics.agents[1].energy) / 2,
+      1e-9);
+}
+
+TEST(Metrics, AnObstacleOnThePathIsOneEpisode) {
+  // Planned in the open, measured with a post in the way.
+  Scenario open;
+  open.agents.push_back({"a", {0, 0}, 0, {{8, 0}}});
+  Plan plan = plan_scenario(open);
+  plan.obstacles.push_back(box_obstacle({4, 0}, {0.1, 0.1}));
+  const AgentMetrics m = measure_plan(plan).agents[0];
+  EXPECT_EQ(m.collision_episodes, 1);
+  EXPECT_GT(m.overlaps, 0);
+}
+
+TEST(Metrics, PlanFilesKeepTheirObstacles) {
+  const Plan plan = plan_scenario(demo_scenario());
+  const Plan read = parse_plan(plan_to_json(plan));
+  ASSERT_EQ(read.obstacles.size(), plan.obstacles.size());
+  EXPECT_EQ(read.obstacles[2].polygon[1], plan.obstacles[2].polygon[1]);
+  EXPECT_THROW(measure_plan(plan, 0.0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace footfall
