@@ -39,12 +39,15 @@ void bind_planner(py::module_& m) {
            py::arg("character"), py::arg("planner"), py::arg("obstacles"),
            py::keep_alive<1, 4>())  // the planner refers to the obstacle map
       .def("plan", &FootstepPlanner::plan, py::arg("start"), py::arg("goal"),
-           py::call_guard<py::gil_scoped_release>())
+           py::arg("others") = MovingObstacles{}, py::call_guard<py::gil_scoped_release>(),
+           "Best-first search; `others`: agent plans to keep clear of as moving obstacles.")
       .def("heuristic", &FootstepPlanner::heuristic, py::arg("state"), py::arg("goal"))
       .def("expected_step_cost", &FootstepPlanner::expected_step_cost)
       .def("expected_step_length", &FootstepPlanner::expected_step_length)
-      .def("collides", py::overload_cast<const Footstep&>(&FootstepPlanner::collides, py::const_),
-           py::arg("step"))
+      .def("collides",
+           py::overload_cast<const Footstep&, const MovingObstacles&>(&FootstepPlanner::collides,
+                                                                      py::const_),
+           py::arg("step"), py::arg("others") = MovingObstacles{})
       .def("collides",
            py::overload_cast<const FootstepState&>(&FootstepPlanner::collides, py::const_),
            py::arg("state"));

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "footfall/plan.hpp"
 #include "footstep_shape.hpp"
 
 namespace footfall {
@@ -20,6 +21,13 @@ constexpr double kCellPosition = 0.04;
 constexpr double kCellHeading = 4.0 * kPi / 180.0;
 constexpr double kCellSpeed = 0.1;
 constexpr double kDuplicateTurn = 1e-3;  // [rad] goal-directed turn equal to a tabled one
+// Agents whose COMs are further apart cannot touch: every circle lies within
+// a stride and a foot of its COM. [m]
+constexpr double kNearAgent = 3.0;
+
+bool circles_touch(const Circle& a, const Circle& b) {
+  return distance(a.center, b.center) <= a.radius + b.radius;
+}
 
 std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, Foot last_foot) {
   // Clamped before the conversion, so that far-away coordinates stay defined.
@@ -191,8 +199,9 @@ bool FootstepPlanner::collides(const FootstepState& state) const {
   return false;
 }
 
-bool FootstepPlanner::collides(const Footstep& step) const {
-  if (obstacles_.overlaps({step.foot_position, character_.foot_radius})) return true;
+bool FootstepPlanner::collides(const Footstep& step, const MovingObstacles& others) const {
+  const Circle foot{step.foot_position, character_.foot_radius};
+  if (obstacles_.overlaps(foot)) return true;
   const double spacing = params_.collision_sample_spacing;
   const double pad = 0.5 * spacing;
   // The whole step's COM lies within half the chord plus the sway of the chord
@@ -204,32 +213,49 @@ bool FootstepPlanner::collides(const Footstep& step) const {
   thread_local std::vector<int> near;
   near.clear();
   obstacles_.gather(bound, near);
-  if (near.empty()) return false;
+  if (near.empty() && others.empty()) return false;
   // Samples no further apart along the COM path than `spacing`: the path is
   // never longer than speed * time between samples, where the COM speed of a
   // walking step is at most its speed at either end.
   const double top_speed = std::max(length(step.com_velocity_start), length(step.com_velocity_end));
   const int samples =
       std::max(1, static_cast<int>(std::ceil(top_speed * step.duration() / spacing)));
+  const double dt = step.duration() / samples;
   for (int i = 0; i <= samples; ++i) {
-    const double t = step.start_time + step.duration() * i / samples;
-    for (const Circle& circle :
-         torso_circles(com_at(step, t).position, step.phi, character_, pad)) {
+    const double t = step.start_time + dt * i;
+    const Vec2 com = com_at(step, t).position;
+    const auto torso = torso_circles(com, step.phi, character_, pad);
+    for (const Circle& circle : torso) {
       if (obstacles_.first_overlap(circle, near) >= 0) return true;
+    }
+    for (const AgentPlan* other : others) {
+      const ComSample them = com_at(*other, t);
+      if (distance(com, them.position) > kNearAgent) continue;
+      // Both move between samples: their circles are grown by half their travel.
+      const double their_pad = 0.5 * length(them.velocity) * dt;
+      for (Circle theirs : collision_circles(*other, character_, t)) {
+        theirs.radius += their_pad;
+        if (circles_touch(foot, theirs)) return true;
+        for (const Circle& circle : torso) {
+          if (circles_touch(circle, theirs)) return true;
+        }
+      }
     }
   }
   return false;
 }
 
-StepResult FootstepPlanner::stop_step(const FootstepState& state, double duration) const {
+StepResult FootstepPlanner::stop_step(const FootstepState& state, double duration,
+                                      const MovingObstacles& others) const {
   StepResult stop = create_footstep(
       state, {StepKind::kStop, other(state.last_foot), state.facing, 0.0, duration}, character_);
-  if (stop.valid() && collides(stop.step)) stop.validity = StepValidity::kCollides;
+  if (stop.valid() && collides(stop.step, others)) stop.validity = StepValidity::kCollides;
   return stop;
 }
 
-StepResult FootstepPlanner::stop_step(const FootstepState& state) const {
-  return stop_step(state, params_.stop_duration);
+StepResult FootstepPlanner::stop_step(const FootstepState& state,
+                                      const MovingObstacles& others) const {
+  return stop_step(state, params_.stop_duration, others);
 }
 
 // The step that led to node `index`, rebuilt from its parent exactly as it was
@@ -314,7 +340,8 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
       StepKind::kStop, stop_foot, state.facing, 0.0, 0.0, params_.stop_duration, state.facing);
 }
 
-SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal) const {
+SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
+                                   const MovingObstacles& others) const {
   if (!in_world(start.com) || !is_finite(start.com_velocity) || !std::isfinite(start.facing) ||
       !in_world(start.feet[0]) || !in_world(start.feet[1]) || !std::isfinite(start.time)) {
     throw std::invalid_argument("start: the state must be finite and within 1e9 m of the origin");
@@ -349,7 +376,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal) const 
     const int current = search.pop();
     // Collisions are checked lazily, when a node is taken off the open list:
     // most generated nodes are never expanded.
-    if (current != 0 && collides(step_to(search, current).step)) continue;
+    if (current != 0 && collides(step_to(search, current).step, others)) continue;
     ++result.nodes_expanded;
     if (distance(search.nodes[current].state.com, goal) <= params_.goal_tolerance) {
       goal_node = current;
@@ -372,7 +399,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal) const 
                      [&](int a, int b) { return nodes[a].h < nodes[b].h; });
     for (const int candidate : closed) {
       if (!start.standing() || nodes[candidate].h < nodes[0].h) {
-        if (stop_step(nodes[candidate].state).valid()) {
+        if (stop_step(nodes[candidate].state, others).valid()) {
           end = candidate;
           break;
         }
@@ -380,7 +407,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal) const 
     }
     // Nothing better than the start: a standing character waits.
     if (end < 0) {
-      const StepResult wait = start.standing() ? stop_step(start) : StepResult{};
+      const StepResult wait = start.standing() ? stop_step(start, others) : StepResult{};
       if (start.standing() && wait.valid()) {
         result.footsteps.push_back(wait.step);
         result.end_state = wait.state;

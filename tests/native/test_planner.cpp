@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 #include "footfall/plan.hpp"
 #include "footfall/plan_io.hpp"
@@ -222,6 +223,46 @@ TEST(Planner, FootOrientationsKeepThePairRule) {
     EXPECT_GE(outward, -1e-9);
     EXPECT_LE(outward, max_turn + 1e-9);
     last[static_cast<int>(s.foot)] = s.foot_orientation;
+  }
+}
+
+// The closest the circles of two plans come, sampled every 2 ms (negative: they overlap). [m]
+double closest_approach(const AgentPlan& a, const AgentPlan& b, const CharacterParams& character) {
+  double closest = INFINITY;
+  const double end = std::max(a.end_time(), b.end_time());
+  for (double t = 0; t <= end; t += 0.002) {
+    for (const Circle& x : collision_circles(a, character, t)) {
+      for (const Circle& y : collision_circles(b, character, t)) {
+        closest = std::min(closest, distance(x.center, y.center) - x.radius - y.radius);
+      }
+    }
+  }
+  return closest;
+}
+
+TEST(Planner, KeepsClearOfOtherAgentsPlans) {
+  const CharacterParams character;
+  const ObstacleMap none;
+  const FootstepPlanner planner(character, PlannerParams{}, none);
+  AgentPlan first;
+  first.name = "first";
+  first.start = standing_state({0, 0}, 0, character);
+  first.footsteps = planner.plan(first.start, {8, 0}).footsteps;
+  // Head-on along the same line, and crossing its way at right angles.
+  for (const auto& [from, to] :
+       {std::pair<Vec2, Vec2>{{8, 0}, {0, 0}}, std::pair<Vec2, Vec2>{{4, -4}, {4, 4}}}) {
+    SCOPED_TRACE(::testing::Message() << "from " << from.x << ", " << from.y);
+    AgentPlan second;
+    second.name = "second";
+    second.start = standing_state(from, angle_of(to - from), character);
+    // Alone, it would walk right through the first.
+    second.footsteps = planner.plan(second.start, to).footsteps;
+    EXPECT_LT(closest_approach(first, second, character), 0.0);
+    // Reading the first's plan, it keeps clear.
+    const SearchResult result = planner.plan(second.start, to, {&first});
+    EXPECT_EQ(result.status, Status::kSuccess);
+    second.footsteps = result.footsteps;
+    EXPECT_GE(closest_approach(first, second, character), 0.0);
   }
 }
 

@@ -144,3 +144,16 @@ def test_measure_plan(ff):
     assert metrics.composite02 == pytest.approx(metrics.composite01 + walker.acceleration)
     with pytest.raises(ValueError, match="rate"):
         ff.measure_plan(ff.plan_scenario(ff.demo_scenario()), 0.0)
+
+
+def test_search_keeps_clear_of_other_plans(ff):
+    character = ff.CharacterParams()
+    planner = ff.FootstepPlanner(character, ff.PlannerParams(), ff.ObstacleMap([]))
+    first = ff.plan_agent(ff.AgentSpec("first", (0.0, 0.0), 0.0, [(8.0, 0.0)]), planner)
+    start = ff.standing_state((8.0, 0.0), math.pi, character)
+    alone = planner.plan(start, (0.0, 0.0))
+    aware = planner.plan(start, (0.0, 0.0), [first])
+    assert aware.status == ff.Status.SUCCESS
+    # Alone it walks the line through the other; aware, it steps aside.
+    assert max(abs(s.com_end[1]) for s in alone.footsteps) < 0.3
+    assert max(abs(s.com_end[1]) for s in aware.footsteps) > 0.3

@@ -13,6 +13,13 @@
 
 namespace footfall {
 
+struct AgentPlan;
+
+/// Other agents' plans, which a search keeps clear of as moving obstacles: at
+/// every sampled time of a step, the five circles each plan gives at that time
+/// (section 4). They are taken to share the planner's character.
+using MovingObstacles = std::vector<const AgentPlan*>;
+
 /// Result of one footstep search.
 struct SearchResult {
   /// kSuccess: the goal was reached. kPartial: the horizon was reached first
@@ -44,7 +51,8 @@ class FootstepPlanner {
   /// The foot orientations of the result are chosen by the post-process over
   /// these steps alone; a caller that chains searches runs
   /// choose_foot_orientations once more over the whole chain.
-  SearchResult plan(const FootstepState& start, Vec2 goal) const;
+  SearchResult plan(const FootstepState& start, Vec2 goal,
+                    const MovingObstacles& others = {}) const;
 
   /// Heuristic of equation 6: the cost of one normal step times the number of
   /// normal steps to the goal (the distance less the goal tolerance). [J]
@@ -55,15 +63,18 @@ class FootstepPlanner {
   double expected_step_length() const { return expected_step_length_; }
 
   /// True if the step collides with an obstacle: its landing foot, or the
-  /// torso circles at samples no further apart than the sample spacing.
-  bool collides(const Footstep& step) const;
+  /// torso circles at samples no further apart than the sample spacing; or if
+  /// at one of those samples its torso or planted foot touches a circle of
+  /// one of `others`.
+  bool collides(const Footstep& step, const MovingObstacles& others = {}) const;
   /// True if the standing or walking state's planted feet or torso collide.
   bool collides(const FootstepState& state) const;
   /// The stop step from `state` lasting `duration`, with validity kCollides if
   /// it runs into an obstacle.
-  StepResult stop_step(const FootstepState& state, double duration) const;
+  StepResult stop_step(const FootstepState& state, double duration,
+                       const MovingObstacles& others = {}) const;
   /// The stop step of the planner's stop_duration.
-  StepResult stop_step(const FootstepState& state) const;
+  StepResult stop_step(const FootstepState& state, const MovingObstacles& others = {}) const;
 
   /// The character parameters.
   const CharacterParams& character() const { return character_; }
