@@ -5,7 +5,6 @@ Run: blender -b --factory-startup --python bench/blender_crowd.py -- [AGENTS] [S
 (defaults 200 agents, 60 s at 24 fps, then bake and export).
 """
 
-import math
 import pathlib
 import sys
 import tempfile

@@ -6,7 +6,6 @@ Run: blender -b --factory-startup --python scripts/demo.py -- OUT_DIR
 Writes OUT_DIR/demo.png, OUT_DIR/demo.glb and OUT_DIR/demo.blend.
 """
 
-import math
 import pathlib
 import sys
 

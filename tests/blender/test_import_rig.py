@@ -5,7 +5,6 @@ Run: blender -b --factory-startup --python-exit-code 1 --python tests/blender/te
 """
 
 import json
-import math
 import os
 import pathlib
 import sys
