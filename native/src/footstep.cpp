@@ -28,6 +28,20 @@ double speed_change_cost(double mass, double desired_speed, double incoming_spee
   return 0.5 * mass * std::fabs(desired_speed * desired_speed - kept * kept);
 }
 
+// The state at the end of `step` taken from `state`: the COM where the step
+// leaves it, its foot planted, the torso facing the step's phi.
+FootstepState state_after(const FootstepState& state, const Footstep& step) {
+  FootstepState next = state;
+  next.com = step.com_end;
+  next.com_velocity = step.com_velocity_end;
+  next.last_foot = step.foot;
+  next.feet[static_cast<int>(step.foot)] = step.foot_position;
+  next.foot_orientation[static_cast<int>(step.foot)] = step.orientation_interval;
+  next.facing = step.phi;
+  next.time = step.end_time;
+  return next;
+}
+
 StepResult invalid(StepValidity why) {
   StepResult result;
   result.validity = why;
@@ -82,19 +96,12 @@ StepResult create_stop(const FootstepState& state, const FootstepAction& action,
   step.cost.speed_change = speed_change_cost(character.mass, 0.0, length(state.com_velocity),
                                              cos_double_angle(tan_theta));
 
-  FootstepState& next = result.state;
-  next = state;
-  next.com = rest;
-  next.com_velocity = {0.0, 0.0};
-  next.last_foot = foot;
-  next.feet[static_cast<int>(foot)] = step.foot_position;
-  next.foot_orientation[static_cast<int>(foot)] = step.orientation_interval;
+  result.state = state_after(state, step);
   // The planted foot must stay within reach of the fixed stop orientation.
-  OrientationInterval& stance = next.foot_orientation[static_cast<int>(other(foot))];
+  OrientationInterval& stance = result.state.foot_orientation[static_cast<int>(other(foot))];
   intersect(stance,
             reachable_orientations(step.orientation_interval, foot, character.max_foot_turn),
             other(foot), &stance);
-  next.time = step.end_time;
   return result;
 }
 
@@ -186,15 +193,7 @@ StepResult walk_step(const FootstepState& state, Foot foot, const Heading& headi
       speed_change_cost(character.mass, shape.speed, heading.speed, shape.cos_2theta);
   step.cost.curvature = shape.curvature;
 
-  FootstepState& next = result.state;
-  next = state;
-  next.com = step.com_end;
-  next.com_velocity = step.com_velocity_end;
-  next.last_foot = foot;
-  next.feet[static_cast<int>(foot)] = step.foot_position;
-  next.foot_orientation[static_cast<int>(foot)] = interval;
-  next.facing = phi;
-  next.time = step.end_time;
+  result.state = state_after(state, step);
   return result;
 }
 

@@ -46,6 +46,17 @@ def doorway_plan(ff):
     return plan, path
 
 
+def applied(make_plan):
+    """A fresh scene with the rig, the plan `make_plan(ff)` made and applied: (ff, plan, plan file)."""
+    from footfall.core import native
+
+    ff = native.load()
+    fresh_scene_with_rig()
+    plan, path = make_plan(ff)
+    check(bpy.ops.footfall.apply(plan_filepath=str(path)) == {"FINISHED"}, "apply failed")
+    return ff, plan, path
+
+
 def imported_rig():
     """The rig imported with Footfall, and its profile."""
     from footfall.bridge import rig_import
@@ -59,12 +70,8 @@ def evaluated(name):
 
 
 def test_feet_and_pelvis_follow_the_plan():
-    from footfall.core import native
 
-    ff = native.load()
-    fresh_scene_with_rig()
-    plan, path = doorway_plan(ff)
-    check(bpy.ops.footfall.apply(plan_filepath=str(path)) == {"FINISHED"}, "apply failed")
+    ff, plan, path = applied(doorway_plan)
     rig, profile = imported_rig()
     ankle_z = {side: rig.data.bones[profile.bones[side]["foot"]].head_local.z for side in ("left", "right")}
     scene = bpy.context.scene
@@ -95,12 +102,8 @@ def test_feet_and_pelvis_follow_the_plan():
 
 def test_arms_swing_opposite_to_the_legs():
     """At each right heel strike of a walk the left hand is ahead of the right, and the other way round."""
-    from footfall.core import native
 
-    ff = native.load()
-    fresh_scene_with_rig()
-    plan, path = doorway_plan(ff)
-    check(bpy.ops.footfall.apply(plan_filepath=str(path)) == {"FINISHED"}, "apply failed")
+    ff, plan, path = applied(doorway_plan)
     rig, profile = imported_rig()
     hips_rest = rig.data.bones[profile.bones["hips"]].matrix_local
     scene = bpy.context.scene
@@ -169,12 +172,7 @@ def feet_now(names, profile):
 def test_export_validates_and_reimports():
     import subprocess
 
-    from footfall.core import native
-
-    ff = native.load()
-    fresh_scene_with_rig()
-    plan, path = doorway_plan(ff)
-    check(bpy.ops.footfall.apply(plan_filepath=str(path)) == {"FINISHED"}, "apply failed")
+    ff, plan, path = applied(doorway_plan)
     rig, profile = imported_rig()
     names = [agent.name for agent in plan.agents]
     scene = bpy.context.scene
@@ -248,12 +246,9 @@ def torso_half_width(rig, profile):
 
 
 def test_behaviours_play_their_clips():
-    from footfall.core import clip_timing, native
+    from footfall.core import clip_timing
 
-    ff = native.load()
-    fresh_scene_with_rig()
-    plan, path = behaviour_plan(ff)
-    check(bpy.ops.footfall.apply(plan_filepath=str(path)) == {"FINISHED"}, "apply failed")
+    ff, plan, path = applied(behaviour_plan)
     rig, profile = imported_rig()
     agent = plan.agents[0]
     scene = bpy.context.scene
