@@ -70,7 +70,6 @@ def evaluated(name):
 
 
 def test_feet_and_pelvis_follow_the_plan():
-
     ff, plan, path = applied(doorway_plan)
     rig, profile = imported_rig()
     ankle_z = {side: rig.data.bones[profile.bones[side]["foot"]].head_local.z for side in ("left", "right")}
