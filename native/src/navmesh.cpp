@@ -1,0 +1,264 @@
+// Footfall — building and updating the navigation mesh. Walkability is kept
+// as a winding number per face, repaired locally after every update: faces
+// inside the changed obstacle are shifted, faces CGAL created are re-derived
+// from their known neighbours across the edges between them.
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <unordered_set>
+
+#include "navmesh_impl.hpp"
+#include "obstacle_distance.hpp"
+
+namespace footfall {
+namespace {
+
+std::string where(const std::string& name, std::size_t vertex) {
+  return (name.empty() ? std::string("polygon") : name) + " vertex " + std::to_string(vertex);
+}
+
+/// Checked vertices, without repeats in a row or a closing repeat.
+std::vector<Vec2> clean_polygon(const std::vector<Vec2>& polygon, const std::string& name) {
+  if (polygon.empty())
+    throw std::invalid_argument((name.empty() ? std::string("polygon") : name) + " has no vertices");
+  std::vector<Vec2> out;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    if (!in_world(polygon[i]))
+      throw std::invalid_argument(where(name, i) + " is not a finite coordinate within 1e9 m");
+    if (out.empty() || !(out.back() == polygon[i])) out.push_back(polygon[i]);
+  }
+  while (out.size() > 1 && out.back() == out.front()) out.pop_back();
+  return out;
+}
+
+/// Winding number of `polygon` around `p`, with CGAL's exact orientation test.
+int winding_number(const std::vector<Vec2>& polygon, const Point& p) {
+  int winding = 0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Point a = to_point(polygon[i]), b = to_point(polygon[(i + 1) % polygon.size()]);
+    if (a.y() <= p.y()) {
+      if (b.y() > p.y() && CGAL::orientation(a, b, p) == CGAL::LEFT_TURN) ++winding;
+    } else if (b.y() <= p.y() && CGAL::orientation(a, b, p) == CGAL::RIGHT_TURN) {
+      --winding;
+    }
+  }
+  return winding;
+}
+
+Point centroid(Face f) {
+  return CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+}
+
+std::vector<Vertex> constraint_vertices(const Cdt& cdt, Cdt::Constraint_id constraint) {
+  std::vector<Vertex> out(cdt.vertices_in_constraint_begin(constraint),
+                          cdt.vertices_in_constraint_end(constraint));
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace
+
+int NavMeshState::winding_step(Face f, int i) const {
+  if (!f->is_constrained(i)) return 0;
+  const Vertex va = f->vertex(Cdt::ccw(i)), vb = f->vertex(Cdt::cw(i));
+  int step = 0;
+  for (auto context = cdt.contexts_begin(va, vb); context != cdt.contexts_end(va, vb); ++context) {
+    const int weight = context->id() == domain ? 1 : -1;
+    // f lies left of va -> vb: crossing to the right leaves a constraint that runs va -> vb.
+    step += *context->current() == va ? -weight : weight;
+  }
+  return step;
+}
+
+void NavMeshState::repair_windings(const std::vector<Vertex>& seeds) {
+  constexpr int kPending = FaceInfo::kUnknown + 1;
+  std::vector<Face> region, known;
+  auto collect = [&](Face f) {
+    if (f->info().winding != FaceInfo::kUnknown) return;
+    if (cdt.is_infinite(f)) {
+      f->info().winding = 0;
+      return;
+    }
+    f->info().winding = kPending;
+    region.push_back(f);
+  };
+  for (Vertex v : seeds) {
+    auto faces = cdt.incident_faces(v), end = faces;
+    do collect(faces); while (++faces != end);
+  }
+  for (std::size_t k = 0; k < region.size(); ++k)
+    for (int i = 0; i < 3; ++i) collect(region[k]->neighbor(i));
+  for (Face f : region)
+    for (int i = 0; i < 3; ++i)
+      if (f->neighbor(i)->info().winding != kPending) known.push_back(f->neighbor(i));
+  while (!known.empty()) {
+    const Face f = known.back();
+    known.pop_back();
+    for (int i = 0; i < 3; ++i) {
+      const Face n = f->neighbor(i);
+      if (n->info().winding != kPending) continue;
+      n->info().winding = f->info().winding + winding_step(f, i);
+      known.push_back(n);
+    }
+  }
+}
+
+void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, const std::vector<Vec2>& polygon,
+                                   int sign) {
+  auto on_constraint = [&](Face f, int i) {
+    if (!f->is_constrained(i)) return false;
+    const Vertex va = f->vertex(Cdt::ccw(i)), vb = f->vertex(Cdt::cw(i));
+    for (auto c = cdt.contexts_begin(va, vb); c != cdt.contexts_end(va, vb); ++c)
+      if (c->id() == constraint) return true;
+    return false;
+  };
+  std::unordered_set<Face> seen;
+  std::vector<Face> stack;
+  auto flood = [&](Face start) {
+    if (cdt.is_infinite(start) || !seen.insert(start).second) return;
+    const int inside = winding_number(polygon, centroid(start));
+    if (inside == 0) return;
+    stack.push_back(start);
+    while (!stack.empty()) {
+      const Face f = stack.back();
+      stack.pop_back();
+      if (f->info().winding != FaceInfo::kUnknown) f->info().winding -= sign * inside;
+      for (int i = 0; i < 3; ++i)
+        if (!on_constraint(f, i) && seen.insert(f->neighbor(i)).second) stack.push_back(f->neighbor(i));
+    }
+  };
+  auto v = cdt.vertices_in_constraint_begin(constraint);
+  for (auto next = std::next(v); next != cdt.vertices_in_constraint_end(constraint); ++v, ++next) {
+    Face f;
+    int i;
+    if (*v == *next || !cdt.is_edge(*v, *next, f, i)) continue;
+    flood(f);
+    flood(f->neighbor(i));
+  }
+}
+
+void NavMeshState::remove_if_orphan(Vertex v) {
+  if (v->info().points == 0 && !cdt.are_there_incident_constraints(v)) cdt.remove(v);
+}
+
+NavMesh::NavMesh(Vec2 min_corner, Vec2 max_corner) : impl_(std::make_unique<NavMeshState>()) {
+  if (!in_world(min_corner) || !in_world(max_corner))
+    throw std::invalid_argument("domain corners must be finite coordinates within 1e9 m");
+  if (!(min_corner.x < max_corner.x && min_corner.y < max_corner.y))
+    throw std::invalid_argument("domain is empty: min_corner must be below max_corner on x and y");
+  impl_->min_corner = min_corner;
+  impl_->max_corner = max_corner;
+  const std::vector<Point> corners{to_point(min_corner), {max_corner.x, min_corner.y},
+                                   to_point(max_corner), {min_corner.x, max_corner.y}};
+  impl_->domain = impl_->cdt.insert_constraint(corners.begin(), corners.end(), true);
+  for (Face f : impl_->cdt.all_face_handles()) f->info().winding = impl_->cdt.is_infinite(f) ? 0 : 1;
+}
+
+NavMesh::~NavMesh() = default;
+NavMesh::NavMesh(NavMesh&&) noexcept = default;
+NavMesh& NavMesh::operator=(NavMesh&&) noexcept = default;
+
+int NavMesh::add_polygon(const std::vector<Vec2>& polygon, const std::string& name) {
+  const std::vector<Vec2> cleaned = clean_polygon(polygon, name);
+  if (cleaned.size() == 1) return add_point(cleaned.front(), name);
+  NavMeshState& m = *impl_;
+  std::vector<Point> points;
+  for (Vec2 p : cleaned) points.push_back(to_point(p));
+  NavMeshState::Obstacle obstacle;
+  obstacle.constraint = m.cdt.insert_constraint(points.begin(), points.end(), true);
+  obstacle.polygon = cleaned;
+  m.shift_enclosed(obstacle.constraint, cleaned, +1);
+  m.repair_windings(constraint_vertices(m.cdt, obstacle.constraint));
+  m.obstacles.emplace(m.next_id, std::move(obstacle));
+  return m.next_id++;
+}
+
+int NavMesh::add_point(Vec2 point, const std::string& name) {
+  if (!in_world(point))
+    throw std::invalid_argument((name.empty() ? std::string("point") : name) +
+                                " is not a finite coordinate within 1e9 m");
+  NavMeshState& m = *impl_;
+  NavMeshState::Obstacle obstacle;
+  obstacle.point = m.cdt.insert(to_point(point));
+  obstacle.point->info().points += 1;
+  m.repair_windings({obstacle.point});
+  m.obstacles.emplace(m.next_id, std::move(obstacle));
+  return m.next_id++;
+}
+
+void NavMesh::remove(int id) {
+  NavMeshState& m = *impl_;
+  const auto found = m.obstacles.find(id);
+  if (found == m.obstacles.end())
+    throw std::out_of_range("no obstacle with id " + std::to_string(id));
+  const NavMeshState::Obstacle obstacle = std::move(found->second);
+  m.obstacles.erase(found);
+  std::vector<Vertex> touched;
+  if (obstacle.constraint != nullptr) {
+    touched = constraint_vertices(m.cdt, obstacle.constraint);
+    m.shift_enclosed(obstacle.constraint, obstacle.polygon, -1);
+    m.cdt.remove_constraint(obstacle.constraint);
+  } else {
+    obstacle.point->info().points -= 1;
+    touched = {obstacle.point};
+  }
+  // Vertices nothing holds any more go; the faces around the holes they leave
+  // are found again through their former neighbours.
+  std::vector<Vertex> orphans, seeds;
+  for (Vertex v : touched)
+    (v->info().points == 0 && !m.cdt.are_there_incident_constraints(v) ? orphans : seeds).push_back(v);
+  const std::unordered_set<Vertex> orphan_set(orphans.begin(), orphans.end());
+  for (Vertex v : orphans) {
+    auto around = m.cdt.incident_vertices(v), end = around;
+    do
+      if (!m.cdt.is_infinite(around) && !orphan_set.count(around)) seeds.push_back(around);
+    while (++around != end);
+    m.remove_if_orphan(v);
+  }
+  m.repair_windings(seeds);
+}
+
+bool NavMesh::contains(int id) const { return impl_->obstacles.count(id) > 0; }
+
+double NavMesh::clearance(Vec2 point) const {
+  const NavMeshState& m = *impl_;
+  if (!in_world(point)) throw std::invalid_argument("clearance: point is not finite");
+  const Face f = m.cdt.locate(to_point(point));
+  if (!m.walkable(f)) return 0.0;
+  return obstacle_distance(m, f, point, point);
+}
+
+std::vector<NavTriangle> NavMesh::triangles() const {
+  const NavMeshState& m = *impl_;
+  std::vector<NavTriangle> out;
+  out.reserve(m.cdt.number_of_faces());
+  for (Face f : m.cdt.finite_face_handles()) {
+    NavTriangle t;
+    t.walkable = m.walkable(f);
+    for (int i = 0; i < 3; ++i) {
+      t.corners[i] = to_vec(f->vertex(i)->point());
+      t.constrained[i] = f->is_constrained(i);
+      if (t.walkable) t.corner_clearance[i] = 0.5 * corner_width(m, f, i);
+    }
+    out.push_back(t);
+  }
+  return out;
+}
+
+std::size_t NavMesh::triangle_count() const { return impl_->cdt.number_of_faces(); }
+Vec2 NavMesh::min_corner() const { return impl_->min_corner; }
+Vec2 NavMesh::max_corner() const { return impl_->max_corner; }
+
+const char* to_string(PathStatus status) {
+  switch (status) {
+    case PathStatus::kFound: return "found";
+    case PathStatus::kNoPath: return "no_path";
+    case PathStatus::kStartBlocked: return "start_blocked";
+    case PathStatus::kGoalBlocked: return "goal_blocked";
+    case PathStatus::kOutside: return "outside";
+  }
+  return "unknown";
+}
+
+}  // namespace footfall

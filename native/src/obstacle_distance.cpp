@@ -1,0 +1,99 @@
+// Footfall — nearest-obstacle distances over the navigation mesh.
+#include "obstacle_distance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_set>
+#include <vector>
+
+namespace footfall {
+namespace {
+
+double side(Vec2 a, Vec2 b, Vec2 p) { return cross(b - a, p - a); }
+
+bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double d1 = side(c, d, a), d2 = side(c, d, b), d3 = side(a, b, c), d4 = side(a, b, d);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
+/// The part of [p, q] inside the wedge at `apex` from ray `from` counter-
+/// clockwise to ray `to` (an angle below pi); false if none of it is.
+bool clip_to_wedge(Vec2 apex, Vec2 from, Vec2 to, Vec2& p, Vec2& q) {
+  double t0 = 0.0, t1 = 1.0;
+  // Inside: left of apex->from and right of apex->to.
+  const Vec2 normals[2] = {perp(from - apex), -1.0 * perp(to - apex)};
+  for (const Vec2& n : normals) {
+    const double fp = dot(n, p - apex), fq = dot(n, q - apex);
+    if (fp < 0 && fq < 0) return false;
+    if (fp < 0) t0 = std::max(t0, fp / (fp - fq));
+    if (fq < 0) t1 = std::min(t1, fp / (fp - fq));
+  }
+  if (t0 > t1) return false;
+  const Vec2 d = q - p;
+  q = p + t1 * d;
+  p = p + t0 * d;
+  return true;
+}
+
+}  // namespace
+
+double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  if (segments_cross(a, b, c, d)) return 0.0;
+  return std::min(std::min(distance_to_segment(a, c, d), distance_to_segment(b, c, d)),
+                  std::min(distance_to_segment(c, a, b), distance_to_segment(d, a, b)));
+}
+
+double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, double limit) {
+  double best = limit;
+  std::unordered_set<Face> seen{start};
+  std::vector<Face> stack{start};
+  while (!stack.empty()) {
+    const Face f = stack.back();
+    stack.pop_back();
+    for (int i = 0; i < 3; ++i) {
+      best = std::min(best, distance_to_segment(to_vec(f->vertex(i)->point()), a, b));
+      const Vec2 c = to_vec(f->vertex(Cdt::ccw(i))->point()), d = to_vec(f->vertex(Cdt::cw(i))->point());
+      const double gap = segment_distance(a, b, c, d);
+      if (f->is_constrained(i)) {
+        best = std::min(best, gap);
+      } else if (gap < best && !mesh.cdt.is_infinite(f->neighbor(i)) &&
+                 seen.insert(f->neighbor(i)).second) {
+        stack.push_back(f->neighbor(i));
+      }
+    }
+  }
+  return best;
+}
+
+double corner_width(const NavMeshState& mesh, Face f, int corner, double limit) {
+  const Vec2 apex = to_vec(f->vertex(corner)->point());
+  const Vec2 from = to_vec(f->vertex(Cdt::ccw(corner))->point());
+  const Vec2 to = to_vec(f->vertex(Cdt::cw(corner))->point());
+  double best = std::min(limit, std::min(distance(apex, from), distance(apex, to)));
+  // Edges still to look across: (face, edge index), all beyond the opposite edge.
+  std::vector<std::pair<Face, int>> stack{{f, corner}};
+  std::unordered_set<Face> seen{f};
+  while (!stack.empty()) {
+    const auto [g, i] = stack.back();
+    stack.pop_back();
+    Vec2 p = to_vec(g->vertex(Cdt::ccw(i))->point()), q = to_vec(g->vertex(Cdt::cw(i))->point());
+    if (!clip_to_wedge(apex, from, to, p, q)) continue;
+    if (g->is_constrained(i)) {
+      best = std::min(best, distance_to_segment(apex, p, q));
+      continue;
+    }
+    const Face n = g->neighbor(i);
+    if (!seen.insert(n).second || mesh.cdt.is_infinite(n)) continue;
+    const int back = n->index(g);
+    Vec2 far = to_vec(n->vertex(back)->point()), far_copy = far;
+    if (clip_to_wedge(apex, from, to, far, far_copy)) best = std::min(best, distance(apex, far));
+    for (int j : {Cdt::ccw(back), Cdt::cw(back)}) {
+      Vec2 c = to_vec(n->vertex(Cdt::ccw(j))->point()), d = to_vec(n->vertex(Cdt::cw(j))->point());
+      if (clip_to_wedge(apex, from, to, c, d) && distance_to_segment(apex, c, d) < best)
+        stack.push_back({n, j});
+    }
+  }
+  return best;
+}
+
+}  // namespace footfall

@@ -1,0 +1,31 @@
+// Footfall — distances from the walkable space to the nearest obstacles, found
+// by walking the triangulation outward from where the question is asked.
+#pragma once
+
+#include <limits>
+
+#include "navmesh_impl.hpp"
+
+namespace footfall {
+
+/// Distance from the segment [a, b] to the nearest obstacle or boundary.
+/// `start` is a walkable face that contains `a`. Exact up to rounding: every
+/// vertex lies on an obstacle, and the walk crosses only unconstrained edges
+/// nearer to the segment than the best distance found so far, which the
+/// segment from the nearest point to its obstacle always does. [m]
+double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b,
+                         double limit = std::numeric_limits<double>::infinity());
+
+/// Width of the passage around corner `corner` of walkable face `f`: the
+/// distance from that corner to the nearest obstacle seen across the opposite
+/// edge (within the corner's angle), capped by the two edges beside the corner.
+/// A disc of radius r can only pass around the corner if this is at least 2r,
+/// because its centre crosses every segment from the corner to such an obstacle.
+/// Stops searching beyond `limit`. [m]
+double corner_width(const NavMeshState& mesh, Face f, int corner,
+                    double limit = std::numeric_limits<double>::infinity());
+
+/// Distance between the segments [a, b] and [c, d]. [m]
+double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+
+}  // namespace footfall
