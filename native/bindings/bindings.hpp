@@ -13,6 +13,7 @@ void bind_params(pybind11::module_& m);
 void bind_footstep(pybind11::module_& m);
 void bind_planner(pybind11::module_& m);
 void bind_scenario(pybind11::module_& m);
+void bind_navmesh(pybind11::module_& m);
 
 }  // namespace footfall::bindings
 

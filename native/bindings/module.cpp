@@ -4,8 +4,8 @@
 
 PYBIND11_MODULE(_native, m) {
   m.doc() =
-      "Footfall's planning core: the footstep model, the footstep planner, scenario and plan "
-      "files.";
+      "Footfall's planning core: the footstep model, the footstep planner, the navigation "
+      "mesh, scenario and plan files.";
   m.attr("__version__") = FOOTFALL_VERSION;
   // std::invalid_argument -> ValueError and std::out_of_range -> IndexError
   // are pybind11's own translations; footfall::Error gets its own class.
@@ -14,4 +14,5 @@ PYBIND11_MODULE(_native, m) {
   footfall::bindings::bind_footstep(m);
   footfall::bindings::bind_planner(m);
   footfall::bindings::bind_scenario(m);
+  footfall::bindings::bind_navmesh(m);
 }

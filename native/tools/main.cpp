@@ -1,5 +1,6 @@
 // footfall — the command-line program: plan scenarios, run the demo and the
 // benchmarks. Exit codes: 0 success, 2 bad input or usage, 1 other failure.
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -11,6 +12,7 @@
 
 #include "bench_command.hpp"
 #include "footfall/metrics.hpp"
+#include "footfall/navmesh.hpp"
 #include "footfall/plan.hpp"
 #include "footfall/plan_io.hpp"
 #include "footfall/scenes.hpp"
@@ -25,6 +27,8 @@ const char* const kUsage =
     ".xml)\n"
     "       footfall demo [-o PLAN]           plan the built-in demo (default out/demo-plan.json)\n"
     "       footfall metrics PLAN             our figures and SteerBench's, per agent, at 20 Hz\n"
+    "       footfall path SCENARIO --from X,Y --to X,Y --radius R\n"
+    "                                         shortest path for a disc of radius R, as JSON\n"
     "       footfall bench [--repeat N]       time the planner on the standard workloads\n"
     "       footfall --version | --help\n";
 
@@ -95,6 +99,59 @@ std::vector<std::string> parse_arguments(int argc, char** argv, std::string& out
   return positional;
 }
 
+// A finite number, or a usage error naming the flag.
+double parse_number(const std::string& flag, const std::string& text) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(value))
+    throw UsageError(flag + ": expected a finite number, got '" + text + "'");
+  return value;
+}
+
+footfall::Vec2 parse_point(const std::string& flag, const std::string& text) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos) throw UsageError(flag + ": expected X,Y, got '" + text + "'");
+  return {parse_number(flag, text.substr(0, comma)), parse_number(flag, text.substr(comma + 1))};
+}
+
+// footfall path SCENARIO --from X,Y --to X,Y --radius R
+int print_path(int argc, char** argv) {
+  std::string scenario;
+  footfall::PathQuery query;
+  bool from = false, to = false, radius = false;
+  for (int i = 2; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (arg == "--from" && has_value) {
+      query.from = parse_point(arg, argv[++i]);
+      from = true;
+    } else if (arg == "--to" && has_value) {
+      query.to = parse_point(arg, argv[++i]);
+      to = true;
+    } else if (arg == "--radius" && has_value) {
+      query.radius = parse_number(arg, argv[++i]);
+      radius = true;
+    } else if (!arg.empty() && arg[0] == '-') {
+      throw UsageError("path: unknown option or missing value: " + arg);
+    } else if (scenario.empty()) {
+      scenario = arg;
+    } else {
+      throw UsageError("path takes one scenario file");
+    }
+  }
+  if (scenario.empty() || !from || !to || !radius)
+    throw UsageError("path needs SCENARIO, --from X,Y, --to X,Y and --radius R");
+  if (query.radius < 0) throw UsageError("--radius must be >= 0");
+  const footfall::NavMesh mesh = footfall::navmesh_of(footfall::load_scenario_file(scenario));
+  std::cout << footfall::to_json(mesh.find_path(query)) << "\n";
+  return 0;
+}
+
 int run(int argc, char** argv) {
   if (argc < 2) throw UsageError("missing command");
   const std::string verb = argv[1];
@@ -125,6 +182,7 @@ int run(int argc, char** argv) {
     print_metrics(footfall::measure_plan(footfall::load_plan(positional[0])), std::cout);
     return 0;
   }
+  if (verb == "path") return print_path(argc, argv);
   if (verb == "bench") {
     int repeat = 20;
     for (int i = 2; i < argc; ++i) {

@@ -14,6 +14,7 @@
 namespace footfall {
 
 struct NavMeshState;
+struct Scenario;
 
 /// How a path query ended.
 enum class PathStatus {
@@ -104,5 +105,13 @@ class NavMesh {
  private:
   std::unique_ptr<NavMeshState> impl_;
 };
+
+/// The navigation mesh of a scenario. The domain is the bounding box of its
+/// obstacles, agent positions and goals, grown by `margin` on every side;
+/// obstacle i gets id i. [m] [margin > 0]
+NavMesh navmesh_of(const Scenario& scenario, double margin = 5.0);
+
+/// A path result as one line of JSON: {"status", "points", "length", "min_clearance"}.
+std::string to_json(const PathResult& result);
 
 }  // namespace footfall
