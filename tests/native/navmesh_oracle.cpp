@@ -296,63 +296,68 @@ bool polyline_clear(const Obstacles& obstacles, const std::vector<Vec2>& line, d
 /// A* from node 0 to node 1 (straight-line distance is a consistent
 /// heuristic: no step is shorter than its chord). Edges are checked against
 /// the obstacles only when they would improve a node.
-struct Search {
-  Search(const TangentGraph& g, const Obstacles& o, double r, int circle_sides)
-      : graph(g),
-        obstacles(o),
-        radius(r),
-        sides(circle_sides),
-        cost(g.nodes.size(), kInfinity),
-        came_from(g.nodes.size(), {-1, Move::kSegment}),
-        done(g.nodes.size(), false) {}
+class Search {
+ public:
+  Search(const TangentGraph& graph, const Obstacles& obstacles, double radius, int sides)
+      : graph_(graph),
+        obstacles_(obstacles),
+        radius_(radius),
+        sides_(sides),
+        cost_(graph.nodes.size(), kInfinity),
+        came_from_(graph.nodes.size(), {-1, Move::kSegment}),
+        done_(graph.nodes.size(), false) {}
 
-  const TangentGraph& graph;
-  const Obstacles& obstacles;
-  double radius;
-  int sides;
-  std::vector<double> cost;
-  std::vector<std::pair<int, Move>> came_from;
-  std::vector<bool> done;
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-
-  void relax(int u, int v, Move move) {
-    if (v < 0 || v == u || done[v]) return;
-    const std::vector<Vec2> line = step_polyline(graph, u, v, move, sides);
-    const double through_u = cost[u] + polyline_length(line);
-    if (through_u >= cost[v] || !polyline_clear(obstacles, line, radius)) return;
-    cost[v] = through_u;
-    came_from[v] = {u, move};
-    open.push({through_u + distance(graph.nodes[v].p, graph.nodes[1].p), v});
-  }
-
+  /// True if the goal is reached.
   bool run() {
-    cost[0] = 0.0;
-    open.push({distance(graph.nodes[0].p, graph.nodes[1].p), 0});
-    while (!open.empty()) {
-      const int u = open.top().second;
-      open.pop();
-      if (done[u]) continue;
+    cost_[0] = 0.0;
+    open_.push({distance(graph_.nodes[0].p, graph_.nodes[1].p), 0});
+    while (!open_.empty()) {
+      const int u = open_.top().second;
+      open_.pop();
+      if (done_[u]) continue;
       if (u == 1) return true;
-      done[u] = true;
-      for (int v : graph.nodes[u].links) relax(u, v, Move::kSegment);
-      relax(u, graph.nodes[u].ccw, Move::kCounterClockwise);
-      relax(u, graph.nodes[u].cw, Move::kClockwise);
+      done_[u] = true;
+      for (int v : graph_.nodes[u].links) relax(u, v, Move::kSegment);
+      relax(u, graph_.nodes[u].ccw, Move::kCounterClockwise);
+      relax(u, graph_.nodes[u].cw, Move::kClockwise);
     }
     return false;
   }
 
+  /// The path found by run(), as a polyline from start to goal.
   std::vector<Vec2> path() const {
-    std::vector<std::pair<int, std::pair<int, Move>>> steps;  // (to, (from, move))
-    for (int v = 1; v != 0; v = came_from[v].first) steps.push_back({v, came_from[v]});
-    std::vector<Vec2> points{graph.nodes[0].p};
-    for (auto it = steps.rbegin(); it != steps.rend(); ++it) {
-      const std::vector<Vec2> line =
-          step_polyline(graph, it->second.first, it->first, it->second.second, sides);
+    std::vector<int> chain;  // Goal back to start.
+    for (int v = 1; v != 0; v = came_from_[v].first) chain.push_back(v);
+    std::vector<Vec2> points{graph_.nodes[0].p};
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+      const auto [u, move] = came_from_[*it];
+      const std::vector<Vec2> line = step_polyline(graph_, u, *it, move, sides_);
       points.insert(points.end(), line.begin() + 1, line.end());
     }
     return points;
   }
+
+ private:
+  using Entry = std::pair<double, int>;  // (cost + heuristic, node)
+
+  void relax(int u, int v, Move move) {
+    if (v < 0 || v == u || done_[v]) return;
+    const std::vector<Vec2> line = step_polyline(graph_, u, v, move, sides_);
+    const double through_u = cost_[u] + polyline_length(line);
+    if (through_u >= cost_[v] || !polyline_clear(obstacles_, line, radius_)) return;
+    cost_[v] = through_u;
+    came_from_[v] = {u, move};
+    open_.push({through_u + distance(graph_.nodes[v].p, graph_.nodes[1].p), v});
+  }
+
+  const TangentGraph& graph_;
+  const Obstacles& obstacles_;
+  double radius_;
+  int sides_;
+  std::vector<double> cost_;
+  std::vector<std::pair<int, Move>> came_from_;  // Previous node and the step from it.
+  std::vector<bool> done_;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open_;
 };
 
 }  // namespace
@@ -421,8 +426,9 @@ OraclePath shortest_path(const NavScene& scene, Vec2 from, Vec2 to, double radiu
 }
 
 double oracle_excess(int circle_sides) {
-  // The arcs' polylines (see step_polyline) plus the circles' hair: (1e-9 + 1e-9 / r)
-  // of the length per unit of turning, and the length is at least r times the turning.
+  // The arcs' polylines (see step_polyline), plus 1e-6 for the circles being
+  // r * 1e-9 + 1e-9 too large: that adds as much per radian of turning, and a
+  // path is at least r long per radian, so relatively 1e-9 + 1e-9 / r at most.
   const double half_piece = kPi / circle_sides;
   return std::tan(half_piece) / half_piece - 1.0 + 1e-6;
 }

@@ -1,8 +1,8 @@
 // The navigation mesh against the brute-force oracle of navmesh_oracle.hpp:
 // random scenes, and passages whose answer flips as the radius grows.
-// Unreviewed: written by a helper at the end of a session. The four DISABLED_
-// tests disagree with the mesh; whether the mesh or the oracle is wrong in each
-// case is the next step of issue 3 (see docs/navmesh.md).
+// The four DISABLED_ comparisons
+// fail: the mesh is wrong in each reproduced case (the oracle was checked against a
+// roadmap, a grid flood fill and a finer version of itself). See docs/navmesh.md.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -182,7 +182,7 @@ void check_query(const NavScene& scene, const NavMesh& mesh, const PathQuery& qu
     }
     if (room < 0) {
       EXPECT_STREQ(to_string(result.status), to_string(status));
-      ++tally.blocked;
+      tally.blocked += result.status == status;
       return;
     }
   }
@@ -192,11 +192,12 @@ void check_query(const NavScene& scene, const NavMesh& mesh, const PathQuery& qu
     return;
   }
   if (!oracle.path.found) {
-    // If the mesh finds a path, its clearance tells which of the two is wrong.
-    EXPECT_STREQ(to_string(result.status), "no_path")
-        << "the mesh's path clears " << testing::path_clearance(scene, result.points);
-    EXPECT_TRUE(result.points.empty());
-    ++tally.no_path;
+    EXPECT_STREQ(to_string(result.status), "no_path");
+    // A path returned anyway tells by its clearance which of the two is wrong.
+    if (!result.points.empty()) {
+      ADD_FAILURE() << "the mesh's path clears " << testing::path_clearance(scene, result.points);
+    }
+    tally.no_path += result.status == PathStatus::kNoPath;
     return;
   }
   ASSERT_GE(testing::path_clearance(scene, oracle.path.points), query.radius) << "oracle";
