@@ -31,6 +31,56 @@ std::vector<Vec2> clean_polygon(const std::vector<Vec2>& polygon, const std::str
   return out;
 }
 
+/// The part of `polygon` inside the rectangle [lo, hi] (Sutherland-Hodgman).
+/// Concave polygons may come back with zero-width bridges along the boundary;
+/// their winding numbers inside the rectangle are those of the input. Keeping
+/// every vertex in the rectangle keeps the triangulation's hull the domain's.
+std::vector<Vec2> clip_to_rectangle(std::vector<Vec2> polygon, Vec2 lo, Vec2 hi) {
+  // Each side of the rectangle: inside test and where an edge crosses it.
+  struct Side {
+    int axis;      // 0: x, 1: y
+    double bound;  // the side's coordinate
+    bool keep_above;
+  };
+  const Side sides[4] = {{0, lo.x, true}, {0, hi.x, false}, {1, lo.y, true}, {1, hi.y, false}};
+  auto coord = [](Vec2 p, int axis) { return axis == 0 ? p.x : p.y; };
+  for (const Side& side : sides) {
+    auto inside = [&](Vec2 p) {
+      return side.keep_above ? coord(p, side.axis) >= side.bound : coord(p, side.axis) <= side.bound;
+    };
+    auto crossing = [&](Vec2 a, Vec2 b) {
+      const double t = (side.bound - coord(a, side.axis)) / (coord(b, side.axis) - coord(a, side.axis));
+      Vec2 p = a + t * (b - a);
+      (side.axis == 0 ? p.x : p.y) = side.bound;  // exactly on the side
+      return p;
+    };
+    std::vector<Vec2> out;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const Vec2 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
+      if (inside(b)) {
+        if (!inside(a)) out.push_back(crossing(a, b));
+        out.push_back(b);
+      } else if (inside(a)) {
+        out.push_back(crossing(a, b));
+      }
+    }
+    polygon = std::move(out);
+  }
+  std::vector<Vec2> out;
+  for (Vec2 p : polygon)
+    if (out.empty() || !(out.back() == p)) out.push_back(p);
+  while (out.size() > 1 && out.back() == out.front()) out.pop_back();
+  return out;
+}
+
+/// Twice the signed area of `polygon` (positive counter-clockwise).
+double twice_signed_area(const std::vector<Vec2>& polygon) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    sum += cross(polygon[i], polygon[(i + 1) % polygon.size()]);
+  return sum;
+}
+
 /// Winding number of `polygon` around `p`, with CGAL's exact orientation test.
 int winding_number(const std::vector<Vec2>& polygon, const Point& p) {
   int winding = 0;
@@ -104,6 +154,13 @@ void NavMeshState::repair_windings(const std::vector<Vertex>& seeds) {
   }
 }
 
+void NavMeshState::forget_windings(const std::vector<Vertex>& vertices) {
+  for (Vertex v : vertices) {
+    auto faces = cdt.incident_faces(v), end = faces;
+    do faces->info().winding = FaceInfo::kUnknown; while (++faces != end);
+  }
+}
+
 void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, const std::vector<Vec2>& polygon,
                                    int sign) {
   auto on_constraint = [&](Face f, int i) {
@@ -160,16 +217,27 @@ NavMesh::NavMesh(NavMesh&&) noexcept = default;
 NavMesh& NavMesh::operator=(NavMesh&&) noexcept = default;
 
 int NavMesh::add_polygon(const std::vector<Vec2>& polygon, const std::string& name) {
-  const std::vector<Vec2> cleaned = clean_polygon(polygon, name);
-  if (cleaned.size() == 1) return add_point(cleaned.front(), name);
   NavMeshState& m = *impl_;
+  std::vector<Vec2> cleaned =
+      clip_to_rectangle(clean_polygon(polygon, name), m.min_corner, m.max_corner);
+  if (cleaned.size() == 1) return add_point(cleaned.front(), name);
+  if (cleaned.empty()) {
+    // Wholly outside the domain: nothing to block, but the id stays valid.
+    m.obstacles.emplace(m.next_id, NavMeshState::Obstacle{});
+    return m.next_id++;
+  }
+  // Counter-clockwise, so that overlapping obstacles add up instead of
+  // cancelling (the non-zero rule per obstacle).
+  if (twice_signed_area(cleaned) < 0) std::reverse(cleaned.begin(), cleaned.end());
   std::vector<Point> points;
   for (Vec2 p : cleaned) points.push_back(to_point(p));
   NavMeshState::Obstacle obstacle;
   obstacle.constraint = m.cdt.insert_constraint(points.begin(), points.end(), true);
   obstacle.polygon = cleaned;
+  const std::vector<Vertex> touched = constraint_vertices(m.cdt, obstacle.constraint);
+  m.forget_windings(touched);
   m.shift_enclosed(obstacle.constraint, cleaned, +1);
-  m.repair_windings(constraint_vertices(m.cdt, obstacle.constraint));
+  m.repair_windings(touched);
   m.obstacles.emplace(m.next_id, std::move(obstacle));
   return m.next_id++;
 }
@@ -180,8 +248,13 @@ int NavMesh::add_point(Vec2 point, const std::string& name) {
                                 " is not a finite coordinate within 1e9 m");
   NavMeshState& m = *impl_;
   NavMeshState::Obstacle obstacle;
+  if (!m.in_domain(point)) {
+    m.obstacles.emplace(m.next_id, std::move(obstacle));  // outside: blocks nothing
+    return m.next_id++;
+  }
   obstacle.point = m.cdt.insert(to_point(point));
   obstacle.point->info().points += 1;
+  m.forget_windings({obstacle.point});
   m.repair_windings({obstacle.point});
   m.obstacles.emplace(m.next_id, std::move(obstacle));
   return m.next_id++;
@@ -199,7 +272,7 @@ void NavMesh::remove(int id) {
     touched = constraint_vertices(m.cdt, obstacle.constraint);
     m.shift_enclosed(obstacle.constraint, obstacle.polygon, -1);
     m.cdt.remove_constraint(obstacle.constraint);
-  } else {
+  } else if (obstacle.point != Vertex()) {
     obstacle.point->info().points -= 1;
     touched = {obstacle.point};
   }

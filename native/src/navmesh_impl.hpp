@@ -48,7 +48,7 @@ struct NavMeshState {
   /// One obstacle as the caller gave it.
   struct Obstacle {
     Cdt::Constraint_id constraint = nullptr;  ///< Polygons, walls and segments.
-    Vertex point;                             ///< Point obstacles.
+    Vertex point;                             ///< Point obstacles (null outside the domain).
     std::vector<Vec2> polygon;                ///< Cleaned vertices, for winding numbers.
   };
 
@@ -58,9 +58,16 @@ struct NavMeshState {
   std::unordered_map<int, Obstacle> obstacles;
   int next_id = 0;
 
+  bool in_domain(Vec2 p) const {
+    return p.x >= min_corner.x && p.y >= min_corner.y && p.x <= max_corner.x && p.y <= max_corner.y;
+  }
   bool walkable(Face f) const { return !cdt.is_infinite(f) && f->info().winding == 1; }
   /// Winding number change from `f` to its neighbour across edge `i`.
   int winding_step(Face f, int i) const;
+  /// Marks the faces around `vertices` unknown. Needed after every insertion:
+  /// splitting a constrained edge, CGAL flips a face across it and keeps its
+  /// old info, so a face next to a new vertex may carry the other side's winding.
+  void forget_windings(const std::vector<Vertex>& vertices);
   /// Gives every face marked unknown near `seeds` its winding number again.
   void repair_windings(const std::vector<Vertex>& seeds);
   /// Adds `sign` times the winding number of `polygon` to the faces it encloses.

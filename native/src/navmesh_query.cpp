@@ -167,11 +167,7 @@ PathResult NavMesh::find_path(const PathQuery& q) const {
     throw std::invalid_argument("find_path: arc_tolerance must be a finite number > 0");
   const NavMeshState& m = *impl_;
   PathResult result;
-  auto outside = [&](Vec2 p) {
-    return p.x < m.min_corner.x || p.y < m.min_corner.y || p.x > m.max_corner.x ||
-           p.y > m.max_corner.y;
-  };
-  if (outside(q.from) || outside(q.to)) {
+  if (!m.in_domain(q.from) || !m.in_domain(q.to)) {
     result.status = PathStatus::kOutside;
     return result;
   }

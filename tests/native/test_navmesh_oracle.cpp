@@ -235,7 +235,7 @@ TEST(NavMeshOracle, OraclePathClearanceSeesBetweenThePoints) {
   EXPECT_DOUBLE_EQ(testing::clearance(scene, {11, 5}), 0.0);
 }
 
-TEST(NavMeshOracle, DISABLED_ClearanceAgreesWithTheOracle) {
+TEST(NavMeshOracle, ClearanceAgreesWithTheOracle) {
   Random random(7);
   for (int c = 0; c < 50; ++c) {
     const NavScene scene = random_scene(random);
@@ -301,7 +301,7 @@ void check_passage(const NavScene& scene, Vec2 from, Vec2 to, double gap, Tally&
   }
 }
 
-TEST(NavMeshOracle, DISABLED_GapInAWallOpensBelowHalfItsWidth) {
+TEST(NavMeshOracle, GapInAWallOpensBelowHalfItsWidth) {
   Random random(11);
   Tally tally;
   for (int c = 0; c < 40; ++c) {

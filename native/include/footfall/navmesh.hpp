@@ -77,10 +77,13 @@ class NavMesh {
 
   /// Adds a polygon obstacle (at least one vertex; repeated vertices are
   /// dropped; fewer than three distinct ones make a segment or a point) and
-  /// returns its id. Throws std::invalid_argument naming `name` (or "polygon")
-  /// and the vertex if a coordinate is NaN, infinite or beyond kMaxCoordinate.
+  /// returns its id. The part outside the domain is clipped away (an obstacle
+  /// wholly outside blocks nothing but keeps its id). Throws
+  /// std::invalid_argument naming `name` (or "polygon") and the vertex if a
+  /// coordinate is NaN, infinite or beyond kMaxCoordinate.
   int add_polygon(const std::vector<Vec2>& polygon, const std::string& name = "");
-  /// Adds a point obstacle and returns its id. Throws like add_polygon.
+  /// Adds a point obstacle and returns its id (outside the domain it blocks
+  /// nothing). Throws like add_polygon.
   int add_point(Vec2 point, const std::string& name = "");
   /// Removes the obstacle with this id. Throws std::out_of_range if there is none.
   void remove(int id);
