@@ -3,6 +3,7 @@
 #include "channel_funnel.hpp"
 
 #include <cmath>
+#include <optional>
 
 namespace footfall {
 namespace {
@@ -56,6 +57,41 @@ void append_arc(const Corner& c, Vec2 p0, Vec2 p1, double tolerance, std::vector
   out.push_back(p1);
 }
 
+/// True if the way from `apex` to `target` (the tangent that keeps both on
+/// their sides) passes `c` on the wrong side or nearer than its radius,
+/// within the way's span.
+bool blocks(const Corner& c, const Corner& apex, const Corner& target) {
+  Vec2 from, to;
+  if (!tangent(apex, target, from, to)) return true;
+  const Vec2 way = to - from;
+  const double len2 = dot(way, way);
+  const double t = len2 > 0 ? dot(c.center - from, way) / len2 : 0.0;
+  if (t <= 0 || t >= 1) return distance_to_segment(c.center, from, to) < c.radius;
+  const double beside = c.side * cross(way, c.center - from) / std::sqrt(len2);  // > 0: its side
+  return beside < c.radius;
+}
+
+/// Removes corners the path would wrap the wrong way round (a left corner
+/// turned clockwise, or more than half a turn): with circles, two corners on
+/// opposite sides can cross the funnel before a later, tighter corner of the
+/// same side shows that the path bends there instead. What stays is taut,
+/// every corner turned its own way.
+void drop_wrong_turns(std::vector<Corner>& corners) {
+  for (std::size_t k = 1; k + 1 < corners.size();) {
+    bool ok = true;
+    const Vec2 in = direction(corners[k - 1], corners[k], ok);
+    const Vec2 out = direction(corners[k], corners[k + 1], ok);
+    const double turn = corners[k].side * cross(in, out);
+    if (ok && (turn > 0 || (turn == 0 && dot(in, out) > 0))) {
+      ++k;
+      continue;
+    }
+    if (!ok) return;  // no tangent at all: the funnel reports the channel too narrow
+    corners.erase(corners.begin() + static_cast<long>(k));
+    k = std::max<std::size_t>(1, k - 1);
+  }
+}
+
 }  // namespace
 
 FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, double radius,
@@ -70,11 +106,38 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
   };
   std::vector<Corner> corners{{start, 0.0, 0}};
   Corner apex = corners.front(), left = apex, right = apex;
-  int left_index = -1, right_index = -1;
+  int apex_index = -1, left_index = -1, right_index = -1;
   bool ok = true;
+  // The corner on one side (+1 left, -1 right) that the way to the goal must
+  // wrap, or none. The funnel's side corner, tested against its tangent line,
+  // can lie beyond a goal that stops short of it; then an earlier corner of
+  // that side, or none, is the one that blocks the way.
+  auto blocking = [&](int side) -> std::optional<int> {
+    std::optional<int> best;
+    Vec2 best_direction;
+    for (int k = apex_index + 1; k < n; ++k) {
+      const Corner c = side > 0 ? left_of(k) : right_of(k);
+      if (c.same(apex) || !blocks(c, apex, {goal, 0.0, 0})) continue;
+      const Vec2 d = direction(apex, c, ok);
+      if (!best || side * cross(best_direction, d) < 0) {
+        best = k;
+        best_direction = d;
+      }
+    }
+    return best;
+  };
   for (int i = 0; i <= n; ++i) {
     const Corner new_left = left_of(i), new_right = right_of(i);
-    // Tighten the right side, or let it cross the left: the left corner becomes the apex.
+    // Makes the corner of `side` at portal `k` the apex; the scan goes on
+    // after it, or at it again when it is this portal's (for its other end).
+    auto wrap = [&](int side, int k) {
+      apex = side > 0 ? left_of(k) : right_of(k);
+      corners.push_back(apex);
+      left = right = apex;
+      apex_index = left_index = right_index = k;
+      i = k == i ? k - 1 : k;
+    };
+    // Tighten the right side, or let it cross the left: a left corner becomes the apex.
     if (new_right.same(apex)) {
       right = new_right;
       right_index = i;
@@ -84,11 +147,16 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
       if (left.same(apex) || cross(direction(apex, left, ok), to_new_right) <= 0) {
         right = new_right;
         right_index = i;
-      } else {
-        corners.push_back(left);
-        apex = right = left;
-        i = right_index = left_index;
+      } else if (i < n) {
+        // Crossed: the left corner comes first, unless the new right one
+        // stands in the way to it (with circles, either may).
+        wrap(blocks(new_right, apex, left) ? -1 : +1, blocks(new_right, apex, left) ? i : left_index);
         continue;
+      } else if (const std::optional<int> k = blocking(+1)) {
+        wrap(+1, *k);
+        continue;
+      } else {
+        break;  // the goal is in plain view
       }
     }
     if (new_left.same(apex)) {
@@ -100,11 +168,14 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
       if (right.same(apex) || cross(direction(apex, right, ok), to_new_left) >= 0) {
         left = new_left;
         left_index = i;
-      } else {
-        corners.push_back(right);
-        apex = left = right;
-        i = left_index = right_index;
+      } else if (i < n) {
+        wrap(blocks(new_left, apex, right) ? +1 : -1, blocks(new_left, apex, right) ? i : right_index);
         continue;
+      } else if (const std::optional<int> k = blocking(-1)) {
+        wrap(-1, *k);
+        continue;
+      } else {
+        break;
       }
     }
     if (!ok) {
@@ -113,6 +184,7 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
     }
   }
   corners.push_back({goal, 0.0, 0});
+  drop_wrong_turns(corners);
   result.points.push_back(start);
   for (std::size_t k = 0; k + 1 < corners.size(); ++k) {
     Vec2 from, to;

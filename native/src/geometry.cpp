@@ -15,11 +15,13 @@ double wrap_angle(double angle) {
   return wrapped;
 }
 
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double len2 = dot(ab, ab);
   const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return distance(p, a + t * ab);
+  return a + t * ab;
 }
+
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) { return distance(p, closest_on_segment(p, a, b)); }
 
 }  // namespace footfall

@@ -43,19 +43,29 @@ double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
                   std::min(distance_to_segment(c, a, b), distance_to_segment(d, a, b)));
 }
 
-double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, double limit) {
+double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, double limit,
+                         Vec2* nearest) {
   double best = limit;
+  auto consider = [&](double d, Vec2 obstacle_point) {
+    if (d >= best) return;
+    best = d;
+    if (nearest != nullptr) *nearest = obstacle_point;
+  };
   std::unordered_set<Face> seen{start};
   std::vector<Face> stack{start};
   while (!stack.empty()) {
     const Face f = stack.back();
     stack.pop_back();
     for (int i = 0; i < 3; ++i) {
-      best = std::min(best, distance_to_segment(to_vec(f->vertex(i)->point()), a, b));
+      const Vec2 v = to_vec(f->vertex(i)->point());
+      consider(distance_to_segment(v, a, b), v);
       const Vec2 c = to_vec(f->vertex(Cdt::ccw(i))->point()), d = to_vec(f->vertex(Cdt::cw(i))->point());
       const double gap = segment_distance(a, b, c, d);
       if (f->is_constrained(i)) {
-        best = std::min(best, gap);
+        // Off the edge's ends (its vertices are seen above), the nearest
+        // point is the foot of a or b on the edge.
+        const Vec2 foot_a = closest_on_segment(a, c, d), foot_b = closest_on_segment(b, c, d);
+        consider(gap, distance(a, foot_a) <= distance(b, foot_b) ? foot_a : foot_b);
       } else if (gap < best && !mesh.cdt.is_infinite(f->neighbor(i)) &&
                  seen.insert(f->neighbor(i)).second) {
         stack.push_back(f->neighbor(i));

@@ -12,9 +12,12 @@ namespace footfall {
 /// `start` is a walkable face that contains `a`. Exact up to rounding: every
 /// vertex lies on an obstacle, and the walk crosses only unconstrained edges
 /// nearer to the segment than the best distance found so far, which the
-/// segment from the nearest point to its obstacle always does. [m]
+/// segment from the nearest point to its obstacle always does. With
+/// `nearest`, also the obstacle point at that distance (unset if none is
+/// nearer than `limit`). [m]
 double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b,
-                         double limit = std::numeric_limits<double>::infinity());
+                         double limit = std::numeric_limits<double>::infinity(),
+                         Vec2* nearest = nullptr);
 
 /// Width of the passage around corner `corner` of walkable face `f`: the
 /// distance from that corner to the nearest obstacle seen across the opposite

@@ -51,6 +51,9 @@ inline bool in_world(Vec2 a) {
 /// `angle` wrapped into (-pi, pi]. [rad]
 double wrap_angle(double angle);
 
+/// The point of the segment [a, b] nearest to `p`. [m]
+Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b);
+
 /// Distance from point `p` to the segment [a, b]. [m]
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b);
 
