@@ -170,7 +170,7 @@ double polyline_length(const std::vector<Vec2>& points) {
 /// Where a polyline comes nearest to the obstacles.
 struct Pinch {
   double clearance = std::numeric_limits<double>::infinity();
-  Vec2 obstacle;    ///< The obstacle point there.
+  NearestObstacle obstacle;  ///< The obstacle point there, and its edge.
   Vec2 path_point;  ///< The polyline's point nearest to it.
   Vec2 heading;     ///< The polyline's direction there.
   double along = 0.0;       ///< Length of the polyline up to `path_point`.
@@ -189,10 +189,10 @@ Pinch find_pinch(const NavMeshState& mesh, const std::vector<Vec2>& points) {
       pinch.in_free_space = false;
       return pinch;
     }
-    Vec2 obstacle;
+    NearestObstacle obstacle;
     const double d = obstacle_distance(mesh, hint, a, b, pinch.clearance, &obstacle);
     if (d < pinch.clearance) {
-      const Vec2 on_path = closest_on_segment(obstacle, a, b);
+      const Vec2 on_path = closest_on_segment(obstacle.point, a, b);
       pinch = {d, obstacle, on_path, b - a, along + distance(a, on_path), true};
     }
     along += distance(a, b);
@@ -268,10 +268,18 @@ bool clear_path(const NavMeshState& mesh, const PathQuery& q, const Channel& cha
       return true;
     }
     if (!pinch.in_free_space) return false;
-    for (const ExtraCorner& corner : extra)
-      if (corner.point == pinch.obstacle) return false;  // wrapped already: no progress
-    extra.push_back({face_index(channel, pinch.path_point), pinch.along, pinch.obstacle,
-                     cross(pinch.heading, pinch.obstacle - pinch.path_point) > 0});
+    // Near an edge, its ends are the corners to wrap (its foot slides along
+    // as the path bends); the foot itself only once both ends are in.
+    const NearestObstacle& near = pinch.obstacle;
+    const bool left = cross(pinch.heading, near.point - pinch.path_point) > 0;
+    auto known = [&](Vec2 p) {
+      return std::any_of(extra.begin(), extra.end(), [&](const ExtraCorner& c) { return c.point == p; });
+    };
+    const Vec2 candidates[3] = {near.edge_from, near.edge_to, near.point};
+    const Vec2* corner = std::find_if(std::begin(candidates), std::end(candidates),
+                                      [&](Vec2 p) { return !known(p); });
+    if (corner == std::end(candidates)) return false;  // all wrapped already: no progress
+    extra.push_back({face_index(channel, *corner), pinch.along, *corner, left});
   }
   return false;
 }

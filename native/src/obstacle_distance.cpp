@@ -44,12 +44,12 @@ double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 }
 
 double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, double limit,
-                         Vec2* nearest) {
+                         NearestObstacle* nearest) {
   double best = limit;
-  auto consider = [&](double d, Vec2 obstacle_point) {
+  auto consider = [&](double d, NearestObstacle found) {
     if (d >= best) return;
     best = d;
-    if (nearest != nullptr) *nearest = obstacle_point;
+    if (nearest != nullptr) *nearest = found;
   };
   std::unordered_set<Face> seen{start};
   std::vector<Face> stack{start};
@@ -58,14 +58,14 @@ double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, d
     stack.pop_back();
     for (int i = 0; i < 3; ++i) {
       const Vec2 v = to_vec(f->vertex(i)->point());
-      consider(distance_to_segment(v, a, b), v);
+      consider(distance_to_segment(v, a, b), {v, v, v});
       const Vec2 c = to_vec(f->vertex(Cdt::ccw(i))->point()), d = to_vec(f->vertex(Cdt::cw(i))->point());
       const double gap = segment_distance(a, b, c, d);
       if (f->is_constrained(i)) {
         // Off the edge's ends (its vertices are seen above), the nearest
         // point is the foot of a or b on the edge.
         const Vec2 foot_a = closest_on_segment(a, c, d), foot_b = closest_on_segment(b, c, d);
-        consider(gap, distance(a, foot_a) <= distance(b, foot_b) ? foot_a : foot_b);
+        consider(gap, {distance(a, foot_a) <= distance(b, foot_b) ? foot_a : foot_b, c, d});
       } else if (gap < best && !mesh.cdt.is_infinite(f->neighbor(i)) &&
                  seen.insert(f->neighbor(i)).second) {
         stack.push_back(f->neighbor(i));

@@ -8,16 +8,23 @@
 
 namespace footfall {
 
+/// The obstacle point nearest to a segment, and the obstacle edge it lies on.
+struct NearestObstacle {
+  Vec2 point;
+  Vec2 edge_from, edge_to;  ///< Ends of that edge; both `point` at a vertex.
+  bool on_vertex() const { return edge_from == point && edge_to == point; }
+};
+
 /// Distance from the segment [a, b] to the nearest obstacle or boundary.
 /// `start` is a walkable face that contains `a`. Exact up to rounding: every
 /// vertex lies on an obstacle, and the walk crosses only unconstrained edges
 /// nearer to the segment than the best distance found so far, which the
 /// segment from the nearest point to its obstacle always does. With
-/// `nearest`, also the obstacle point at that distance (unset if none is
-/// nearer than `limit`). [m]
+/// `nearest`, also where that obstacle is (unset if none is nearer than
+/// `limit`). [m]
 double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b,
                          double limit = std::numeric_limits<double>::infinity(),
-                         Vec2* nearest = nullptr);
+                         NearestObstacle* nearest = nullptr);
 
 /// Width of the passage around corner `corner` of walkable face `f`: the
 /// distance from that corner to the nearest obstacle seen across the opposite
