@@ -2,6 +2,7 @@
 // stupid funnel" over corners of radius r, Demyen's and Kallmann's extension).
 #include "channel_funnel.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -16,6 +17,7 @@ struct Corner {
   Vec2 center;
   double radius = 0.0;
   int side = 0;
+  int portal = -1;  ///< Index of the portal it ends (the goal: the portal count).
   bool same(const Corner& o) const { return center == o.center && side == o.side; }
 };
 
@@ -71,6 +73,76 @@ bool blocks(const Corner& c, const Corner& apex, const Corner& target) {
   return beside < c.radius;
 }
 
+/// Where the path meets corner k's circle (`in`) and leaves it (`out`).
+struct Touch {
+  Vec2 in, out;
+};
+
+/// The touch points of the path through `corners`; false if two corners
+/// leave no straight way between them.
+bool touch_points(const std::vector<Corner>& corners, std::vector<Touch>& touches) {
+  touches.assign(corners.size(), {});
+  touches.front().in = corners.front().center;
+  touches.back().out = corners.back().center;
+  for (std::size_t k = 0; k + 1 < corners.size(); ++k)
+    if (!tangent(corners[k], corners[k + 1], touches[k].out, touches[k + 1].in)) return false;
+  return true;
+}
+
+/// The polyline of tangents and arcs (arcs on their circumscribed polygons).
+std::vector<Vec2> trace(const std::vector<Corner>& corners, const std::vector<Touch>& touches,
+                        double tolerance) {
+  std::vector<Vec2> points{corners.front().center};
+  for (std::size_t k = 1; k < corners.size(); ++k) {
+    if (k > 1) append_arc(corners[k - 1], touches[k - 1].in, touches[k - 1].out, tolerance, points);
+    points.push_back(touches[k].in);
+  }
+  return points;
+}
+
+/// How near the arc of `c` from `in` to `out` comes to `p`, if the nearest
+/// point lies inside the arc (the tangents cover its ends).
+std::optional<double> arc_distance(const Corner& c, const Touch& t, Vec2 p) {
+  if (c.radius == 0.0) return std::nullopt;
+  const Vec2 a = t.in - c.center, b = t.out - c.center, v = p - c.center;
+  // Inside the sweep from a to b, turning c.side's way (less than a full turn).
+  const bool inside = c.side * cross(a, b) >= 0
+                          ? c.side * cross(a, v) >= 0 && c.side * cross(v, b) >= 0
+                          : !(c.side * cross(b, v) > 0 && c.side * cross(v, a) > 0);
+  if (!inside) return std::nullopt;
+  return std::fabs(length(v) - c.radius);
+}
+
+/// The first portal end (2 i for portal i's left, 2 i + 1 for its right)
+/// that the path passes nearer than `radius` or on the wrong side. A portal
+/// end is checked against the tangent that crosses its portal and the arcs
+/// at both ends of that tangent.
+std::optional<std::size_t> first_missed_end(const std::vector<Portal>& portals, double radius,
+                                             const std::vector<Corner>& corners,
+                                             const std::vector<Touch>& touches) {
+  constexpr double kSlack = 1e-9;
+  std::size_t k = 0;  // corners[k] is the last corner at or before the portal
+  for (std::size_t i = 0; i < portals.size(); ++i) {
+    while (k + 2 < corners.size() && corners[k + 1].portal <= static_cast<int>(i)) ++k;
+    const Vec2 from = touches[k].out, to = touches[k + 1].in;
+    for (int side : {+1, -1}) {
+      const Vec2 end = side > 0 ? portals[i].left : portals[i].right;
+      if ((corners[k].center == end && corners[k].side == side) ||
+          (corners[k + 1].center == end && corners[k + 1].side == side)) {
+        continue;  // wrapped: exactly at the radius
+      }
+      double gap = distance_to_segment(end, from, to);
+      for (std::size_t j : {k, k + 1})
+        if (const std::optional<double> d = arc_distance(corners[j], touches[j], end)) gap = std::min(gap, *d);
+      const Vec2 way = to - from;
+      const double along = dot(end - from, way);
+      const bool wrong_side = along > 0 && along < dot(way, way) && side * cross(way, end - from) < 0;
+      if (wrong_side || gap < radius - kSlack) return 2 * i + (side > 0 ? 0 : 1);
+    }
+  }
+  return std::nullopt;
+}
+
 /// Removes corners the path would wrap the wrong way round (a left corner
 /// turned clockwise, or more than half a turn): with circles, two corners on
 /// opposite sides can cross the funnel before a later, tighter corner of the
@@ -99,33 +171,15 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
   FunnelPath result;
   const int n = static_cast<int>(portals.size());
   auto left_of = [&](int i) {
-    return i < n ? Corner{portals[i].left, radius, +1} : Corner{goal, 0.0, 0};
+    return i < n ? Corner{portals[i].left, radius, +1, i} : Corner{goal, 0.0, 0, n};
   };
   auto right_of = [&](int i) {
-    return i < n ? Corner{portals[i].right, radius, -1} : Corner{goal, 0.0, 0};
+    return i < n ? Corner{portals[i].right, radius, -1, i} : Corner{goal, 0.0, 0, n};
   };
   std::vector<Corner> corners{{start, 0.0, 0}};
   Corner apex = corners.front(), left = apex, right = apex;
   int apex_index = -1, left_index = -1, right_index = -1;
   bool ok = true;
-  // The corner on one side (+1 left, -1 right) that the way to the goal must
-  // wrap, or none. The funnel's side corner, tested against its tangent line,
-  // can lie beyond a goal that stops short of it; then an earlier corner of
-  // that side, or none, is the one that blocks the way.
-  auto blocking = [&](int side) -> std::optional<int> {
-    std::optional<int> best;
-    Vec2 best_direction;
-    for (int k = apex_index + 1; k < n; ++k) {
-      const Corner c = side > 0 ? left_of(k) : right_of(k);
-      if (c.same(apex) || !blocks(c, apex, {goal, 0.0, 0})) continue;
-      const Vec2 d = direction(apex, c, ok);
-      if (!best || side * cross(best_direction, d) < 0) {
-        best = k;
-        best_direction = d;
-      }
-    }
-    return best;
-  };
   for (int i = 0; i <= n; ++i) {
     const Corner new_left = left_of(i), new_right = right_of(i);
     // Makes the corner of `side` at portal `k` the apex; the scan goes on
@@ -147,16 +201,11 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
       if (left.same(apex) || cross(direction(apex, left, ok), to_new_right) <= 0) {
         right = new_right;
         right_index = i;
-      } else if (i < n) {
+      } else {
         // Crossed: the left corner comes first, unless the new right one
         // stands in the way to it (with circles, either may).
         wrap(blocks(new_right, apex, left) ? -1 : +1, blocks(new_right, apex, left) ? i : left_index);
         continue;
-      } else if (const std::optional<int> k = blocking(+1)) {
-        wrap(+1, *k);
-        continue;
-      } else {
-        break;  // the goal is in plain view
       }
     }
     if (new_left.same(apex)) {
@@ -168,14 +217,9 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
       if (right.same(apex) || cross(direction(apex, right, ok), to_new_left) >= 0) {
         left = new_left;
         left_index = i;
-      } else if (i < n) {
+      } else {
         wrap(blocks(new_left, apex, right) ? +1 : -1, blocks(new_left, apex, right) ? i : right_index);
         continue;
-      } else if (const std::optional<int> k = blocking(-1)) {
-        wrap(-1, *k);
-        continue;
-      } else {
-        break;
       }
     }
     if (!ok) {
@@ -183,17 +227,26 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
       return result;
     }
   }
-  corners.push_back({goal, 0.0, 0});
-  drop_wrong_turns(corners);
-  result.points.push_back(start);
-  for (std::size_t k = 0; k + 1 < corners.size(); ++k) {
-    Vec2 from, to;
-    if (!tangent(corners[k], corners[k + 1], from, to)) {
+  corners.push_back({goal, 0.0, 0, n});
+  // The funnel's corners are a first guess; a portal end the path still
+  // passes too near or on the wrong side joins them, until none does.
+  for (int round = 0;; ++round) {
+    drop_wrong_turns(corners);
+    std::vector<Touch> touches;
+    if (!touch_points(corners, touches) || round > n + 4) {
       result.failed_portal = n > 0 ? n - 1 : 0;
       return result;
     }
-    if (k > 0) append_arc(corners[k], result.points.back(), from, tolerance, result.points);
-    result.points.push_back(to);
+    const std::optional<std::size_t> missing = first_missed_end(portals, radius, corners, touches);
+    if (!missing) {
+      result.points = trace(corners, touches, tolerance);
+      break;
+    }
+    const Corner end = *missing % 2 == 0 ? left_of(static_cast<int>(*missing / 2))
+                                         : right_of(static_cast<int>(*missing / 2));
+    const auto after = std::find_if(corners.begin(), corners.end(),
+                                    [&](const Corner& c) { return c.portal > end.portal; });
+    corners.insert(after, end);
   }
   result.ok = true;
   return result;
