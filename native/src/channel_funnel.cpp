@@ -100,23 +100,10 @@ std::vector<Vec2> trace(const std::vector<Corner>& corners, const std::vector<To
   return points;
 }
 
-/// How near the arc of `c` from `in` to `out` comes to `p`, if the nearest
-/// point lies inside the arc (the tangents cover its ends).
-std::optional<double> arc_distance(const Corner& c, const Touch& t, Vec2 p) {
-  if (c.radius == 0.0) return std::nullopt;
-  const Vec2 a = t.in - c.center, b = t.out - c.center, v = p - c.center;
-  // Inside the sweep from a to b, turning c.side's way (less than a full turn).
-  const bool inside = c.side * cross(a, b) >= 0
-                          ? c.side * cross(a, v) >= 0 && c.side * cross(v, b) >= 0
-                          : !(c.side * cross(b, v) > 0 && c.side * cross(v, a) > 0);
-  if (!inside) return std::nullopt;
-  return std::fabs(length(v) - c.radius);
-}
-
 /// The first portal end (2 i for portal i's left, 2 i + 1 for its right)
-/// that the path passes nearer than `radius` or on the wrong side. A portal
-/// end is checked against the tangent that crosses its portal and the arcs
-/// at both ends of that tangent.
+/// that the path passes nearer than `radius` or on the wrong side. Where a
+/// corner ends the portal, the path crosses it on that corner's arc, which
+/// the fan test keeps in the channel; elsewhere it crosses on one tangent.
 std::optional<std::size_t> first_missed_end(const std::vector<Portal>& portals, double radius,
                                              const std::vector<Corner>& corners,
                                              const std::vector<Touch>& touches) {
@@ -124,44 +111,71 @@ std::optional<std::size_t> first_missed_end(const std::vector<Portal>& portals, 
   std::size_t k = 0;  // corners[k] is the last corner at or before the portal
   for (std::size_t i = 0; i < portals.size(); ++i) {
     while (k + 2 < corners.size() && corners[k + 1].portal <= static_cast<int>(i)) ++k;
-    const Vec2 from = touches[k].out, to = touches[k + 1].in;
+    auto is_corner = [&](const Corner& c) {
+      return (c.side > 0 && c.center == portals[i].left) || (c.side < 0 && c.center == portals[i].right);
+    };
+    if (is_corner(corners[k]) || is_corner(corners[k + 1])) continue;
+    const Vec2 from = touches[k].out, to = touches[k + 1].in, way = to - from;
     for (int side : {+1, -1}) {
       const Vec2 end = side > 0 ? portals[i].left : portals[i].right;
-      if ((corners[k].center == end && corners[k].side == side) ||
-          (corners[k + 1].center == end && corners[k + 1].side == side)) {
-        continue;  // wrapped: exactly at the radius
-      }
-      double gap = distance_to_segment(end, from, to);
-      for (std::size_t j : {k, k + 1})
-        if (const std::optional<double> d = arc_distance(corners[j], touches[j], end)) gap = std::min(gap, *d);
-      const Vec2 way = to - from;
       const double along = dot(end - from, way);
       const bool wrong_side = along > 0 && along < dot(way, way) && side * cross(way, end - from) < 0;
-      if (wrong_side || gap < radius - kSlack) return 2 * i + (side > 0 ? 0 : 1);
+      if (wrong_side || distance_to_segment(end, from, to) < radius - kSlack)
+        return 2 * i + (side > 0 ? 0 : 1);
     }
   }
   return std::nullopt;
 }
 
-/// Removes corners the path would wrap the wrong way round (a left corner
-/// turned clockwise, or more than half a turn): with circles, two corners on
-/// opposite sides can cross the funnel before a later, tighter corner of the
-/// same side shows that the path bends there instead. What stays is taut,
-/// every corner turned its own way.
-void drop_wrong_turns(std::vector<Corner>& corners) {
-  for (std::size_t k = 1; k + 1 < corners.size();) {
-    bool ok = true;
-    const Vec2 in = direction(corners[k - 1], corners[k], ok);
-    const Vec2 out = direction(corners[k], corners[k + 1], ok);
-    const double turn = corners[k].side * cross(in, out);
-    if (ok && (turn > 0 || (turn == 0 && dot(in, out) > 0))) {
-      ++k;
-      continue;
+/// Angle from `from` to `to` turning `side`'s way (+1 counter-clockwise), in [0, 2 pi).
+double sweep(int side, double from, double to) {
+  double a = side * (to - from);
+  while (a < 0) a += 2 * kPi;
+  while (a >= 2 * kPi) a -= 2 * kPi;
+  return a;
+}
+
+/// How far the arc of corner k reaches beyond the channel's fan of triangles
+/// around it (<= 0 if it stays inside). The fan runs through the portals that end at the corner, from
+/// the vertex before them to the vertex after them (the start or the goal at
+/// the channel's ends, whose directions lie inside the end triangles' fans).
+double arc_excess(const std::vector<Corner>& corners, std::size_t k, Vec2 start, Vec2 goal,
+                  const std::vector<Portal>& portals) {
+  const Corner& c = corners[k];
+  const int n = static_cast<int>(portals.size());
+  auto end_of = [&](int i) { return c.side > 0 ? portals[i].left : portals[i].right; };
+  int first = c.portal, last = c.portal;
+  while (first > 0 && end_of(first - 1) == c.center) --first;
+  while (last + 1 < n && end_of(last + 1) == c.center) ++last;
+  const Vec2 before = first > 0 ? end_of(first - 1) : start;
+  const Vec2 after = last + 1 < n ? end_of(last + 1) : goal;
+  Vec2 from, in, out, to;
+  if (!tangent(corners[k - 1], c, from, in) || !tangent(c, corners[k + 1], out, to)) return 2 * kPi;
+  const double lo = angle_of(before - c.center);
+  double fan = sweep(c.side, lo, angle_of(after - c.center));
+  if (fan == 0.0) fan = 2 * kPi;  // round the tip of a wall: in on one face, out on the other
+  const double arc_start = sweep(c.side, lo, angle_of(in - c.center));
+  const double arc = sweep(c.side, angle_of(in - c.center), angle_of(out - c.center));
+  return arc_start + arc - fan;
+}
+
+/// The corner whose arc reaches farthest out of its fan, if any does: with
+/// circles, two corners on opposite sides can cross the funnel before a
+/// later, tighter corner of the same side shows that the path bends there
+/// instead, and the path would loop round the first one.
+std::optional<std::size_t> worst_wrap(const std::vector<Corner>& corners, Vec2 start, Vec2 goal,
+                                      const std::vector<Portal>& portals) {
+  std::optional<std::size_t> worst;
+  double most = 1e-12;
+  for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
+    if (corners[k].radius == 0.0) continue;
+    const double excess = arc_excess(corners, k, start, goal, portals);
+    if (excess > most) {
+      most = excess;
+      worst = k;
     }
-    if (!ok) return;  // no tangent at all: the funnel reports the channel too narrow
-    corners.erase(corners.begin() + static_cast<long>(k));
-    k = std::max<std::size_t>(1, k - 1);
   }
+  return worst;
 }
 
 }  // namespace
@@ -231,22 +245,25 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
   // The funnel's corners are a first guess; a portal end the path still
   // passes too near or on the wrong side joins them, until none does.
   for (int round = 0;; ++round) {
-    drop_wrong_turns(corners);
     std::vector<Touch> touches;
-    if (!touch_points(corners, touches) || round > n + 4) {
+    if (!touch_points(corners, touches) || round > 2 * n + 4) {
       result.failed_portal = n > 0 ? n - 1 : 0;
       return result;
     }
-    const std::optional<std::size_t> missing = first_missed_end(portals, radius, corners, touches);
-    if (!missing) {
-      result.points = trace(corners, touches, tolerance);
-      break;
+    if (const std::optional<std::size_t> missing = first_missed_end(portals, radius, corners, touches)) {
+      const Corner end = *missing % 2 == 0 ? left_of(static_cast<int>(*missing / 2))
+                                           : right_of(static_cast<int>(*missing / 2));
+      const auto after = std::find_if(corners.begin(), corners.end(),
+                                      [&](const Corner& c) { return c.portal > end.portal; });
+      corners.insert(after, end);
+      continue;
     }
-    const Corner end = *missing % 2 == 0 ? left_of(static_cast<int>(*missing / 2))
-                                         : right_of(static_cast<int>(*missing / 2));
-    const auto after = std::find_if(corners.begin(), corners.end(),
-                                    [&](const Corner& c) { return c.portal > end.portal; });
-    corners.insert(after, end);
+    if (const std::optional<std::size_t> loose = worst_wrap(corners, start, goal, portals)) {
+      corners.erase(corners.begin() + static_cast<long>(*loose));
+      continue;
+    }
+    result.points = trace(corners, touches, tolerance);
+    break;
   }
   result.ok = true;
   return result;
