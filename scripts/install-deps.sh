@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   cmake g++ make
   pybind11-dev nlohmann-json3-dev libpugixml-dev libcgal-dev python3-dev
-  libgtest-dev
+  libgtest-dev libbenchmark-dev
   python3-pytest
   blender
 )

@@ -62,6 +62,7 @@ double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, d
       const Vec2 c = to_vec(f->vertex(Cdt::ccw(i))->point()), d = to_vec(f->vertex(Cdt::cw(i))->point());
       const double gap = segment_distance(a, b, c, d);
       if (f->is_constrained(i)) {
+        if (gap >= best) continue;
         // Off the edge's ends (its vertices are seen above), the nearest
         // point is the foot of a or b on the edge.
         const Vec2 foot_a = closest_on_segment(a, c, d), foot_b = closest_on_segment(b, c, d);

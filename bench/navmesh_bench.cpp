@@ -1,0 +1,178 @@
+// Footfall — navigation mesh benchmarks (Google Benchmark): the issue's
+// 1000 x 1000 m scenes with 2,000 and 10,000 random boxes of 1-6 m, and a
+// room-scale scene. Build, path queries over the whole domain at radii
+// 0.25-3 m, the funnel alone, point obstacles inserted and removed, and boxes
+// moved. Run: build/bench/footfall_navmesh_bench
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "channel_funnel.hpp"
+#include "footfall/navmesh.hpp"
+
+namespace footfall {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// A box scene: the domain and its boxes, each a turned rectangle.
+struct BoxScene {
+  Vec2 min_corner, max_corner;
+  std::vector<std::vector<Vec2>> boxes;
+};
+
+std::vector<Vec2> box_at(Vec2 centre, Vec2 half, double angle) {
+  std::vector<Vec2> out;
+  for (Vec2 corner : {Vec2{-half.x, -half.y}, Vec2{half.x, -half.y}, half, Vec2{-half.x, half.y}})
+    out.push_back(centre + rotate(corner, angle));
+  return out;
+}
+
+/// `count` boxes with sides of 1-6 m, turned at random, anywhere in the square
+/// of side `size` (they may overlap, as scattered props do).
+BoxScene box_scene(int count, double size, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> where(0.0, size), side(1.0, 6.0), turn(0.0, kPi);
+  BoxScene scene{{0, 0}, {size, size}, {}};
+  for (int i = 0; i < count; ++i) {
+    const Vec2 centre{where(rng), where(rng)};
+    const Vec2 half{0.5 * side(rng), 0.5 * side(rng)};
+    scene.boxes.push_back(box_at(centre, half, turn(rng)));
+  }
+  return scene;
+}
+
+std::unique_ptr<NavMesh> build(const BoxScene& scene) {
+  auto mesh = std::make_unique<NavMesh>(scene.min_corner, scene.max_corner);
+  for (const auto& box : scene.boxes) mesh->add_polygon(box);
+  return mesh;
+}
+
+/// Start and goal pairs spread over the whole domain, both clear by `radius`.
+std::vector<PathQuery> queries(const NavMesh& mesh, double radius, int count, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  const Vec2 lo = mesh.min_corner(), hi = mesh.max_corner();
+  std::uniform_real_distribution<double> x(lo.x, hi.x), y(lo.y, hi.y);
+  auto free_point = [&] {
+    for (;;) {
+      const Vec2 p{x(rng), y(rng)};
+      if (mesh.clearance(p) > radius) return p;
+    }
+  };
+  std::vector<PathQuery> out;
+  for (int i = 0; i < count; ++i) out.push_back({free_point(), free_point(), radius, 0.01});
+  return out;
+}
+
+/// The scenes are built once per process; benchmarks share them.
+const BoxScene& scene_of(int boxes) {
+  static const BoxScene two_thousand = box_scene(2000, 1000.0, 1);
+  static const BoxScene ten_thousand = box_scene(10000, 1000.0, 2);
+  static const BoxScene room = box_scene(60, 30.0, 3);
+  return boxes == 2000 ? two_thousand : boxes == 10000 ? ten_thousand : room;
+}
+
+const NavMesh& mesh_of(int boxes) {
+  static const std::unique_ptr<NavMesh> two_thousand = build(scene_of(2000));
+  static const std::unique_ptr<NavMesh> ten_thousand = build(scene_of(10000));
+  static const std::unique_ptr<NavMesh> room = build(scene_of(60));
+  return boxes == 2000 ? *two_thousand : boxes == 10000 ? *ten_thousand : *room;
+}
+
+void BM_Build(benchmark::State& state) {
+  const BoxScene& scene = scene_of(static_cast<int>(state.range(0)));
+  std::size_t triangles = 0;
+  for (auto _ : state) {
+    const auto mesh = build(scene);
+    triangles = mesh->triangle_count();
+    benchmark::DoNotOptimize(triangles);
+  }
+  state.counters["triangles"] = static_cast<double>(triangles);
+}
+BENCHMARK(BM_Build)->Arg(60)->Arg(2000)->Arg(10000)->Unit(benchmark::kMillisecond);
+
+/// Path queries; range(1) is the radius in centimetres.
+void BM_Query(benchmark::State& state) {
+  const NavMesh& mesh = mesh_of(static_cast<int>(state.range(0)));
+  const std::vector<PathQuery> all = queries(mesh, static_cast<double>(state.range(1)) / 100.0, 200, 7);
+  std::size_t i = 0, found = 0, asked = 0;
+  for (auto _ : state) {
+    const PathResult result = mesh.find_path(all[i]);
+    found += result.status == PathStatus::kFound;
+    ++asked;
+    i = (i + 1) % all.size();
+  }
+  state.counters["found"] = static_cast<double>(found) / static_cast<double>(asked);
+  state.counters["triangles"] = static_cast<double>(mesh.triangle_count());
+}
+BENCHMARK(BM_Query)
+    ->ArgsProduct({{60}, {25, 100}})
+    ->ArgsProduct({{2000, 10000}, {25, 100, 300}})
+    ->Unit(benchmark::kMicrosecond);
+
+/// The funnel alone through a winding corridor of `range(0)` portals, 3 m wide.
+void BM_Funnel(benchmark::State& state) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> bend(-0.6, 0.6);
+  std::vector<Portal> portals;
+  Vec2 at{0, 0};
+  double heading = 0.0;
+  for (int i = 0; i < state.range(0); ++i) {
+    heading += bend(rng);
+    at = at + 1.5 * unit(heading);
+    const Vec2 across = 1.5 * perp(unit(heading));
+    portals.push_back({at + across, at - across});
+  }
+  const Vec2 start{-1.0, 0.0};
+  const Vec2 goal = at + 1.5 * unit(heading);
+  std::size_t points = 0;
+  for (auto _ : state) {
+    const FunnelPath path = funnel(start, goal, portals, 0.25, 0.01);
+    points = path.points.size();
+    benchmark::DoNotOptimize(points);
+  }
+  state.counters["points"] = static_cast<double>(points);
+}
+BENCHMARK(BM_Funnel)->Arg(16)->Arg(64)->Unit(benchmark::kMicrosecond);
+
+/// A point obstacle inserted and removed again (repair included): the time
+/// of one such pair.
+void BM_PointInsertRemove(benchmark::State& state) {
+  auto mesh = build(scene_of(static_cast<int>(state.range(0))));
+  const std::vector<PathQuery> spots = queries(*mesh, 0.5, 256, 9);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const int id = mesh->add_point(spots[i].from);
+    mesh->remove(id);
+    i = (i + 1) % spots.size();
+  }
+}
+BENCHMARK(BM_PointInsertRemove)->Arg(2000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+/// One box moved by 0.5 m: removed and inserted at its new place.
+void BM_MoveBox(benchmark::State& state) {
+  const BoxScene& scene = scene_of(static_cast<int>(state.range(0)));
+  auto mesh = std::make_unique<NavMesh>(scene.min_corner, scene.max_corner);
+  std::vector<int> ids;
+  for (const auto& box : scene.boxes) ids.push_back(mesh->add_polygon(box));
+  std::vector<std::vector<Vec2>> boxes = scene.boxes;
+  std::size_t i = 0;
+  double step = 0.5;
+  for (auto _ : state) {
+    for (Vec2& corner : boxes[i]) corner.x += step;
+    mesh->remove(ids[i]);
+    ids[i] = mesh->add_polygon(boxes[i]);
+    i = (i + 1) % boxes.size();
+    if (i == 0) step = -step;  // back and forth, so the scene stays the same
+  }
+}
+BENCHMARK(BM_MoveBox)->Arg(2000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace footfall
+
+BENCHMARK_MAIN();
