@@ -15,13 +15,5 @@ double wrap_angle(double angle) {
   return wrapped;
 }
 
-Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return a + t * ab;
-}
-
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) { return distance(p, closest_on_segment(p, a, b)); }
 
 }  // namespace footfall

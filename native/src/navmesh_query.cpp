@@ -12,10 +12,9 @@
 // channel they accept), which is why every funnel path is measured against
 // the obstacles; a channel that fails is skipped and the search goes on.
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <queue>
 #include <stdexcept>
 #include <tuple>
@@ -29,6 +28,7 @@ namespace footfall {
 namespace {
 
 constexpr int kNoEdge = 3;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// How often one (triangle, entry edge) state may be expanded, by channels
 /// that reach it with a shorter estimate each time: enough for the few
 /// channels that compete, and it bounds the work to a few passes over the mesh.
@@ -87,11 +87,11 @@ class ChannelSearch {
  public:
   ChannelSearch(const NavMeshState& mesh, const PathQuery& q, Face start, Face goal)
       : mesh_(mesh), q_(q), goal_(goal) {
+    faces_.reserve(1024);
     nodes_.push_back({start, kNoEdge, -1, q_.from, 0.0, distance(q_.from, q_.to)});
     open_.push({nodes_[0].bound, nodes_[0].bound, 0});
   }
 
-  std::size_t node_count() const { return nodes_.size(); }
   /// The next channel to the goal, in order of `bound`, the lower bound on
   /// the length of a path through it; false when none is left.
   bool next(Channel& channel, double& bound) {
@@ -104,7 +104,7 @@ class ChannelSearch {
         bound = node.bound;
         return true;
       }
-      State& state = states_[node.face][node.entry];
+      State& state = faces_[node.face].entries[node.entry];
       if (state.expansions == kMaxExpansions || node.g >= state.best_g) continue;
       ++state.expansions;
       state.best_g = node.g;
@@ -132,7 +132,7 @@ class ChannelSearch {
     open_.push({bound, g + distance(crossing, q_.to), static_cast<int>(nodes_.size() - 1)});
   }
 
-  bool passable(const Node& node, int exit) const {
+  bool passable(const Node& node, int exit) {
     const Face f = node.face;
     if (f->is_constrained(exit) || !mesh_.walkable(f->neighbor(exit))) return false;
     const double need = 2 * q_.radius;
@@ -140,7 +140,11 @@ class ChannelSearch {
     const Vec2 b = to_vec(f->vertex(Cdt::cw(exit))->point());
     if (distance(a, b) < need) return false;
     if (node.entry == kNoEdge) return true;
-    return corner_width(mesh_, f, 3 - node.entry - exit, need) >= need;
+    // Each corner's width is measured once per query, however often its
+    // face is expanded (the walk behind it is the costly part).
+    double& width = faces_[f].corner_width[3 - node.entry - exit];
+    if (std::isnan(width)) width = corner_width(mesh_, f, 3 - node.entry - exit, need);
+    return width >= need;
   }
 
   void unwind(int index, Channel& channel) const {
@@ -165,7 +169,13 @@ class ChannelSearch {
   /// (bound, estimated total length, node): lowest bound first, then the estimate.
   using Entry = std::tuple<double, double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open_;
-  std::unordered_map<Face, std::array<State, 4>> states_;
+  /// What the search knows of one face: its states by entry edge, and its
+  /// corners' widths (NaN until measured).
+  struct FaceSearch {
+    std::array<State, 4> entries;
+    std::array<double, 3> corner_width{kNaN, kNaN, kNaN};
+  };
+  std::unordered_map<Face, FaceSearch> faces_;
 };
 
 double polyline_length(const std::vector<Vec2>& points) {
@@ -354,12 +364,8 @@ PathResult NavMesh::find_path(const PathQuery& q) const {
   ChannelSearch search(m, q, start, goal);
   Channel channel;
   double bound = 0.0;
-  int channels = 0;
-  while (search.next(channel, bound) && bound * (1 + kLengthTolerance) < best) {
-    ++channels;
+  while (search.next(channel, bound) && bound * (1 + kLengthTolerance) < best)
     if (clear_path(m, q, channel, best, points, clearance)) keep(std::move(points), clearance);
-  }
-  if (getenv("FFCOUNT")) fprintf(stderr, "nodes %zu channels %d len %g straight %g\n", search.node_count(), channels, best, distance(q.from, q.to));
   return result;  // kNoPath unless a channel gave a path
 }
 

@@ -39,8 +39,9 @@ bool clip_to_wedge(Vec2 apex, Vec2 from, Vec2 to, Vec2& p, Vec2& q) {
 
 double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   if (segments_cross(a, b, c, d)) return 0.0;
-  return std::min(std::min(distance_to_segment(a, c, d), distance_to_segment(b, c, d)),
-                  std::min(distance_to_segment(c, a, b), distance_to_segment(d, a, b)));
+  return std::sqrt(
+      std::min(std::min(squared_distance_to_segment(a, c, d), squared_distance_to_segment(b, c, d)),
+               std::min(squared_distance_to_segment(c, a, b), squared_distance_to_segment(d, a, b))));
 }
 
 double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, double limit,

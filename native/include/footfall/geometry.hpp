@@ -2,6 +2,7 @@
 // ground is the XY plane; metres and radians.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace footfall {
@@ -52,10 +53,23 @@ inline bool in_world(Vec2 a) {
 double wrap_angle(double angle);
 
 /// The point of the segment [a, b] nearest to `p`. [m]
-Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b);
+inline Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return a + t * ab;
+}
+
+/// Squared distance from point `p` to the segment [a, b]. [m^2]
+inline double squared_distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 d = p - closest_on_segment(p, a, b);
+  return dot(d, d);
+}
 
 /// Distance from point `p` to the segment [a, b]. [m]
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b);
+inline double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  return std::sqrt(squared_distance_to_segment(p, a, b));
+}
 
 /// A circle in the ground plane.
 struct Circle {
