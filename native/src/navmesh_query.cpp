@@ -29,6 +29,13 @@ namespace {
 
 constexpr int kNoEdge = 3;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+/// A state is expanded again by a channel whose estimated length to it is
+/// below this factor times the best so far: the estimate (straight lines
+/// between crossing points) overrates channels that wind through many small
+/// triangles, so a rival that looks a little longer may be the shorter.
+constexpr double kRivalSlack = 1.25;
+/// How far back a new triangle is looked for in its own channel.
+constexpr int kLoopCheck = 32;
 /// How often one (triangle, entry edge) state may be expanded, by channels
 /// that reach it with a shorter estimate each time: enough for the few
 /// channels that compete, and it bounds the work to a few passes over the mesh.
@@ -105,9 +112,9 @@ class ChannelSearch {
         return true;
       }
       State& state = faces_[node.face].entries[node.entry];
-      if (state.expansions == kMaxExpansions || node.g >= state.best_g) continue;
+      if (state.expansions == kMaxExpansions || node.g >= kRivalSlack * state.best_g) continue;
       ++state.expansions;
-      state.best_g = node.g;
+      state.best_g = std::min(state.best_g, node.g);
       for (int exit = 0; exit < 3; ++exit)
         if (exit != node.entry && passable(node, exit)) push_child(index, exit);
     }
@@ -120,9 +127,18 @@ class ChannelSearch {
     double best_g = std::numeric_limits<double>::infinity();
   };
 
+  /// True if the channel ending at node `index` passed through `face` in its
+  /// last kLoopCheck steps: a channel that circles back is never the shortest.
+  bool circles_back(int index, Face face) const {
+    for (int i = index, k = 0; i >= 0 && k < kLoopCheck; i = nodes_[i].parent, ++k)
+      if (nodes_[i].face == face) return true;
+    return false;
+  }
+
   void push_child(int index, int exit) {
     const Node& node = nodes_[index];
     const Face next = node.face->neighbor(exit);
+    if (circles_back(index, next)) return;
     const Vec2 a = to_vec(node.face->vertex(Cdt::ccw(exit))->point());
     const Vec2 b = to_vec(node.face->vertex(Cdt::cw(exit))->point());
     const Vec2 crossing = nearest_on_portal(node.point, a, b, q_.radius);
