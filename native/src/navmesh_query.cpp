@@ -35,7 +35,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// triangles, so a rival that looks a little longer may be the shorter.
 constexpr double kRivalSlack = 1.25;
 /// How far back a new triangle is looked for in its own channel.
-constexpr int kLoopCheck = 32;
+constexpr int kLoopCheck = 8;
 /// How often one (triangle, entry edge) state may be expanded, by channels
 /// that reach it with a shorter estimate each time: enough for the few
 /// channels that compete, and it bounds the work to a few passes over the mesh.
@@ -112,7 +112,9 @@ class ChannelSearch {
         return true;
       }
       State& state = faces_[node.face].entries[node.entry];
-      if (state.expansions == kMaxExpansions || node.g >= kRivalSlack * state.best_g) continue;
+      const bool better = node.g < state.best_g;
+      if (!better && (state.expansions >= kMaxExpansions || node.g >= kRivalSlack * state.best_g))
+        continue;
       ++state.expansions;
       state.best_g = std::min(state.best_g, node.g);
       for (int exit = 0; exit < 3; ++exit)
