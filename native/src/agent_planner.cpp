@@ -1,5 +1,7 @@
 #include "footfall/agent_planner.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace footfall {
@@ -46,26 +48,98 @@ double AgentPlan::end_time() const { return footsteps.empty() ? 0.0 : footsteps.
 
 namespace {
 
-// The goal of the next search: the agent's goal, or the point
-// local_goal_distance toward it, moved back toward the agent until the agent
-// could stand there (an intermediate point may fall in or against an obstacle).
-Vec2 local_goal(const FootstepPlanner& planner, Vec2 from, Vec2 goal) {
-  const double to_goal = distance(from, goal);
-  const double reach = planner.params().local_goal_distance;
-  if (to_goal <= reach) return goal;
-  const double facing = angle_of(goal - from);
+/// The way only places local goals; its arcs need not be fine. [m]
+constexpr double kRouteArcTolerance = 0.05;
+/// Searches in a row that may leave the way no shorter before the agent is stuck.
+constexpr int kMaxIdleSearches = 3;
+/// Largest turn of the way, from its first heading, that a local goal may lie beyond. [rad]
+constexpr double kMaxTurnAhead = 1.0;
+/// A way with room to walk upright is taken if it is at most this much longer
+/// than one with room only to side-step: kUprightDetour times, plus kUprightExtra.
+constexpr double kUprightDetour = 1.25;
+constexpr double kUprightExtra = 2.0;  // [m]
+
+/// The way from `from` toward `goal`, and its length.
+struct Way {
+  std::vector<Vec2> points;
+  double length = 0.0;
+};
+
+/// The way on the navigation mesh: with room to walk upright (half the torso
+/// width) unless a way with room only to side-step (the torso circle) is much
+/// shorter, as through a narrow gap; else the straight line, along which the
+/// local search finds what it can.
+Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal) {
+  Way way{{from, goal}, distance(from, goal)};
+  if (mesh == nullptr) return way;
+  PathResult tight = mesh->find_path({from, goal, character.torso_radius, kRouteArcTolerance});
+  if (tight.status != PathStatus::kFound) return way;
+  PathResult upright = mesh->find_path({from, goal, 0.5 * character.torso_width, kRouteArcTolerance});
+  PathResult& best = upright.status == PathStatus::kFound &&
+                             upright.length <= kUprightDetour * tight.length + kUprightExtra
+                         ? upright
+                         : tight;
+  return {std::move(best.points), best.length};
+}
+
+/// The point `along` metres along `points` (clamped to its ends).
+Vec2 point_along(const std::vector<Vec2>& points, double along) {
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    const double piece = distance(points[k], points[k + 1]);
+    if (along <= piece && piece > 0.0) return points[k] + (along / piece) * (points[k + 1] - points[k]);
+    along -= piece;
+  }
+  return points.back();
+}
+
+/// How far along `points` the way keeps within kMaxTurnAhead of its first
+/// heading: up to there the way is in plain sight, past a corner it may not
+/// be, and a short-horizon search cannot go round a wall to reach it.
+double length_in_sight(const std::vector<Vec2>& points) {
+  double along = 0.0;
+  double first = 0.0;
+  bool heading = false;
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    const Vec2 d = points[k + 1] - points[k];
+    const double piece = length(d);
+    if (piece == 0.0) continue;
+    if (!heading) {
+      first = angle_of(d);
+      heading = true;
+    } else if (std::fabs(wrap_angle(angle_of(d) - first)) > kMaxTurnAhead) {
+      return along;
+    }
+    along += piece;
+  }
+  return along;
+}
+
+/// Where the next search aims: the goal if the way to it is within
+/// local_goal_distance and in sight; else the point that far along the way
+/// (or where the way turns out of sight), moved back along it until the
+/// agent could stand there (a point may fall in or against an obstacle).
+struct LocalGoal {
+  Vec2 point;
+  bool is_goal = false;
+};
+
+LocalGoal local_goal(const FootstepPlanner& planner, const Way& way) {
+  const double reach = std::min(planner.params().local_goal_distance, length_in_sight(way.points));
+  if (way.length <= reach) return {way.points.back(), true};
   constexpr double kStep = 0.25;  // [m]
   for (double along = reach; along > 0.0; along -= kStep) {
-    const Vec2 point = from + (along / to_goal) * (goal - from);
-    if (!planner.collides(standing_state(point, facing, planner.character()))) return point;
+    const Vec2 point = point_along(way.points, along);
+    const Vec2 ahead = point_along(way.points, along + kStep);
+    const double facing = angle_of(ahead - point);
+    if (!planner.collides(standing_state(point, facing, planner.character()))) return {point, false};
   }
-  return from + (reach / to_goal) * (goal - from);
+  return {point_along(way.points, reach), false};
 }
 
 }  // namespace
 
 AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
-                     const RunControl& control) {
+                     const NavMesh* mesh, const RunControl& control) {
   if (agent.goals.empty()) throw std::invalid_argument("agent " + agent.name + ": has no goals");
   if (!in_world(agent.position) || !std::isfinite(agent.facing)) {
     throw std::invalid_argument("agent " + agent.name +
@@ -81,6 +155,7 @@ AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
   plan.start = standing_state(agent.position, agent.facing, planner.character());
   FootstepState state = plan.start;
   size_t goal_index = 0;
+  int idle_searches = 0;
   while (true) {
     if (control.cancelled()) {
       plan.reason = "cancelled";
@@ -91,16 +166,16 @@ AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
       break;
     }
     const Vec2 goal = agent.goals[goal_index];
-    const double to_goal = distance(state.com, goal);
-    const bool goal_in_reach = to_goal <= params.local_goal_distance;
-    const SearchResult search = planner.plan(state, local_goal(planner, state.com, goal));
+    const Way way = way_toward(mesh, planner.character(), state.com, goal);
+    const LocalGoal target = local_goal(planner, way);
+    const SearchResult search = planner.plan(state, target.point);
     ++plan.searches;
     plan.nodes_generated += search.nodes_generated;
     plan.nodes_expanded += search.nodes_expanded;
     plan.footsteps.insert(plan.footsteps.end(), search.footsteps.begin(), search.footsteps.end());
     state = search.end_state;
 
-    if (search.status == Status::kSuccess && goal_in_reach) {
+    if (search.status == Status::kSuccess && target.is_goal) {
       ++plan.goals_reached;
       if (++goal_index == agent.goals.size()) {
         come_to_rest(planner, state, plan.footsteps);
@@ -109,8 +184,11 @@ AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
       }
       continue;
     }
-    // Every other search must bring the agent closer, or it is stuck.
-    if (to_goal - distance(state.com, goal) < params.min_progress) {
+    // Searches must keep shortening the way to the goal, or the agent is
+    // stuck (a few may only turn the agent round, against a wall say).
+    const double left = way_toward(mesh, planner.character(), state.com, goal).length;
+    idle_searches = way.length - left < params.min_progress ? idle_searches + 1 : 0;
+    if (idle_searches == kMaxIdleSearches) {
       come_to_rest(planner, state, plan.footsteps);
       plan.reason = "stuck";
       break;

@@ -31,6 +31,7 @@ Plan plan_scenario(const Scenario& scenario, const RunControl& control) {
   validate(scenario);
   const ObstacleMap obstacles(scenario.obstacles);
   const FootstepPlanner planner(scenario.character, scenario.planner, obstacles);
+  const NavMesh mesh = navmesh_of(scenario);
   Plan plan;
   plan.character = scenario.character;
   plan.obstacles = scenario.obstacles;
@@ -40,7 +41,7 @@ Plan plan_scenario(const Scenario& scenario, const RunControl& control) {
       plan.status = Status::kCancelled;
       break;
     }
-    plan.agents.push_back(plan_agent(scenario.agents[i], planner, control));
+    plan.agents.push_back(plan_agent(scenario.agents[i], planner, &mesh, control));
     const auto now = std::chrono::steady_clock::now();
     const bool last = i + 1 == scenario.agents.size();
     if (control.progress &&

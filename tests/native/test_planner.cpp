@@ -62,7 +62,8 @@ AgentPlan plan_and_check(const Scenario& scenario) {
 }
 
 void expect_reached(const AgentPlan& agent, Vec2 goal, const PlannerParams& params = {}) {
-  EXPECT_EQ(agent.status, AgentStatus::kReached) << agent.reason;
+  EXPECT_EQ(agent.status, AgentStatus::kReached)
+      << agent.reason << " at " << agent.stuck_at.x << ", " << agent.stuck_at.y;
   ASSERT_FALSE(agent.footsteps.empty());
   // Ends standing, within the tolerance plus the coasting of the stop.
   EXPECT_EQ(agent.footsteps.back().kind, StepKind::kStop);
@@ -139,16 +140,43 @@ TEST(Planner, EnclosedGoalGivesAPartialPlanEndingInStops) {
   EXPECT_LT(agent.end_time(), 30.0);
 }
 
+/// The height at which the COM path of `agent` crosses the line x = `x`, for
+/// every crossing.
+std::vector<double> crossings_of(const AgentPlan& agent, double x) {
+  std::vector<double> ys;
+  for (const Footstep& s : agent.footsteps) {
+    const Vec2 a = s.com_start, b = s.com_end;
+    if ((a.x < x) != (b.x < x)) ys.push_back(a.y + (x - a.x) / (b.x - a.x) * (b.y - a.y));
+  }
+  return ys;
+}
+
 TEST(Planner, ThinWallsAreNeverSteppedThrough) {
-  // A 5 mm wall right across the way: the goal behind it cannot be reached.
+  // A 5 mm wall right across the way: the route goes round its far end.
   for (const double thickness : {0.005, 0.05}) {
     SCOPED_TRACE(::testing::Message() << "thickness " << thickness);
     Scenario scenario = one_agent({box_obstacle({3, 0}, {thickness, 40})}, {0, 0}, 0, {6, 0});
     scenario.planner.max_expansions = 300;
     const AgentPlan agent = plan_and_check(scenario);
-    EXPECT_EQ(agent.status, AgentStatus::kPartial);
-    for (const Footstep& s : agent.footsteps) EXPECT_LT(s.com_end.x, 3.0);
+    for (double y : crossings_of(agent, 3.0)) EXPECT_GT(std::fabs(y), 20.0);
   }
+}
+
+TEST(Planner, RoutesThroughADistantDoor) {
+  // The only way through a 40 m wall is a door 12 m to the side: the straight
+  // line's local goals lead into the wall, the navigation mesh's path leads
+  // through the door.
+  Scenario scenario = one_agent(wall_with_door(3.0, 1.2, 12.0, 20.0), {0, 0}, 0, {6, 0});
+  const AgentPlan agent = plan_and_check(scenario);
+  EXPECT_EQ(agent.status, AgentStatus::kReached)
+      << agent.reason << " at " << agent.stuck_at.x << ", " << agent.stuck_at.y;
+  const std::vector<double> ys = crossings_of(agent, 3.0);
+  ASSERT_FALSE(ys.empty());
+  for (double y : ys) EXPECT_NEAR(y, 12.0, 0.6);
+  // Without the mesh, the same agent walks into the wall and stops there.
+  const ObstacleMap obstacles(scenario.obstacles);
+  const FootstepPlanner planner(scenario.character, scenario.planner, obstacles);
+  EXPECT_EQ(plan_agent(scenario.agents[0], planner).status, AgentStatus::kPartial);
 }
 
 TEST(Planner, HorizonReturnsThePathToTheMostPromisingNode) {

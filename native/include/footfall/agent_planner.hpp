@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "footfall/footstep.hpp"
+#include "footfall/navmesh.hpp"
 #include "footfall/planner.hpp"
 
 namespace footfall {
@@ -60,10 +61,12 @@ struct AgentPlan {
 };
 
 /// Plans `agent`'s walk through its goals. Each search aims at the current
-/// goal, or at the point local_goal_distance toward it; a reached last goal
-/// ends in a stop step; a search that makes less than min_progress is "stuck"
-/// and ends the walk with a stop step. Intermediate goals are walked through.
+/// goal, or at the point local_goal_distance along the way to it: the path on
+/// `mesh` (with room to walk upright, else to side-step), or the straight
+/// line without a mesh or a path. A reached last goal ends in a stop step; a
+/// search that shortens the way by less than min_progress is "stuck" and ends
+/// the walk with a stop step. Intermediate goals are walked through.
 AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
-                     const RunControl& control = {});
+                     const NavMesh* mesh = nullptr, const RunControl& control = {});
 
 }  // namespace footfall

@@ -65,14 +65,14 @@ struct PlannerParams {
   double heuristic_weight = 1.5;
   /// The goal is reached when the COM is this close. [m] (0, 10], < local_goal_distance
   double goal_tolerance = 0.3;
-  double local_goal_distance = 10;  ///< Each search aims at most this far ahead. [m] [1, 1000]
+  double local_goal_distance = 10;  ///< Each search aims at most this far along the way. [m] [1, 1000]
   double max_time = 300;            ///< Simulated time limit per agent. [s] (0, 100000]
   double stop_duration = 0.5;       ///< Duration of a stop (or wait) step. [s] (0, 5]
   /// Largest COM travel between two collision samples; circles are padded by
   /// half of it, so a thin obstacle is never stepped through. [m] [0.005, 0.05]
   double collision_sample_spacing = 0.05;
-  /// A search that brings the COM less than this much closer to the goal is
-  /// "stuck"; the agent then stops. [m] (0, 10]
+  /// Three searches in a row that shorten the agent's way to its goal by less
+  /// than this mean "stuck"; the agent then stops. [m] (0, 10]
   double min_progress = 0.05;
   /// Gaits tried at every expansion. Three are enough with the goal-directed
   /// phi (section 4); more cost time, not quality. [non-empty, at most 16]
