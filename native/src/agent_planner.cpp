@@ -52,12 +52,16 @@ namespace {
 constexpr double kRouteArcTolerance = 0.05;
 /// Searches in a row that may leave the way no shorter before the agent is stuck.
 constexpr int kMaxIdleSearches = 3;
-/// Largest turn of the way, from its first heading, that a local goal may lie beyond. [rad]
-constexpr double kMaxTurnAhead = 1.0;
-/// A way with room to walk upright is taken if it is at most this much longer
-/// than one with room only to side-step: kUprightDetour times, plus kUprightExtra.
-constexpr double kUprightDetour = 1.25;
-constexpr double kUprightExtra = 2.0;  // [m]
+/// A local goal out of sight is looked for this much nearer, each time. [1]
+constexpr double kSightBackOff = 0.6;
+/// ...down to this far along the way, past a corner or not. [m]
+constexpr double kMinAhead = 1.5;
+/// A roomier way is taken if it is at most this much longer than the
+/// tightest: kRoomyDetour times, plus kRoomyExtra.
+constexpr double kRoomyDetour = 1.25;
+constexpr double kRoomyExtra = 2.0;  // [m]
+/// Room beside the shoulders, where there is room, for the body's sway. [m]
+constexpr double kSwayMargin = 0.25;
 
 /// The way from `from` toward `goal`, and its length.
 struct Way {
@@ -65,21 +69,25 @@ struct Way {
   double length = 0.0;
 };
 
-/// The way on the navigation mesh: with room to walk upright (half the torso
-/// width) unless a way with room only to side-step (the torso circle) is much
-/// shorter, as through a narrow gap; else the straight line, along which the
-/// local search finds what it can.
+/// The way on the navigation mesh: the roomiest of three that is not much
+/// longer than the tightest (at most kRoomyDetour times plus kRoomyExtra):
+/// room to walk upright with a margin for the sway, just upright (half the
+/// torso width), or only to side-step (the torso circle), as through a gap
+/// narrower than the shoulders. With no way at all, the straight line, along
+/// which the local search finds what it can.
 Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal) {
   Way way{{from, goal}, distance(from, goal)};
   if (mesh == nullptr) return way;
+  const double upright = 0.5 * character.torso_width;
   PathResult tight = mesh->find_path({from, goal, character.torso_radius, kRouteArcTolerance});
   if (tight.status != PathStatus::kFound) return way;
-  PathResult upright = mesh->find_path({from, goal, 0.5 * character.torso_width, kRouteArcTolerance});
-  PathResult& best = upright.status == PathStatus::kFound &&
-                             upright.length <= kUprightDetour * tight.length + kUprightExtra
-                         ? upright
-                         : tight;
-  return {std::move(best.points), best.length};
+  for (double radius : {upright + kSwayMargin, upright}) {
+    PathResult roomy = mesh->find_path({from, goal, radius, kRouteArcTolerance});
+    if (roomy.status == PathStatus::kFound &&
+        roomy.length <= kRoomyDetour * tight.length + kRoomyExtra)
+      return {std::move(roomy.points), roomy.length};
+  }
+  return {std::move(tight.points), tight.length};
 }
 
 /// The point `along` metres along `points` (clamped to its ends).
@@ -92,39 +100,30 @@ Vec2 point_along(const std::vector<Vec2>& points, double along) {
   return points.back();
 }
 
-/// How far along `points` the way keeps within kMaxTurnAhead of its first
-/// heading: up to there the way is in plain sight, past a corner it may not
-/// be, and a short-horizon search cannot go round a wall to reach it.
-double length_in_sight(const std::vector<Vec2>& points) {
-  double along = 0.0;
-  double first = 0.0;
-  bool heading = false;
-  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
-    const Vec2 d = points[k + 1] - points[k];
-    const double piece = length(d);
-    if (piece == 0.0) continue;
-    if (!heading) {
-      first = angle_of(d);
-      heading = true;
-    } else if (std::fabs(wrap_angle(angle_of(d) - first)) > kMaxTurnAhead) {
-      return along;
-    }
-    along += piece;
-  }
-  return along;
+/// True if the agent at `from` sees `to`: a straight line with room for the
+/// torso circle joins them. A short-horizon search cannot go round a wall to
+/// reach a point behind it.
+bool in_sight(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 to) {
+  if (mesh == nullptr) return true;
+  const PathResult path = mesh->find_path({from, to, character.torso_radius, kRouteArcTolerance});
+  return path.status == PathStatus::kFound && path.points.size() == 2;
 }
 
 /// Where the next search aims: the goal if the way to it is within
-/// local_goal_distance and in sight; else the point that far along the way
-/// (or where the way turns out of sight), moved back along it until the
+/// local_goal_distance and in sight; else the farthest point of the way
+/// within that distance that is in sight (looking nearer by steps of
+/// kSightBackOff, down to kMinAhead), moved back along the way until the
 /// agent could stand there (a point may fall in or against an obstacle).
 struct LocalGoal {
   Vec2 point;
   bool is_goal = false;
 };
 
-LocalGoal local_goal(const FootstepPlanner& planner, const Way& way) {
-  const double reach = std::min(planner.params().local_goal_distance, length_in_sight(way.points));
+LocalGoal local_goal(const FootstepPlanner& planner, const NavMesh* mesh, const Way& way) {
+  const Vec2 from = way.points.front();
+  double reach = std::min(planner.params().local_goal_distance, way.length);
+  while (reach > kMinAhead && !in_sight(mesh, planner.character(), from, point_along(way.points, reach)))
+    reach = std::max(kMinAhead, kSightBackOff * reach);
   if (way.length <= reach) return {way.points.back(), true};
   constexpr double kStep = 0.25;  // [m]
   for (double along = reach; along > 0.0; along -= kStep) {
@@ -167,7 +166,7 @@ AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
     }
     const Vec2 goal = agent.goals[goal_index];
     const Way way = way_toward(mesh, planner.character(), state.com, goal);
-    const LocalGoal target = local_goal(planner, way);
+    const LocalGoal target = local_goal(planner, mesh, way);
     const SearchResult search = planner.plan(state, target.point);
     ++plan.searches;
     plan.nodes_generated += search.nodes_generated;
