@@ -1,5 +1,6 @@
 // footfall — the command-line program: plan scenarios, run the demo and the
 // benchmarks. Exit codes: 0 success, 2 bad input or usage, 1 other failure.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -36,31 +37,47 @@ struct UsageError : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+/// Width of a left-aligned text column: at least `minimum`, and two more than
+/// its longest entry, so that long agent names never run into the next column.
+template <typename Range, typename Text>
+int column_width(const Range& rows, int minimum, Text text) {
+  std::size_t widest = 0;
+  for (const auto& row : rows) widest = std::max(widest, std::string(text(row)).size());
+  return std::max(minimum, static_cast<int>(widest) + 2);
+}
+
+std::string status_of(const footfall::AgentPlan& agent) {
+  return agent.status == footfall::AgentStatus::kReached ? "reached"
+                                                         : "partial (" + agent.reason + ")";
+}
+
 void print_table(const footfall::Plan& plan, std::ostream& out) {
-  out << std::left << std::setw(14) << "agent" << std::setw(10) << "status" << std::right
-      << std::setw(7) << "steps" << std::setw(10) << "time [s]" << std::setw(11) << "cost [J]"
-      << std::setw(10) << "searches" << std::setw(10) << "expanded"
+  const int name_width =
+      column_width(plan.agents, 14, [](const footfall::AgentPlan& a) { return a.name; });
+  const int status_width = column_width(plan.agents, 10, status_of);
+  out << std::left << std::setw(name_width) << "agent" << std::setw(status_width) << "status"
+      << std::right << std::setw(7) << "steps" << std::setw(10) << "time [s]" << std::setw(11)
+      << "cost [J]" << std::setw(10) << "searches" << std::setw(10) << "expanded"
       << "\n";
   for (const footfall::AgentPlan& agent : plan.agents) {
-    const std::string status = agent.status == footfall::AgentStatus::kReached
-                                   ? "reached"
-                                   : "partial (" + agent.reason + ")";
-    out << std::left << std::setw(14) << agent.name << std::setw(10) << status << std::right
-        << std::setw(7) << agent.footsteps.size() << std::setw(10) << std::fixed
-        << std::setprecision(2) << agent.end_time() << std::setw(11) << std::setprecision(1)
-        << agent.total_cost() << std::setw(10) << agent.searches << std::setw(10)
-        << agent.nodes_expanded << "\n";
+    out << std::left << std::setw(name_width) << agent.name << std::setw(status_width)
+        << status_of(agent) << std::right << std::setw(7) << agent.footsteps.size()
+        << std::setw(10) << std::fixed << std::setprecision(2) << agent.end_time()
+        << std::setw(11) << std::setprecision(1) << agent.total_cost() << std::setw(10)
+        << agent.searches << std::setw(10) << agent.nodes_expanded << "\n";
   }
 }
 
 void print_metrics(const footfall::PlanMetrics& metrics, std::ostream& out) {
-  out << std::left << std::setw(14) << "agent" << std::setw(9) << "reached" << std::right
+  const int name_width =
+      column_width(metrics.agents, 14, [](const footfall::AgentMetrics& m) { return m.name; });
+  out << std::left << std::setw(name_width) << "agent" << std::setw(9) << "reached" << std::right
       << std::setw(9) << "time [s]" << std::setw(10) << "path [m]" << std::setw(11) << "effort [J]"
       << std::setw(10) << "overlaps" << std::setw(11) << "episodes" << std::setw(10) << "energy"
       << std::setw(13) << "acceleration"
       << "\n";
   for (const footfall::AgentMetrics& m : metrics.agents) {
-    out << std::left << std::setw(14) << m.name << std::setw(9) << (m.reached ? "yes" : "no")
+    out << std::left << std::setw(name_width) << m.name << std::setw(9) << (m.reached ? "yes" : "no")
         << std::right << std::fixed << std::setprecision(2) << std::setw(9) << m.time
         << std::setw(10) << m.path_length << std::setprecision(1) << std::setw(11) << m.effort
         << std::setw(10) << m.overlaps << std::setw(11) << m.collision_episodes << std::setw(10)
