@@ -1,0 +1,84 @@
+// Footfall — the way to an agent's goal and the local goal along it.
+#include "local_goal.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace footfall {
+namespace {
+
+/// The way only places local goals; its arcs need not be fine. [m]
+constexpr double kRouteArcTolerance = 0.05;
+/// A local goal out of sight is looked for this much nearer, each time. [1]
+constexpr double kSightBackOff = 0.6;
+/// ...down to this far along the way, past a corner or not. [m]
+constexpr double kMinAhead = 1.5;
+/// A roomier way is taken if it is at most this much longer than the
+/// tightest: kRoomyDetour times, plus kRoomyExtra.
+constexpr double kRoomyDetour = 1.25;
+constexpr double kRoomyExtra = 2.0;  // [m]
+/// Room beside the shoulders, where there is room, for the body's sway. [m]
+constexpr double kSwayMargin = 0.25;
+
+/// The point `along` metres along `points` (clamped to its ends).
+Vec2 point_along(const std::vector<Vec2>& points, double along) {
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    const double piece = distance(points[k], points[k + 1]);
+    if (along <= piece && piece > 0.0) return points[k] + (along / piece) * (points[k + 1] - points[k]);
+    along -= piece;
+  }
+  return points.back();
+}
+
+/// True if the agent at `from` sees `to`: a straight line with room for the
+/// torso circle joins them. A short-horizon search cannot go round a wall to
+/// reach a point behind it.
+bool in_sight(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 to) {
+  if (mesh == nullptr) return true;
+  const PathResult path = mesh->find_path({from, to, character.torso_radius, kRouteArcTolerance});
+  return path.status == PathStatus::kFound && path.points.size() == 2;
+}
+
+}  // namespace
+
+/// The way on the navigation mesh: the roomiest of three that is not much
+/// longer than the tightest (at most kRoomyDetour times plus kRoomyExtra):
+/// room to walk upright with a margin for the sway, just upright (half the
+/// torso width), or only to side-step (the torso circle), as through a gap
+/// narrower than the shoulders. With no way at all, the straight line, along
+/// which the local search finds what it can.
+Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal) {
+  Way way{{from, goal}, distance(from, goal)};
+  if (mesh == nullptr) return way;
+  const double upright = 0.5 * character.torso_width;
+  PathResult tight = mesh->find_path({from, goal, character.torso_radius, kRouteArcTolerance});
+  if (tight.status != PathStatus::kFound) return way;
+  for (double radius : {upright + kSwayMargin, upright}) {
+    PathResult roomy = mesh->find_path({from, goal, radius, kRouteArcTolerance});
+    if (roomy.status == PathStatus::kFound &&
+        roomy.length <= kRoomyDetour * tight.length + kRoomyExtra)
+      return {std::move(roomy.points), roomy.length};
+  }
+  return {std::move(tight.points), tight.length};
+}
+
+/// A local goal out of sight is looked for nearer by steps of kSightBackOff,
+/// down to kMinAhead: a short-horizon search cannot go round a wall to a
+/// point behind it.
+LocalGoal local_goal(const FootstepPlanner& planner, const NavMesh* mesh, const Way& way) {
+  const Vec2 from = way.points.front();
+  double reach = std::min(planner.params().local_goal_distance, way.length);
+  while (reach > kMinAhead && !in_sight(mesh, planner.character(), from, point_along(way.points, reach)))
+    reach = std::max(kMinAhead, kSightBackOff * reach);
+  if (way.length <= reach) return {way.points.back(), true};
+  constexpr double kStep = 0.25;  // [m]
+  for (double along = reach; along > 0.0; along -= kStep) {
+    const Vec2 point = point_along(way.points, along);
+    const Vec2 ahead = point_along(way.points, along + kStep);
+    const double facing = angle_of(ahead - point);
+    if (!planner.collides(standing_state(point, facing, planner.character()))) return {point, false};
+  }
+  return {point_along(way.points, reach), false};
+}
+
+}  // namespace footfall
