@@ -58,6 +58,10 @@ void bind_navmesh(py::module_& m) {
           "'min_clearance'}, status one of found, no_path, start_blocked, goal_blocked, outside.")
       .def("clearance", &NavMesh::clearance, py::arg("point"),
            "Distance to the nearest obstacle [m]; 0 if blocked or outside.")
+      .def("clearance_between", &NavMesh::clearance_between, py::arg("a"), py::arg("b"),
+           py::arg("limit") = std::numeric_limits<double>::infinity(),
+           "Distance from the segment a-b to the nearest obstacle, up to limit [m]; 0 if it "
+           "crosses an obstacle or leaves the domain.")
       .def(
           "triangles",
           [](const NavMesh& mesh) {

@@ -35,8 +35,7 @@ Vec2 point_along(const std::vector<Vec2>& points, double along) {
 /// reach a point behind it.
 bool in_sight(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 to) {
   if (mesh == nullptr) return true;
-  const PathResult path = mesh->find_path({from, to, character.torso_radius, kRouteArcTolerance});
-  return path.status == PathStatus::kFound && path.points.size() == 2;
+  return mesh->clearance_between(from, to, character.torso_radius) >= character.torso_radius;
 }
 
 }  // namespace

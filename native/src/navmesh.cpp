@@ -302,6 +302,15 @@ double NavMesh::clearance(Vec2 point) const {
   return obstacle_distance(m, f, point, point);
 }
 
+double NavMesh::clearance_between(Vec2 a, Vec2 b, double limit) const {
+  const NavMeshState& m = *impl_;
+  if (!in_world(a) || !in_world(b)) throw std::invalid_argument("clearance_between: points are not finite");
+  if (!m.in_domain(a) || !m.in_domain(b)) return 0.0;
+  const Face f = m.cdt.locate(to_point(a));
+  if (!m.walkable(f)) return 0.0;
+  return obstacle_distance(m, f, a, b, limit);
+}
+
 std::vector<NavTriangle> NavMesh::triangles() const {
   const NavMeshState& m = *impl_;
   std::vector<NavTriangle> out;

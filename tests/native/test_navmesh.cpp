@@ -132,6 +132,17 @@ TEST(NavMesh, SelfIntersectingPolygonBlocksBothLobes) {
   EXPECT_GT(mesh.clearance({5, 3}), 0.5);
 }
 
+TEST(NavMesh, ClearanceBetweenTwoPointsSeesPastAndThroughObstacles) {
+  NavMesh mesh({0, 0}, {10, 10});
+  mesh.add_polygon(box({4, 4}, {6, 6}));
+  EXPECT_NEAR(mesh.clearance_between({1, 7}, {9, 7}), 1.0, 1e-12);     // past the box's top
+  EXPECT_NEAR(mesh.clearance_between({1, 9.5}, {9, 9.5}), 0.5, 1e-12);  // nearer the boundary
+  EXPECT_EQ(mesh.clearance_between({1, 5}, {9, 5}), 0.0);               // through the box
+  EXPECT_EQ(mesh.clearance_between({5, 5}, {9, 5}), 0.0);               // from inside it
+  EXPECT_EQ(mesh.clearance_between({1, 5}, {11, 5}), 0.0);              // out of the domain
+  EXPECT_NEAR(mesh.clearance_between({1, 7}, {9, 7}, 0.25), 0.25, 1e-12);  // up to the limit
+}
+
 TEST(NavMesh, BadInputIsNamed) {
   NavMesh mesh({0, 0}, {10, 10});
   const double nan = std::numeric_limits<double>::quiet_NaN();

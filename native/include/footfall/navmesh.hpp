@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -96,6 +97,11 @@ class NavMesh {
   /// Distance from `point` to the nearest obstacle or boundary; 0 when the
   /// point is blocked or outside the domain. [m]
   double clearance(Vec2 point) const;
+  /// Distance from the segment [a, b] to the nearest obstacle or boundary, up
+  /// to `limit` (the walk stops there: a small limit makes this a cheap line of
+  /// sight test); 0 when the segment crosses an obstacle or leaves the domain. [m]
+  double clearance_between(Vec2 a, Vec2 b,
+                           double limit = std::numeric_limits<double>::infinity()) const;
 
   /// Every finite triangle, for drawing.
   std::vector<NavTriangle> triangles() const;
