@@ -1,7 +1,6 @@
 #include "footfall/plan.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace footfall {
@@ -10,7 +9,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kMaxLift = 0.12;          // [m] swing height of a full stride
 constexpr double kLiftPerStride = 0.15;    // swing height per metre of stride
-constexpr double kProgressInterval = 0.2;  // [s] between progress reports
 constexpr double kLeadIn = 0.25;           // [s] longest swing of a foot into a first step
 
 // Index of the step under way at time t: the last one that started at or
@@ -35,21 +33,7 @@ Plan plan_scenario(const Scenario& scenario, const RunControl& control) {
   Plan plan;
   plan.character = scenario.character;
   plan.obstacles = scenario.obstacles;
-  auto last_report = std::chrono::steady_clock::now();
-  for (size_t i = 0; i < scenario.agents.size(); ++i) {
-    if (control.cancelled()) {
-      plan.status = Status::kCancelled;
-      break;
-    }
-    plan.agents.push_back(plan_agent(scenario.agents[i], planner, &mesh, control));
-    const auto now = std::chrono::steady_clock::now();
-    const bool last = i + 1 == scenario.agents.size();
-    if (control.progress &&
-        (last || std::chrono::duration<double>(now - last_report).count() >= kProgressInterval)) {
-      control.progress(static_cast<double>(i + 1) / static_cast<double>(scenario.agents.size()));
-      last_report = now;
-    }
-  }
+  plan.agents = plan_agents(scenario.agents, planner, &mesh, control);
   if (control.cancelled()) plan.status = Status::kCancelled;
   return plan;
 }
@@ -87,9 +71,14 @@ std::array<FootPose, 2> feet_at(const AgentPlan& plan, double t) {
   const auto& steps = plan.footsteps;
   if (steps.empty() || t < steps.front().start_time) return feet;
   const int k = step_index(plan, t);
-  for (int i = 0; i < k; ++i) {
-    feet[static_cast<int>(steps[i].foot)] = {steps[i].foot_position, steps[i].foot_orientation, 0.0,
-                                             true};
+  // Where each foot was last planted before step k: found walking back, so a
+  // long plan costs no more than a short one.
+  std::array<bool, 2> found{false, false};
+  for (int i = k - 1; i >= 0 && !(found[0] && found[1]); --i) {
+    const int f = static_cast<int>(steps[i].foot);
+    if (found[f]) continue;
+    feet[f] = {steps[i].foot_position, steps[i].foot_orientation, 0.0, true};
+    found[f] = true;
   }
   const Footstep& step = steps[k];
   const int stepping = static_cast<int>(step.foot);

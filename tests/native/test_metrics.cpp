@@ -30,11 +30,16 @@ TEST(Metrics, AValidWalkHasNoOverlapsAndSteerBenchFigures) {
 }
 
 TEST(Metrics, AgentsWalkingThroughEachOtherCollide) {
-  // Head-on, on one line: the agents do not yet read each other's plans.
+  // Head-on, on one line, each planned alone: they walk through each other.
   Scenario scenario;
   scenario.agents.push_back({"a", {0, 0}, 0, {{8, 0}}});
   scenario.agents.push_back({"b", {8, 0}, 3.14159265358979, {{0, 0}}});
-  const PlanMetrics metrics = measure_plan(plan_scenario(scenario));
+  const ObstacleMap obstacles(scenario.obstacles);
+  const FootstepPlanner planner(scenario.character, scenario.planner, obstacles);
+  Plan plan;
+  plan.character = scenario.character;
+  for (const AgentSpec& agent : scenario.agents) plan.agents.push_back(plan_agent(agent, planner));
+  const PlanMetrics metrics = measure_plan(plan);
   for (const AgentMetrics& m : metrics.agents) {
     EXPECT_GE(m.collision_episodes, 1) << m.name;
     EXPECT_GT(m.overlaps, 0) << m.name;

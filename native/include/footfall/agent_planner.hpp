@@ -36,6 +36,8 @@ struct RunControl {
   std::function<void(double)> progress;
   /// When set and true, the run stops at the next search and reports kCancelled.
   const std::atomic<bool>* cancel = nullptr;
+  /// Threads the searches of one tick run on; the plans do not depend on it. [1, 64]
+  int threads = 1;
   /// True if the caller asked to stop.
   bool cancelled() const { return cancel != nullptr && cancel->load(std::memory_order_relaxed); }
 };
@@ -60,12 +62,22 @@ struct AgentPlan {
   double end_time() const;
 };
 
-/// Plans `agent`'s walk through its goals. Each search aims at the current
-/// goal, or at the point local_goal_distance along the way to it: the path on
-/// `mesh` (with room to walk upright, else to side-step), or the straight
-/// line without a mesh or a path. A reached last goal ends in a stop step; a
-/// search that shortens the way by less than min_progress is "stuck" and ends
-/// the walk with a stop step. Intermediate goals are walked through.
+/// Plans `agents` together, each walking through its goals in turn. Each
+/// agent's way to its goal is its path on `mesh` (with room to walk upright,
+/// else to side-step; the straight line without a mesh or a path), and each
+/// search aims at a local goal up to local_goal_distance along it, in sight.
+/// Agents plan among the plans of the agents they see (within 30 m, in front
+/// of the torso, with a clear line of sight), which they keep clear of as
+/// moving obstacles, and replan 1 s before their plan runs out; a 20 Hz tick
+/// decides who replans when. Waiting is a valid answer. A reached last goal
+/// ends in a stop step; an agent whose way has not shortened by min_progress
+/// for 15 s is "stuck"; the walk also ends at max_time ("time limit") or on
+/// cancel ("cancelled"). Deterministic, whatever `control.threads`.
+std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
+                                   const FootstepPlanner& planner, const NavMesh* mesh = nullptr,
+                                   const RunControl& control = {});
+
+/// One agent's walk alone (plan_agents with no one else).
 AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
                      const NavMesh* mesh = nullptr, const RunControl& control = {});
 

@@ -18,8 +18,9 @@ struct Plan {
   Status status = Status::kSuccess;  ///< kCancelled if the run was stopped.
 };
 
-/// Plans every agent of a validated scenario (agents ignore each other).
-/// Deterministic: the same scenario gives bit-identical plans.
+/// Plans every agent of a scenario together on its navigation mesh
+/// (plan_agents). Deterministic: the same scenario gives bit-identical plans,
+/// whatever the number of threads.
 Plan plan_scenario(const Scenario& scenario, const RunControl& control = {});
 
 /// A foot at one instant.

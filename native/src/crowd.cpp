@@ -1,0 +1,334 @@
+// Footfall — the crowd driver. Agents plan their footsteps toward local goals
+// on their ways (local_goal.hpp), each among the plans of the agents it sees,
+// replanning a little before its plan runs out. A fixed tick decides who
+// replans when; the output is every agent's continuous footstep plan.
+//
+// No overlaps: every plan ends with the agent coming to rest (a provisional
+// rest, replaced when the agent replans), and a new plan is committed only if
+// it keeps clear of every other agent's plan, rest included, seen or not;
+// otherwise the agent waits where its rest leaves it. Every committed plan
+// was checked against everyone's rest, so waiting is always clear.
+//
+// Determinism: the searches of one tick read a snapshot (every plan as it
+// stood when the tick began) and may run on several threads; their results are
+// committed one agent after another in the agents' order, each checked against
+// the plans as they then stand. So the plans do not depend on the number of
+// threads or their timing.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "footfall/agent_planner.hpp"
+#include "footfall/plan.hpp"
+#include "local_goal.hpp"
+#include "workers.hpp"
+
+namespace footfall {
+namespace {
+
+constexpr double kTick = 0.05;          ///< The scheduling tick (20 Hz). [s]
+constexpr double kReplanLead = 1.0;     ///< An agent replans when this little of its plan is left. [s]
+constexpr double kViewDistance = 30.0;  ///< Agents farther away are not seen. [m]
+/// An agent whose way has not shortened by min_progress for this long is stuck. [s]
+constexpr double kStuckAfter = 15.0;
+constexpr double kProgressInterval = 0.2;  ///< Between progress reports. [s]
+/// A new plan is checked against the agents this near now; none farther can
+/// reach it within a plan's few seconds. [m]
+constexpr double kCheckDistance = 40.0;
+/// Agents farther apart than this cannot touch. [m]
+constexpr double kNearAgent = 3.0;
+/// Longest single wait step. [s]
+constexpr double kMaxWait = 5.0;
+
+void check_agent(const AgentSpec& agent) {
+  if (agent.goals.empty()) throw std::invalid_argument("agent " + agent.name + ": has no goals");
+  if (!in_world(agent.position) || !std::isfinite(agent.facing)) {
+    throw std::invalid_argument("agent " + agent.name +
+                                ": position and facing must be finite, within 1e9 m");
+  }
+  for (const Vec2& goal : agent.goals) {
+    if (!in_world(goal))
+      throw std::invalid_argument("agent " + agent.name + ": goals must be finite, within 1e9 m");
+  }
+}
+
+// Appends a stop step, halving its duration while it would run into an
+// obstacle (the COM still coasts while it decelerates). Returns false when even
+// the shortest stop collides.
+bool append_stop(const FootstepPlanner& planner, FootstepState& state,
+                 std::vector<Footstep>& steps) {
+  double duration = planner.params().stop_duration;
+  for (int attempt = 0; attempt < 4; ++attempt, duration *= 0.5) {
+    const StepResult stop = planner.stop_step(state, duration);
+    if (stop.valid()) {
+      steps.push_back(stop.step);
+      state = stop.state;
+      return true;
+    }
+  }
+  return false;
+}
+
+// Brings the character to rest with its feet side by side: one stop to
+// decelerate, a second one to close the feet.
+void come_to_rest(const FootstepPlanner& planner, FootstepState& state,
+                  std::vector<Footstep>& steps) {
+  if (!state.standing() && !append_stop(planner, state, steps)) return;
+  append_stop(planner, state, steps);
+}
+
+/// One agent as the driver keeps it.
+struct Walker {
+  const AgentSpec* spec = nullptr;
+  AgentPlan plan;  ///< Its steps, ending with `resting` provisional rest steps.
+  FootstepState state;   ///< Where the next search starts: before the rest.
+  FootstepState rested;  ///< After the rest.
+  std::size_t resting = 0;
+  std::size_t goal = 0;
+  double first_way = 0.0;  ///< Way to the current goal when it was first measured. [m]
+  double best_way = std::numeric_limits<double>::infinity();  ///< Shortest way left so far. [m]
+  double improved_at = 0.0;  ///< Plan time when best_way last shortened by min_progress. [s]
+  bool done = false;
+};
+
+/// What one search gave, before it is committed.
+struct Attempt {
+  std::vector<Footstep> steps;
+  FootstepState end;
+  bool reached = false;  ///< The steps reach the current goal itself.
+  double way_left = 0.0;
+  int nodes_generated = 0, nodes_expanded = 0;
+  bool searched = false;
+};
+
+/// The plans of the agents that agent `i` sees at time `t`: within
+/// kViewDistance, in front of its torso, and with a clear line of sight.
+MovingObstacles seen_by(const std::vector<Walker>& walkers, std::size_t i, double t,
+                        const NavMesh* mesh) {
+  const Vec2 eye = com_at(walkers[i].plan, t).position;
+  const Vec2 ahead = unit(facing_at(walkers[i].plan, t));
+  MovingObstacles seen;
+  for (std::size_t j = 0; j < walkers.size(); ++j) {
+    if (j == i) continue;
+    const Vec2 them = com_at(walkers[j].plan, t).position;
+    const Vec2 d = them - eye;
+    if (dot(d, d) > kViewDistance * kViewDistance || dot(d, ahead) <= 0.0) continue;
+    if (mesh != nullptr && mesh->clearance_between(eye, them, 1e-9) < 1e-9) continue;
+    seen.push_back(&walkers[j].plan);
+  }
+  return seen;
+}
+
+/// The agent's next search: toward its local goal, among `others`.
+Attempt search(const Walker& w, const FootstepPlanner& planner, const NavMesh* mesh,
+               const MovingObstacles& others) {
+  const Vec2 goal = w.spec->goals[w.goal];
+  const Way way = way_toward(mesh, planner.character(), w.state.com, goal);
+  const LocalGoal target = local_goal(planner, mesh, way);
+  const SearchResult result = planner.plan(w.state, target.point, others);
+  Attempt a;
+  a.steps = result.footsteps;
+  a.end = result.footsteps.empty() ? w.state : result.end_state;
+  a.reached = result.status == Status::kSuccess && target.is_goal;
+  a.way_left = a.reached ? 0.0 : way_toward(mesh, planner.character(), a.end.com, goal).length;
+  a.nodes_generated = result.nodes_generated;
+  a.nodes_expanded = result.nodes_expanded;
+  a.searched = true;
+  return a;
+}
+
+/// The plans of every other agent within kCheckDistance of agent `i` at time
+/// `t`, seen or not.
+MovingObstacles near(const std::vector<Walker>& walkers, std::size_t i, double t) {
+  const Vec2 here = com_at(walkers[i].plan, t).position;
+  MovingObstacles out;
+  for (std::size_t j = 0; j < walkers.size(); ++j) {
+    if (j != i && distance(com_at(walkers[j].plan, t).position, here) <= kCheckDistance)
+      out.push_back(&walkers[j].plan);
+  }
+  return out;
+}
+
+/// True if `trial`, from time `from` on, touches one of `others` under the
+/// five-circle model that measures a plan (torso circles and planted feet;
+/// after its last step a plan stands where it ends). Checked every kCheckDt,
+/// the circles grown by half of both agents' travel in between.
+bool touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
+             const MovingObstacles& others) {
+  constexpr double kCheckDt = 0.05;  // [s]
+  const CharacterParams& c = planner.character();
+  for (const AgentPlan* other : others) {
+    const double end = std::max(trial.end_time(), other->end_time()) + kCheckDt;
+    for (double t = from; t <= end; t += kCheckDt) {
+      const ComSample me = com_at(trial, t), them = com_at(*other, t);
+      if (distance(me.position, them.position) > kNearAgent) continue;
+      const double pad = 0.5 * (length(me.velocity) + length(them.velocity)) * kCheckDt;
+      const std::vector<Circle> mine = collision_circles(trial, c, t);
+      for (const Circle& theirs : collision_circles(*other, c, t))
+        for (const Circle& circle : mine)
+          if (distance(circle.center, theirs.center) < circle.radius + theirs.radius + pad)
+            return true;
+    }
+  }
+  return false;
+}
+
+/// Lets the agent's provisional rest happen (it is no longer provisional),
+/// and if it would then stand before time `t`, has it stand until `t`: the
+/// next steps start now, not in the past.
+void rest_until(Walker& w, const FootstepPlanner& planner, double t) {
+  if (w.resting > 0) {
+    w.state = w.rested;
+    w.resting = 0;
+  }
+  if (w.state.time < t) {
+    const StepResult wait = planner.stop_step(w.state, std::min(t - w.state.time, kMaxWait));
+    if (wait.valid()) {
+      w.plan.footsteps.push_back(wait.step);
+      w.state = wait.state;
+    }
+  }
+}
+
+/// Notes the way left; an agent whose way has not shortened by min_progress
+/// for kStuckAfter is stuck, and its rest becomes the end of its walk.
+void progress(Walker& w, double way_left, const FootstepPlanner& planner) {
+  if (w.first_way == 0.0) w.first_way = way_left;
+  if (way_left < w.best_way - planner.params().min_progress) {
+    w.best_way = way_left;
+    w.improved_at = w.state.time;
+  } else if (w.state.time - w.improved_at > kStuckAfter) {
+    w.plan.reason = "stuck";
+    w.done = true;
+  }
+}
+
+/// Adds the attempt's steps and a provisional rest after them to the
+/// walker's plan, in place of its old rest, if the plan then keeps clear of
+/// `others`, before and after they end; otherwise the old rest happens and the agent waits there. Then
+/// goals reached, progress, stuck.
+void commit(Walker& w, const Attempt& a, const FootstepPlanner& planner, double t,
+            const MovingObstacles& others) {
+  if (a.searched) {
+    ++w.plan.searches;
+    w.plan.nodes_generated += a.nodes_generated;
+    w.plan.nodes_expanded += a.nodes_expanded;
+  }
+  std::vector<Footstep> steps = a.steps;
+  FootstepState rested = a.end;
+  come_to_rest(planner, rested, steps);
+  AgentPlan trial;
+  if (!a.steps.empty()) {
+    trial.start = w.plan.start;
+    trial.footsteps.assign(w.plan.footsteps.begin(), w.plan.footsteps.end() - w.resting);
+    trial.footsteps.insert(trial.footsteps.end(), steps.begin(), steps.end());
+  }
+  if (a.steps.empty() || touches(trial, a.steps.front().start_time, planner, others)) {
+    rest_until(w, planner, t);
+    if (!(a.reached && a.steps.empty())) {  // at the goal already, or waiting
+      progress(w, w.best_way, planner);
+      return;
+    }
+  } else {
+    w.plan.footsteps = std::move(trial.footsteps);
+    w.resting = steps.size() - a.steps.size();
+    w.state = a.end;
+    w.rested = rested;
+  }
+  if (!a.reached) {
+    progress(w, a.way_left, planner);
+    return;
+  }
+  ++w.plan.goals_reached;
+  if (++w.goal == w.spec->goals.size()) {
+    w.plan.status = AgentStatus::kReached;
+    w.done = true;
+    return;
+  }
+  w.first_way = 0.0;
+  w.best_way = std::numeric_limits<double>::infinity();
+  w.improved_at = w.state.time;
+}
+
+/// How far the walker is: its goals reached, and the way to the current one.
+double progress_of(const Walker& w) {
+  if (w.done) return 1.0;
+  double current = 0.0;
+  if (w.first_way > 0.0 && std::isfinite(w.best_way))
+    current = std::clamp(1.0 - w.best_way / w.first_way, 0.0, 1.0);
+  return (static_cast<double>(w.goal) + current) / static_cast<double>(w.spec->goals.size());
+}
+
+}  // namespace
+
+std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
+                                   const FootstepPlanner& planner, const NavMesh* mesh,
+                                   const RunControl& control) {
+  for (const AgentSpec& agent : agents) check_agent(agent);
+  if (control.threads < 1 || control.threads > 64)
+    throw std::invalid_argument("threads must be between 1 and 64");
+  std::vector<Walker> walkers(agents.size());
+  for (std::size_t i = 0; i < agents.size(); ++i) {
+    Walker& w = walkers[i];
+    w.spec = &agents[i];
+    w.plan.name = agents[i].name;
+    w.plan.start = standing_state(agents[i].position, agents[i].facing, planner.character());
+    w.state = w.plan.start;
+  }
+  Workers workers(control.threads);
+  double reported = 0.0;
+  auto last_report = std::chrono::steady_clock::now();
+  for (long tick = 0;; ++tick) {
+    const double t = static_cast<double>(tick) * kTick;
+    std::vector<std::size_t> due;
+    bool active = false;
+    for (std::size_t i = 0; i < walkers.size(); ++i) {
+      if (walkers[i].done) continue;
+      active = true;
+      if (walkers[i].state.time - t <= kReplanLead) due.push_back(i);
+    }
+    if (!active) break;
+    const bool cancelled = control.cancelled();
+    if (cancelled || t > planner.params().max_time) {
+      for (Walker& w : walkers)
+        if (!w.done) w.plan.reason = cancelled ? "cancelled" : "time limit";
+      break;
+    }
+    if (due.empty()) continue;
+    // A plan that has run into its rest starts again from where that leaves it.
+    for (std::size_t i : due)
+      if (walkers[i].state.time < t) rest_until(walkers[i], planner, t);
+    std::vector<Attempt> attempts(due.size());
+    workers.run(due.size(), [&](std::size_t k) {
+      attempts[k] = search(walkers[due[k]], planner, mesh, seen_by(walkers, due[k], t, mesh));
+    });
+    for (std::size_t k = 0; k < due.size(); ++k)
+      commit(walkers[due[k]], attempts[k], planner, t, near(walkers, due[k], t));
+    const auto now = std::chrono::steady_clock::now();
+    if (control.progress &&
+        std::chrono::duration<double>(now - last_report).count() >= kProgressInterval) {
+      double sum = 0.0;
+      for (const Walker& w : walkers) sum += progress_of(w);
+      reported = std::max(reported, sum / static_cast<double>(walkers.size()));
+      control.progress(reported);
+      last_report = now;
+    }
+  }
+  if (control.progress && !control.cancelled()) control.progress(1.0);
+  std::vector<AgentPlan> plans;
+  for (Walker& w : walkers) {
+    w.plan.stuck_at = w.resting > 0 ? w.rested.com : w.state.com;
+    choose_foot_orientations(w.plan.footsteps, w.plan.start.foot_orientation, planner.character());
+    plans.push_back(std::move(w.plan));
+  }
+  return plans;
+}
+
+AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner, const NavMesh* mesh,
+                     const RunControl& control) {
+  return plan_agents({agent}, planner, mesh, control).front();
+}
+
+}  // namespace footfall
