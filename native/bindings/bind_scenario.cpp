@@ -21,12 +21,14 @@ struct CancelFlag {
 
 // Runs plan_scenario without the GIL; the progress callback takes it back.
 // An exception raised by the callback cancels the run and is re-raised.
-Plan plan_with_callbacks(const Scenario& scenario, const py::object& progress, CancelFlag* cancel) {
+Plan plan_with_callbacks(const Scenario& scenario, const py::object& progress, CancelFlag* cancel,
+                         int threads) {
   CancelFlag own;
   CancelFlag& flag = cancel != nullptr ? *cancel : own;
   std::optional<py::error_already_set> error;
   RunControl control;
   control.cancel = &flag.flag;
+  control.threads = threads;
   if (!progress.is_none()) {
     control.progress = [&](double fraction) {
       py::gil_scoped_acquire gil;
@@ -82,9 +84,10 @@ void bind_scenario(py::module_& m) {
       .def_readonly("character", &Plan::character)
       .def_readonly("status", &Plan::status);
   m.def("plan_scenario", &plan_with_callbacks, py::arg("scenario"),
-        py::arg("progress") = py::none(), py::arg("cancel") = nullptr,
-        "Plans every agent, without holding the GIL. progress(fraction) is called at most a few "
-        "times a second; a set CancelFlag stops the run (status CANCELLED).");
+        py::arg("progress") = py::none(), py::arg("cancel") = nullptr, py::arg("threads") = 1,
+        "Plans every agent together, without holding the GIL, on `threads` threads (1-64; the "
+        "plan is the same for any number). progress(fraction) is called at most a few times a "
+        "second; a set CancelFlag stops the run (status CANCELLED).");
   m.def("plan_to_json", &plan_to_json, py::arg("plan"));
 
   py::class_<AgentMetrics>(m, "AgentMetrics", "One agent's figures (see metrics.hpp).")

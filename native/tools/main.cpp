@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "bench_command.hpp"
 #include "footfall/metrics.hpp"
 #include "footfall/navmesh.hpp"
@@ -24,9 +26,10 @@ namespace {
 constexpr int kExitBadInput = 2;
 
 const char* const kUsage =
-    "usage: footfall plan SCENARIO -o PLAN    plan every agent of a scenario (JSON, or SteerSuite "
-    ".xml)\n"
-    "       footfall demo [-o PLAN]           plan the built-in demo (default out/demo-plan.json)\n"
+    "usage: footfall plan SCENARIO -o PLAN [--threads N]\n"
+    "                                         plan every agent of a scenario (JSON, or SteerSuite\n"
+    "                                         .xml) on N threads (default 1; same plan either way)\n"
+    "       footfall demo [-o PLAN] [--threads N]  the built-in demo (default out/demo-plan.json)\n"
     "       footfall metrics PLAN             our figures and SteerBench's, per agent, at 20 Hz\n"
     "       footfall path SCENARIO --from X,Y --to X,Y --radius R\n"
     "                                         shortest path for a disc of radius R, as JSON\n"
@@ -88,9 +91,20 @@ void print_metrics(const footfall::PlanMetrics& metrics, std::ostream& out) {
       << ", composite02 " << metrics.composite02 << "\n";
 }
 
-// Plans, writes the plan atomically (creating the folder), prints the table.
-int plan_and_write(const footfall::Scenario& scenario, const std::string& output) {
-  const footfall::Plan plan = footfall::plan_scenario(scenario);
+// Plans (showing progress when standard error is a terminal), writes the plan
+// atomically (creating the folder), prints the table.
+int plan_and_write(const footfall::Scenario& scenario, const std::string& output, int threads) {
+  footfall::RunControl control;
+  control.threads = threads;
+  const bool terminal = isatty(STDERR_FILENO) == 1;
+  if (terminal) {
+    control.progress = [](double fraction) {
+      std::cerr << "\rplanning " << std::setw(3) << static_cast<int>(100 * fraction) << "%"
+                << std::flush;
+    };
+  }
+  const footfall::Plan plan = footfall::plan_scenario(scenario, control);
+  if (terminal) std::cerr << "\r             \r" << std::flush;
   const std::filesystem::path folder = std::filesystem::path(output).parent_path();
   if (!folder.empty()) std::filesystem::create_directories(folder);
   footfall::write_plan_file(plan, output);
@@ -99,14 +113,27 @@ int plan_and_write(const footfall::Scenario& scenario, const std::string& output
   return 0;
 }
 
-// Reads "-o PATH" from the arguments after the verb; returns the positional ones.
-std::vector<std::string> parse_arguments(int argc, char** argv, std::string& output) {
+// The options after the verb: "-o PATH", "--threads N".
+struct Options {
+  std::string output;
+  int threads = 1;
+};
+
+// Reads the options after the verb; returns the positional arguments.
+std::vector<std::string> parse_arguments(int argc, char** argv, Options& options) {
   std::vector<std::string> positional;
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "-o" || arg == "--output") {
       if (i + 1 >= argc) throw UsageError(arg + " needs a file name");
-      output = argv[++i];
+      options.output = argv[++i];
+    } else if (arg == "--threads") {
+      if (i + 1 >= argc) throw UsageError("--threads needs a number");
+      const std::string text = argv[++i];
+      const int n = std::atoi(text.c_str());
+      if (text.find_first_not_of("0123456789") != std::string::npos || n < 1 || n > 64)
+        throw UsageError("--threads: expected a whole number from 1 to 64, got '" + text + "'");
+      options.threads = n;
     } else if (!arg.empty() && arg[0] == '-') {
       throw UsageError("unknown option " + arg);
     } else {
@@ -181,21 +208,24 @@ int run(int argc, char** argv) {
     return 0;
   }
   if (verb == "plan") {
-    std::string output;
-    const auto positional = parse_arguments(argc, argv, output);
+    Options options;
+    const auto positional = parse_arguments(argc, argv, options);
     if (positional.size() != 1) throw UsageError("plan takes one scenario file");
-    if (output.empty()) throw UsageError("plan needs -o PLAN");
-    return plan_and_write(footfall::load_scenario_file(positional[0]), output);
+    if (options.output.empty()) throw UsageError("plan needs -o PLAN");
+    return plan_and_write(footfall::load_scenario_file(positional[0]), options.output,
+                          options.threads);
   }
   if (verb == "demo") {
-    std::string output = "out/demo-plan.json";
-    if (!parse_arguments(argc, argv, output).empty()) throw UsageError("demo takes no file");
-    return plan_and_write(footfall::demo_scenario(), output);
+    Options options;
+    options.output = "out/demo-plan.json";
+    if (!parse_arguments(argc, argv, options).empty()) throw UsageError("demo takes no file");
+    return plan_and_write(footfall::demo_scenario(), options.output, options.threads);
   }
   if (verb == "metrics") {
-    std::string output;
-    const auto positional = parse_arguments(argc, argv, output);
-    if (positional.size() != 1 || !output.empty()) throw UsageError("metrics takes one plan file");
+    Options options;
+    const auto positional = parse_arguments(argc, argv, options);
+    if (positional.size() != 1 || !options.output.empty())
+      throw UsageError("metrics takes one plan file");
     print_metrics(footfall::measure_plan(footfall::load_plan(positional[0])), std::cout);
     return 0;
   }

@@ -93,9 +93,20 @@ def test_plans_are_bit_identical(ff):
     assert ff.plan_to_json(ff.plan_scenario(scenario)) == ff.plan_to_json(ff.plan_scenario(scenario))
 
 
+def test_threads_do_not_change_the_plan(ff):
+    scenario = ff.demo_scenario()
+    scenario.agents = [ff.AgentSpec(f"a{i}", (0.0, -3.0 + 2.0 * i), 0.0, [(11.0, 3.0 - 2.0 * i)])
+                       for i in range(4)]
+    one = ff.plan_to_json(ff.plan_scenario(scenario, threads=1))
+    assert one == ff.plan_to_json(ff.plan_scenario(scenario, threads=2))
+    with pytest.raises(ValueError, match="threads"):
+        ff.plan_scenario(scenario, threads=0)
+
+
 def test_progress_and_cancel(ff):
     scenario = ff.demo_scenario()
-    scenario.agents = [ff.AgentSpec(f"a{i}", (0.0, 0.5), 0.0, [(11.0, 0.3)]) for i in range(4)]
+    scenario.agents = [ff.AgentSpec(f"a{i}", (0.0, -4.5 + 1.5 * i), 0.0, [(11.0, 0.3)])
+                       for i in range(4)]
     seen = []
     plan = ff.plan_scenario(scenario, progress=seen.append)
     assert seen and seen[-1] == 1.0 and seen == sorted(seen)
@@ -105,7 +116,9 @@ def test_progress_and_cancel(ff):
     flag.set()
     cancelled = ff.plan_scenario(scenario, cancel=flag)
     assert cancelled.status == ff.Status.CANCELLED
-    assert len(cancelled.agents) == 0
+    # Cancelled before the first tick: every agent is there, unplanned, saying why.
+    assert [a.reason for a in cancelled.agents] == ["cancelled"] * 4
+    assert all(a.status == ff.AgentStatus.PARTIAL and not a.footsteps for a in cancelled.agents)
 
 
 def test_progress_callback_errors_propagate(ff):
