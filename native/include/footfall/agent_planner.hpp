@@ -1,6 +1,6 @@
-// Footfall — one agent's whole walk: repeated short-horizon searches toward
-// each of its goals in turn, until the last goal is reached, the agent is
-// stuck, or the time limit passes.
+// Footfall — agents' whole walks: repeated short-horizon searches toward each
+// of their goals in turn, among each other's plans, until the last goal is
+// reached, the agent is stuck, or the time limit passes (crowd.cpp).
 #pragma once
 
 #include <atomic>
@@ -34,7 +34,7 @@ const char* to_string(AgentStatus status);
 struct RunControl {
   /// Called with the fraction done, in [0, 1], at most a few times a second.
   std::function<void(double)> progress;
-  /// When set and true, the run stops at the next search and reports kCancelled.
+  /// When set and true, the run stops at the next tick and reports kCancelled.
   const std::atomic<bool>* cancel = nullptr;
   /// Threads the searches of one tick run on; the plans do not depend on it. [1, 64]
   int threads = 1;
