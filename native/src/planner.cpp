@@ -24,6 +24,9 @@ constexpr double kDuplicateTurn = 1e-3;  // [rad] goal-directed turn equal to a 
 // Agents whose COMs are further apart cannot touch: every circle lies within
 // a stride and a foot of its COM. [m]
 constexpr double kNearAgent = 3.0;
+// Far above any COM speed (desired speeds are at most 10 m/s): a bound for
+// leaving out agents too far away to matter. [m/s]
+constexpr double kMaxComSpeed = 20.0;
 
 bool circles_touch(const Circle& a, const Circle& b) {
   return distance(a.center, b.center) <= a.radius + b.radius;
@@ -213,7 +216,16 @@ bool FootstepPlanner::collides(const Footstep& step, const MovingObstacles& othe
   thread_local std::vector<int> near;
   near.clear();
   obstacles_.gather(bound, near);
-  if (near.empty() && others.empty()) return false;
+  // Other agents that cannot come near the step while it lasts are left out
+  // before sampling: a COM moves at most kMaxComSpeed (a generous bound on
+  // any step's speed) for half the step either side of its middle.
+  thread_local MovingObstacles close;
+  close.clear();
+  const double mid = 0.5 * (step.start_time + step.end_time);
+  const double reach = bound.radius + kNearAgent + kMaxComSpeed * 0.5 * step.duration();
+  for (const AgentPlan* other : others)
+    if (distance(com_at(*other, mid).position, bound.center) <= reach) close.push_back(other);
+  if (near.empty() && close.empty()) return false;
   // Samples no further apart along the COM path than `spacing`: the path is
   // never longer than speed * time between samples, where the COM speed of a
   // walking step is at most its speed at either end.
@@ -228,7 +240,7 @@ bool FootstepPlanner::collides(const Footstep& step, const MovingObstacles& othe
     for (const Circle& circle : torso) {
       if (obstacles_.first_overlap(circle, near) >= 0) return true;
     }
-    for (const AgentPlan* other : others) {
+    for (const AgentPlan* other : close) {
       const ComSample them = com_at(*other, t);
       if (distance(com, them.position) > kNearAgent) continue;
       // Both move between samples: their circles are grown by half their travel.
