@@ -156,15 +156,16 @@ def glb_json(path):
     return json.loads(data[20:20 + length])
 
 
-def feet_now(names, profile):
-    """World positions of every agent's foot bones at the current frame."""
+def bones_now(names, bones):
+    """World positions of the heads and tails of every agent's `bones` at the current frame."""
     depsgraph = bpy.context.evaluated_depsgraph_get()
     result = {}
     for name in names:
         armature = bpy.data.objects[name].evaluated_get(depsgraph)
-        for side in ("left", "right"):
-            bone = profile.bones[side]["foot"]
-            result[(name, side)] = armature.matrix_world @ armature.pose.bones[bone].head
+        for bone in bones:
+            pose = armature.pose.bones[bone]
+            result[(name, bone, "head")] = armature.matrix_world @ pose.head
+            result[(name, bone, "tail")] = armature.matrix_world @ pose.tail
     return result
 
 
@@ -172,14 +173,15 @@ def test_export_validates_and_reimports():
     import subprocess
 
     ff, plan, path = applied(doorway_plan)
-    rig, profile = imported_rig()
+    rig, _profile = imported_rig()
+    body_bones = [bone.name for bone in rig.data.bones]
     names = [agent.name for agent in plan.agents]
     scene = bpy.context.scene
-    probe_frames = [scene.frame_start + 12, (scene.frame_start + scene.frame_end) // 2, scene.frame_end - 5]
+    probe_frames = range(scene.frame_start, scene.frame_end + 1, 5)
     expected = {}
     for frame in probe_frames:
         scene.frame_set(frame)
-        expected[frame] = feet_now(names, profile)
+        expected[frame] = bones_now(names, body_bones)
     objects_before = sorted(o.name for o in bpy.data.objects)
 
     out = TMP / "crowd.glb"
@@ -209,10 +211,10 @@ def test_export_validates_and_reimports():
     worst = 0.0
     for frame, feet in expected.items():
         bpy.context.scene.frame_set(frame)
-        for key, position in feet_now(names, profile).items():
+        for key, position in bones_now(names, body_bones).items():
             worst = max(worst, (position - feet[key]).length)
-    print(f"re-imported feet: worst {worst * 1000:.2f} mm off")
-    check(worst <= 0.005, f"re-imported feet are {worst * 1000:.2f} mm off")
+    print(f"re-imported bones (heads and tails, feet to head and hands): worst {worst * 1000:.2f} mm off")
+    check(worst <= 0.005, f"re-imported bones are {worst * 1000:.2f} mm off")
 
 
 def behaviour_plan(ff):

@@ -28,6 +28,7 @@ from .rig_import import profile_of
 
 IK_FOOT = "footfall_ik_foot.{}"
 POLE = "footfall_pole.{}"
+CONTROL_PREFIXES = (IK_FOOT.format(""), POLE.format(""))  # bones that only drive the others
 SIDES = (("left", "L"), ("right", "R"))
 CROWD_COLLECTION = "Footfall Crowd"
 POLE_AHEAD = 0.5  # [m] knee poles in front of the knees

@@ -74,10 +74,15 @@ class FOOTFALL_OT_export_gltf(bpy.types.Operator, ExportHelper):
     def execute(self, context):
         from ..bridge import export
 
+        window_manager = context.window_manager
+        window_manager.progress_begin(0, 100)
         try:
-            count = export.export_crowd(self.filepath, context.scene)
+            count = export.export_crowd(self.filepath, context.scene,
+                                        lambda f: window_manager.progress_update(int(100 * f)))
         except export.ExportError as error:
             self.report({"ERROR"}, str(error))
             return {"CANCELLED"}
+        finally:
+            window_manager.progress_end()
         self.report({"INFO"}, f"Exported {count} agents to {self.filepath}")
         return {"FINISHED"}
