@@ -64,16 +64,20 @@ void bind_planner(py::module_& m) {
         py::arg("max_foot_turn"));
 
   py::class_<AgentSpec>(m, "AgentSpec",
-                        "An agent to plan: name, position [m], facing [rad], goals [m].")
+                        "An agent to plan: name, position [m], facing [rad], goals [m], and whether "
+                        "it walks through its last goal and leaves there.")
       .def(py::init<>())
-      .def(py::init([](std::string name, Vec2 position, double facing, std::vector<Vec2> goals) {
-             return AgentSpec{std::move(name), position, facing, std::move(goals)};
+      .def(py::init([](std::string name, Vec2 position, double facing, std::vector<Vec2> goals,
+                       bool leave_at_goal) {
+             return AgentSpec{std::move(name), position, facing, std::move(goals), leave_at_goal};
            }),
-           py::arg("name"), py::arg("position"), py::arg("facing"), py::arg("goals"))
+           py::arg("name"), py::arg("position"), py::arg("facing"), py::arg("goals"),
+           py::arg("leave_at_goal") = false)
       .def_readwrite("name", &AgentSpec::name)
       .def_readwrite("position", &AgentSpec::position)
       .def_readwrite("facing", &AgentSpec::facing)
-      .def_readwrite("goals", &AgentSpec::goals);
+      .def_readwrite("goals", &AgentSpec::goals)
+      .def_readwrite("leave_at_goal", &AgentSpec::leave_at_goal);
 
   py::enum_<AgentStatus>(m, "AgentStatus")
       .value("REACHED", AgentStatus::kReached)
@@ -87,6 +91,7 @@ void bind_planner(py::module_& m) {
       .def_readonly("start", &AgentPlan::start)
       .def_readonly("footsteps", &AgentPlan::footsteps)
       .def_readonly("goals_reached", &AgentPlan::goals_reached)
+      .def_readonly("leaves", &AgentPlan::leaves)
       .def_readonly("searches", &AgentPlan::searches)
       .def_readonly("nodes_generated", &AgentPlan::nodes_generated)
       .def_readonly("nodes_expanded", &AgentPlan::nodes_expanded)

@@ -54,31 +54,6 @@ void check_agent(const AgentSpec& agent) {
   }
 }
 
-// Appends a stop step, halving its duration while it would run into an
-// obstacle (the COM still coasts while it decelerates). Returns false when even
-// the shortest stop collides.
-bool append_stop(const FootstepPlanner& planner, FootstepState& state,
-                 std::vector<Footstep>& steps) {
-  double duration = planner.params().stop_duration;
-  for (int attempt = 0; attempt < 4; ++attempt, duration *= 0.5) {
-    const StepResult stop = planner.stop_step(state, duration);
-    if (stop.valid()) {
-      steps.push_back(stop.step);
-      state = stop.state;
-      return true;
-    }
-  }
-  return false;
-}
-
-// Brings the character to rest with its feet side by side: one stop to
-// decelerate, a second one to close the feet.
-void come_to_rest(const FootstepPlanner& planner, FootstepState& state,
-                  std::vector<Footstep>& steps) {
-  if (!state.standing() && !append_stop(planner, state, steps)) return;
-  append_stop(planner, state, steps);
-}
-
 /// One agent as the driver keeps it.
 struct Walker {
   const AgentSpec* spec = nullptr;
@@ -92,6 +67,11 @@ struct Walker {
   double improved_at = 0.0;  ///< Plan time when best_way last shortened by min_progress. [s]
   bool done = false;
 };
+
+/// True if steps that reach the walker's current goal end its walk there.
+bool leaves_now(const Walker& w, bool reached) {
+  return reached && w.spec->leave_at_goal && w.goal + 1 == w.spec->goals.size();
+}
 
 /// What one search gave, before it is committed.
 struct Attempt {
@@ -111,7 +91,7 @@ MovingObstacles seen_by(const std::vector<Walker>& walkers, std::size_t i, doubl
   const Vec2 ahead = unit(facing_at(walkers[i].plan, t));
   MovingObstacles seen;
   for (std::size_t j = 0; j < walkers.size(); ++j) {
-    if (j == i) continue;
+    if (j == i || !present_at(walkers[j].plan, t)) continue;
     const Vec2 them = com_at(walkers[j].plan, t).position;
     const Vec2 d = them - eye;
     if (dot(d, d) > kViewDistance * kViewDistance || dot(d, ahead) <= 0.0) continue;
@@ -119,6 +99,27 @@ MovingObstacles seen_by(const std::vector<Walker>& walkers, std::size_t i, doubl
     seen.push_back(&walkers[j].plan);
   }
   return seen;
+}
+
+/// Cuts the attempt's steps back to the last state from which the agent
+/// comes to rest, with room to turn unless the steps reach the goal (none
+/// left: it waits). Committed plans are checked with the agent standing after
+/// its rest, so the rest must be complete; and the next search starts there,
+/// so it must be able to set off in any direction: a rest in a door frame,
+/// facing a post, can leave every step blocked.
+void cut_to_rest(const FootstepPlanner& planner, const FootstepState& start, Attempt& a) {
+  std::vector<FootstepState> states{start};
+  for (const Footstep& step : a.steps) states.push_back(state_after(states.back(), step));
+  std::size_t keep = a.steps.size();
+  for (; keep > 0; --keep) {
+    const Rest rest = planner.come_to_rest(states[keep]);
+    const bool at_goal = a.reached && keep == a.steps.size();
+    if (rest.complete && (at_goal || planner.room_to_turn(rest.state.com))) break;
+  }
+  if (keep == a.steps.size()) return;
+  a.steps.resize(keep);
+  a.end = states[keep];
+  a.reached = false;
 }
 
 /// The agent's next search: toward its local goal, among `others`.
@@ -132,6 +133,7 @@ Attempt search(const Walker& w, const FootstepPlanner& planner, const NavMesh* m
   a.steps = result.footsteps;
   a.end = result.footsteps.empty() ? w.state : result.end_state;
   a.reached = result.status == Status::kSuccess && target.is_goal;
+  if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, a);
   a.way_left = a.reached ? 0.0 : way_toward(mesh, planner.character(), a.end.com, goal).length;
   a.nodes_generated = result.nodes_generated;
   a.nodes_expanded = result.nodes_expanded;
@@ -145,7 +147,8 @@ MovingObstacles near(const std::vector<Walker>& walkers, std::size_t i, double t
   const Vec2 here = com_at(walkers[i].plan, t).position;
   MovingObstacles out;
   for (std::size_t j = 0; j < walkers.size(); ++j) {
-    if (j != i && distance(com_at(walkers[j].plan, t).position, here) <= kCheckDistance)
+    if (j != i && present_at(walkers[j].plan, t) &&
+        distance(com_at(walkers[j].plan, t).position, here) <= kCheckDistance)
       out.push_back(&walkers[j].plan);
   }
   return out;
@@ -218,14 +221,26 @@ void commit(Walker& w, const Attempt& a, const FootstepPlanner& planner, double 
   }
   std::vector<Footstep> steps = a.steps;
   FootstepState rested = a.end;
-  come_to_rest(planner, rested, steps);
+  // One that leaves at its last goal walks on through it; the others come to rest.
+  const bool leaving = leaves_now(w, a.reached);
+  if (!leaving) {
+    const Rest rest = planner.come_to_rest(rested);
+    steps.insert(steps.end(), rest.steps.begin(), rest.steps.end());
+    rested = rest.state;
+  }
   AgentPlan trial;
+  trial.leaves = leaving;
+  double from = 0.0;  // the trial differs from the plan from then on
   if (!a.steps.empty()) {
     trial.start = w.plan.start;
-    trial.footsteps.assign(w.plan.footsteps.begin(), w.plan.footsteps.end() - w.resting);
+    const std::size_t kept = w.plan.footsteps.size() - w.resting;
+    trial.footsteps.assign(w.plan.footsteps.begin(), w.plan.footsteps.begin() + kept);
     trial.footsteps.insert(trial.footsteps.end(), steps.begin(), steps.end());
+    // During the last kept step the free foot swings toward the next step's
+    // foot (feet_at): that step's circles change with the new steps too.
+    from = kept > 0 ? trial.footsteps[kept - 1].start_time : a.steps.front().start_time;
   }
-  if (a.steps.empty() || touches(trial, a.steps.front().start_time, planner, others)) {
+  if (a.steps.empty() || touches(trial, from, planner, others)) {
     rest_until(w, planner, t);
     if (!(a.reached && a.steps.empty())) {  // at the goal already, or waiting
       progress(w, w.best_way, planner);
@@ -244,6 +259,7 @@ void commit(Walker& w, const Attempt& a, const FootstepPlanner& planner, double 
   ++w.plan.goals_reached;
   if (++w.goal == w.spec->goals.size()) {
     w.plan.status = AgentStatus::kReached;
+    w.plan.leaves = w.spec->leave_at_goal;
     w.done = true;
     return;
   }

@@ -6,6 +6,19 @@
 #include "footstep_shape.hpp"
 
 namespace footfall {
+
+FootstepState state_after(const FootstepState& state, const Footstep& step) {
+  FootstepState next = state;
+  next.com = step.com_end;
+  next.com_velocity = step.com_velocity_end;
+  next.last_foot = step.foot;
+  next.feet[static_cast<int>(step.foot)] = step.foot_position;
+  next.foot_orientation[static_cast<int>(step.foot)] = step.orientation_interval;
+  next.facing = step.phi;
+  next.time = step.end_time;
+  return next;
+}
+
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -26,20 +39,6 @@ double speed_change_cost(double mass, double desired_speed, double incoming_spee
                          double cos_2theta) {
   const double kept = incoming_speed * cos_2theta;
   return 0.5 * mass * std::fabs(desired_speed * desired_speed - kept * kept);
-}
-
-// The state at the end of `step` taken from `state`: the COM where the step
-// leaves it, its foot planted, the torso facing the step's phi.
-FootstepState state_after(const FootstepState& state, const Footstep& step) {
-  FootstepState next = state;
-  next.com = step.com_end;
-  next.com_velocity = step.com_velocity_end;
-  next.last_foot = step.foot;
-  next.feet[static_cast<int>(step.foot)] = step.foot_position;
-  next.foot_orientation[static_cast<int>(step.foot)] = step.orientation_interval;
-  next.facing = step.phi;
-  next.time = step.end_time;
-  return next;
 }
 
 StepResult invalid(StepValidity why) {

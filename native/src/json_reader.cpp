@@ -155,6 +155,11 @@ long long integer(const Json& value, const std::string& path) {
   return value.get<long long>();
 }
 
+bool boolean(const Json& value, const std::string& path) {
+  if (!value.is_boolean()) fail(path, "expected true or false, got " + type_name(value));
+  return value.get<bool>();
+}
+
 std::string string(const Json& value, const std::string& path) {
   if (!value.is_string()) fail(path, "expected a string, got " + type_name(value));
   return value.get<std::string>();

@@ -39,6 +39,8 @@ const Json& require(const Json& object, const std::string& path, const char* key
 double number(const Json& value, const std::string& path);
 /// An integer.
 long long integer(const Json& value, const std::string& path);
+/// true or false.
+bool boolean(const Json& value, const std::string& path);
 /// A string.
 std::string string(const Json& value, const std::string& path);
 /// An array (any length).

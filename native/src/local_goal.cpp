@@ -63,7 +63,8 @@ Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from,
 
 /// A local goal out of sight is looked for nearer by steps of kSightBackOff,
 /// down to kMinAhead: a short-horizon search cannot go round a wall to a
-/// point behind it.
+/// point behind it. The agent rests at a local goal until it replans, so it
+/// is moved back along the way to where it could stand and turn.
 LocalGoal local_goal(const FootstepPlanner& planner, const NavMesh* mesh, const Way& way) {
   const Vec2 from = way.points.front();
   double reach = std::min(planner.params().local_goal_distance, way.length);
@@ -75,7 +76,8 @@ LocalGoal local_goal(const FootstepPlanner& planner, const NavMesh* mesh, const 
     const Vec2 point = point_along(way.points, along);
     const Vec2 ahead = point_along(way.points, along + kStep);
     const double facing = angle_of(ahead - point);
-    if (!planner.collides(standing_state(point, facing, planner.character()))) return {point, false};
+    if (planner.room_to_turn(point) && !planner.collides(standing_state(point, facing, planner.character())))
+      return {point, false};
   }
   return {point_along(way.points, reach), false};
 }

@@ -47,7 +47,7 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
     m.effort = plan.agents[a].total_cost();
   }
   std::vector<Vec2> position(n), previous(n), velocity(n), previous_velocity(n);
-  std::vector<bool> colliding(n, false);
+  std::vector<bool> colliding(n, false), present(n, true);
   std::vector<std::vector<Circle>> circles(n);
   const double dt = 1.0 / rate;
   for (int s = 0; s < samples; ++s) {
@@ -55,8 +55,10 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
     for (size_t a = 0; a < n; ++a) {
       position[a] = com_at(plan.agents[a], t).position;
       circles[a] = collision_circles(plan.agents[a], plan.character, t);
+      present[a] = present_at(plan.agents[a], t);
     }
     for (size_t a = 0; a < n; ++a) {
+      if (!present[a]) continue;  // gone, as SteerBench removes an agent at its goal
       AgentMetrics& m = result.agents[a];
       // SteerBench: torso discs, an episode when an overlap deeper than 1 mm begins.
       bool now = false;
@@ -66,7 +68,7 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
       map.gather(reach, near);
       for (const int o : near) now = now || penetration(map, o, disc) > kSteerBenchPenetration;
       for (size_t b = 0; b < n && !now; ++b) {
-        now = b != a &&
+        now = b != a && present[b] &&
               2 * kSteerBenchRadius - distance(position[a], position[b]) > kSteerBenchPenetration;
       }
       if (now && !colliding[a]) ++m.collision_episodes;
@@ -75,7 +77,7 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
       bool overlap = false;
       for (const Circle& c : circles[a]) overlap = overlap || map.overlaps(c);
       for (size_t b = 0; b < n && !overlap; ++b) {
-        if (b == a || distance(position[a], position[b]) > kNear) continue;
+        if (b == a || !present[b] || distance(position[a], position[b]) > kNear) continue;
         for (const Circle& c : circles[a]) {
           for (const Circle& d : circles[b]) overlap = overlap || circles_overlap(c, d);
         }

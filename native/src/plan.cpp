@@ -112,6 +112,7 @@ std::array<FootPose, 2> feet_at(const AgentPlan& plan, double t) {
 
 std::vector<Circle> collision_circles(const AgentPlan& plan, const CharacterParams& character,
                                       double t) {
+  if (!present_at(plan, t)) return {};
   const auto torso = torso_circles(com_at(plan, t).position, facing_at(plan, t), character);
   std::vector<Circle> circles(torso.begin(), torso.end());
   for (const FootPose& foot : feet_at(plan, t)) {

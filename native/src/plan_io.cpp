@@ -49,6 +49,7 @@ Json agent_to_json(const AgentPlan& agent) {
         {"left_foot", to_json(agent.start.feet[0])},
         {"right_foot", to_json(agent.start.feet[1])}}},
   };
+  if (agent.leaves) json["leaves"] = true;
   if (agent.status != AgentStatus::kReached) {
     json["reason"] = agent.reason;
     json["stopped_at"] = to_json(agent.stuck_at);
@@ -126,11 +127,12 @@ Footstep read_footstep(const Json& json, const std::string& path) {
 
 AgentPlan read_agent(const Json& json, const std::string& path, const CharacterParams& character) {
   expect_object(json, path,
-                {"name", "status", "reason", "stopped_at", "start", "footsteps", "stats"});
+                {"name", "status", "leaves", "reason", "stopped_at", "start", "footsteps", "stats"});
   AgentPlan agent;
   agent.name = string(require(json, path, "name"), child(path, "name"));
   agent.status = read_enum(require(json, path, "status"), child(path, "status"),
                            {AgentStatus::kReached, AgentStatus::kPartial});
+  if (json.contains("leaves")) agent.leaves = boolean(json["leaves"], child(path, "leaves"));
   if (json.contains("reason")) agent.reason = string(json["reason"], child(path, "reason"));
   if (json.contains("stopped_at"))
     agent.stuck_at = point(json["stopped_at"], child(path, "stopped_at"));

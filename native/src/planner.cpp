@@ -257,6 +257,28 @@ bool FootstepPlanner::collides(const Footstep& step, const MovingObstacles& othe
   return false;
 }
 
+Rest FootstepPlanner::come_to_rest(const FootstepState& state, const MovingObstacles& others) const {
+  Rest rest{{}, state, false};
+  const auto stop = [&] {
+    double duration = params_.stop_duration;
+    for (int attempt = 0; attempt < 4; ++attempt, duration *= 0.5) {
+      const StepResult step = stop_step(rest.state, duration, others);
+      if (step.valid()) {
+        rest.steps.push_back(step.step);
+        rest.state = step.state;
+        return true;
+      }
+    }
+    return false;
+  };
+  rest.complete = (rest.state.standing() || stop()) && stop();
+  return rest;
+}
+
+bool FootstepPlanner::room_to_turn(Vec2 com) const {
+  return !obstacles_.overlaps({com, 0.5 * character_.torso_width});
+}
+
 StepResult FootstepPlanner::stop_step(const FootstepState& state, double duration,
                                       const MovingObstacles& others) const {
   StepResult stop = create_footstep(
@@ -405,13 +427,15 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     result.status = Status::kSuccess;
   } else {
     // Horizon: the closed node with the best heuristic that the character can
-    // still stop from, so that the worst case is a sequence of stop steps.
+    // still stop from, with room to turn where it stops, so that the worst
+    // case is a sequence of stop steps and the next search is not trapped.
     result.status = Status::kPartial;
     std::stable_sort(closed.begin(), closed.end(),
                      [&](int a, int b) { return nodes[a].h < nodes[b].h; });
     for (const int candidate : closed) {
       if (!start.standing() || nodes[candidate].h < nodes[0].h) {
-        if (stop_step(nodes[candidate].state, others).valid()) {
+        const Rest rest = come_to_rest(nodes[candidate].state, others);
+        if (rest.complete && room_to_turn(rest.state.com)) {
           end = candidate;
           break;
         }

@@ -180,7 +180,7 @@ Scenario read_scenario(const Json& root) {
     const Json& agents = array(root["agents"], "agents");
     for (size_t i = 0; i < agents.size(); ++i) {
       const std::string path = item("agents", i);
-      expect_object(agents[i], path, {"name", "position", "facing", "goals"});
+      expect_object(agents[i], path, {"name", "position", "facing", "goals", "leave_at_goal"});
       AgentSpec agent;
       agent.name = agents[i].contains("name") ? string(agents[i]["name"], child(path, "name"))
                                               : "agent" + std::to_string(i);
@@ -195,6 +195,8 @@ Scenario read_scenario(const Json& root) {
       } else if (!agent.goals.empty() && !(agent.goals[0] == agent.position)) {
         agent.facing = angle_of(agent.goals[0] - agent.position);
       }
+      if (agents[i].contains("leave_at_goal"))
+        agent.leave_at_goal = boolean(agents[i]["leave_at_goal"], child(path, "leave_at_goal"));
       scenario.agents.push_back(std::move(agent));
     }
   }

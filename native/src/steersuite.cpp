@@ -225,6 +225,7 @@ class Reader {
       }
     }
     if (agent.goals.empty()) fail(who, "has no goals");
+    agent.leave_at_goal = true;  // SteerSuite removes an agent that reaches its last goal
     scenario_.agents.push_back(std::move(agent));
     radii_.push_back(radius);
   }

@@ -350,6 +350,15 @@ def test_steersuite_case_loads():
           f"positions {tuple(a.location)}, {tuple(b.location)}")
     check(abs(a.rotation_euler.z) < 1e-6 and abs(abs(b.rotation_euler.z) - math.pi) < 1e-6, "facings")
     check(len(bpy.data.collections["Footfall Obstacles"].objects) == 4, "the walls of the doorway")
+    # SteerSuite's agents leave at their goal; the property says so and reads back.
+    check(a.get("footfall_leave_at_goal") and b.get("footfall_leave_at_goal"), "leave_at_goal not set")
+    check(all(agent.get("leave_at_goal") is True for agent in extract()["agents"]), "leave_at_goal not read back")
+    b["footfall_leave_at_goal"] = "yes"
+    try:
+        extract()
+        check(False, "a bad footfall_leave_at_goal was accepted")
+    except ValueError as error:
+        check("Agent 'B': custom property 'footfall_leave_at_goal' must be true or false" in str(error), str(error))
 
 
 run([test_load_builds_the_conventions_and_extracts_back, test_hand_made_agents_and_obstacles_are_extracted,

@@ -54,12 +54,45 @@ TEST(Crowd, DoorwayTwoWayBothPassAndOneWaits) {
 }
 
 TEST(Crowd, SmallSteerSuiteCasesWalkClearOfEachOther) {
-  for (const char* name : {"3-squeeze", "circle-20", "crossing-1", "crossing-2", "crossing-3",
-                           "fan-out", "oncoming-1", "oncoming-2", "overtake", "squeeze",
-                           "surprise-1", "simple-wall"}) {
+  for (const char* name :
+       {"3-squeeze", "circle-20", "crossing-1", "crossing-2", "crossing-3", "curves",
+        "doorway-one-way", "fan-out", "oncoming-1", "oncoming-2", "overtake", "plain-obstructed",
+        "plain-unobstructed", "simple-1", "simple-2", "simple-obstacle-1", "simple-wall",
+        "squeeze", "surprise-1"}) {
     SCOPED_TRACE(name);
     plan_clear_of_each_other(load_steersuite(kCases + "/" + name + ".xml"));
   }
+}
+
+TEST(Crowd, AgentsThatLeaveAtTheGoalShareIt) {
+  // Six agents abreast, one goal. Each walks through it and is gone, so the
+  // next can reach it too; measures ignore the ones gone (no overlaps).
+  Scenario scenario;
+  const Vec2 goal{10, 0};
+  for (int i = 0; i < 6; ++i)
+    scenario.agents.push_back({"a" + std::to_string(i), {0, 1.2 * i - 3.0}, 0, {goal}, true});
+  const Plan plan = plan_clear_of_each_other(scenario);
+  int walked_through = 0;
+  for (const AgentPlan& agent : plan.agents) {
+    SCOPED_TRACE(agent.name);
+    EXPECT_TRUE(agent.leaves);
+    // One that had come to rest near the goal while waiting leaves from there.
+    walked_through += agent.footsteps.back().kind == StepKind::kWalk;
+    EXPECT_LE(distance(agent.footsteps.back().com_end, goal), 0.5);
+    EXPECT_TRUE(present_at(agent, agent.end_time()));
+    EXPECT_FALSE(present_at(agent, agent.end_time() + 0.01));
+    EXPECT_TRUE(collision_circles(agent, plan.character, agent.end_time() + 0.01).empty());
+  }
+  EXPECT_GE(walked_through, 3);
+}
+
+TEST(Crowd, AnAgentThatStaysComesToRestOnItsGoal) {
+  Scenario scenario;
+  scenario.agents.push_back({"a", {0, 0}, 0, {{6, 0}}});
+  const AgentPlan agent = plan_clear_of_each_other(scenario).agents[0];
+  EXPECT_FALSE(agent.leaves);
+  EXPECT_EQ(agent.footsteps.back().kind, StepKind::kStop);
+  EXPECT_TRUE(present_at(agent, agent.end_time() + 100.0));
 }
 
 TEST(Crowd, ThreadsDoNotChangeThePlan) {

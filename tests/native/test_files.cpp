@@ -29,7 +29,8 @@ std::string scenario_text(const std::string& body) {
 TEST(ScenarioFile, ReadsEveryPartAndItsOverrides) {
   const Scenario s = parse_scenario(scenario_text(R"(
     "obstacles": [{"polygon": [[2, -1], [3, -1], [3, 1], [2, 1]], "height": 0.8}],
-    "agents": [{"name": "ann", "position": [0, 0], "facing": 0.5, "goals": [[5, 0], [6, 1]]},
+    "agents": [{"name": "ann", "position": [0, 0], "facing": 0.5, "goals": [[5, 0], [6, 1]],
+                "leave_at_goal": true},
                {"position": [0, 3], "goals": [[0, 6]]}],
     "character": {"mass": 60, "max_speed": 2.0, "left": {"max_speed": 1.0}},
     "planner": {"max_expansions": 200, "gaits": [{"speed": 1.0, "duration": 0.5}], "turn_angles": [0.1, 0.5]}
@@ -40,6 +41,8 @@ TEST(ScenarioFile, ReadsEveryPartAndItsOverrides) {
   EXPECT_EQ(s.agents[0].name, "ann");
   EXPECT_DOUBLE_EQ(s.agents[0].facing, 0.5);
   EXPECT_EQ(s.agents[0].goals.size(), 2u);
+  EXPECT_TRUE(s.agents[0].leave_at_goal);
+  EXPECT_FALSE(s.agents[1].leave_at_goal);
   EXPECT_EQ(s.agents[1].name, "agent1");
   EXPECT_NEAR(s.agents[1].facing, 3.14159265358979 / 2, 1e-12);  // toward its first goal
   EXPECT_DOUBLE_EQ(s.character.mass, 60);
@@ -83,6 +86,9 @@ TEST(ScenarioFile, BadInputIsNamedByFileAndField) {
             "scene.json: character.mass: must be in (0, 500], got -3");
   EXPECT_EQ(error_of(scenario_text(R"("agents": [{"position": [0, 0], "goals": []}])")),
             "scene.json: agents[0].goals: needs at least one goal");
+  EXPECT_EQ(error_of(scenario_text(
+                R"("agents": [{"position": [0, 0], "goals": [[5, 0]], "leave_at_goal": 1}])")),
+            "scene.json: agents[0].leave_at_goal: expected true or false, got number");
   EXPECT_EQ(error_of(scenario_text(R"("agents": [{"position": [0, 0]}])")),
             "scene.json: agents[0].goals: missing");
   EXPECT_EQ(error_of(R"({"format": "footfall-plan", "version": 1})"),
@@ -119,6 +125,19 @@ TEST(PlanFile, RoundTripsBitForBit) {
   const Plan plan = plan_scenario(demo_scenario());
   const std::string text = plan_to_json(plan);
   EXPECT_EQ(plan_to_json(parse_plan(text)), text);
+}
+
+TEST(PlanFile, AnAgentThatLeavesSaysSo) {
+  Scenario scenario;
+  scenario.agents.push_back({"stays", {0, 0}, 0, {{3, 0}}});
+  scenario.agents.push_back({"goes", {0, 2}, 0, {{3, 2}}, true});
+  const Plan plan = plan_scenario(scenario);
+  const std::string text = plan_to_json(plan);
+  EXPECT_EQ(text.find("\"leaves\""), text.rfind("\"leaves\""));  // written once: for "goes"
+  const Plan back = parse_plan(text);
+  EXPECT_FALSE(back.agents[0].leaves);
+  EXPECT_TRUE(back.agents[1].leaves);
+  EXPECT_EQ(plan_to_json(back), text);
 }
 
 TEST(PlanFile, ReadsAHandWrittenPlanWithBehaviours) {

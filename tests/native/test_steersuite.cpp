@@ -45,6 +45,7 @@ TEST(SteerSuite, MapsYUpToZUp) {
   EXPECT_EQ(s.agents[0].position, (Vec2{-10, -1}));  // (x, z) -> (x, -z)
   EXPECT_DOUBLE_EQ(s.agents[0].facing, 0.0);
   EXPECT_EQ(s.agents[0].goals.at(0), (Vec2{15, -2}));
+  EXPECT_TRUE(s.agents[0].leave_at_goal);  // SteerSuite removes an agent at its goal
   ASSERT_EQ(s.obstacles.size(), 1u);
   EXPECT_DOUBLE_EQ(s.obstacles[0].height, 1.5);
   const ObstacleMap map(s.obstacles);

@@ -21,8 +21,8 @@ import bpy
 from ..core import native
 from ..core.scenario import document_of, parse
 from . import datablocks
-from .scene_extract import (AGENTS, GOAL_INDEX, MIN_AREA, OBSTACLES, OVERRIDE_KEYS, OVERRIDES,
-                            collection_in, overrides, signed_area)
+from .scene_extract import (AGENTS, GOAL_INDEX, LEAVE_AT_GOAL, MIN_AREA, OBSTACLES, OVERRIDE_KEYS,
+                            OVERRIDES, collection_in, overrides, signed_area)
 
 AGENT_SIZE = 0.5  # [m] length of the agent empty's arrows
 GOAL_SIZE = 0.25  # [m] radius of the goal spheres
@@ -144,6 +144,8 @@ def _add_agent(agent: dict, collection):
     obj.empty_display_size = AGENT_SIZE
     obj.location = (*agent["position"], 0.0)
     obj.rotation_euler = (0.0, 0.0, agent["facing"])
+    if agent.get("leave_at_goal"):
+        obj[LEAVE_AT_GOAL] = True
     collection.objects.link(obj)
     return obj
 

@@ -10,7 +10,9 @@ count, hidden ones included:
   (world XY) has an area; its height is the object's highest world Z;
 - every EMPTY in "Footfall Agents" whose parent is not an agent is an agent:
   its name, world XY and world rotation about Z; its child EMPTYs in that
-  collection are its goals, by "footfall_goal_index", then by name.
+  collection are its goals, by "footfall_goal_index", then by name; its
+  custom property "footfall_leave_at_goal" (true: it walks through its last
+  goal and leaves the scene there) is optional.
 
 The scene's custom property "footfall_overrides" holds the "character" and
 "planner" overrides as JSON text.
@@ -29,6 +31,7 @@ from ..core.scenario import AgentInput, ObstacleInput, ScenarioInput, scenario_d
 OBSTACLES = "Footfall Obstacles"
 AGENTS = "Footfall Agents"
 GOAL_INDEX = "footfall_goal_index"
+LEAVE_AT_GOAL = "footfall_leave_at_goal"
 OVERRIDES = "footfall_overrides"
 OVERRIDE_KEYS = ("character", "planner")
 MIN_AREA = 1e-8  # [m²] a face seen from above with less area is edge-on: no footprint
@@ -130,8 +133,17 @@ def _agents(objects, depsgraph) -> List[AgentInput]:
             position=_xy(world.translation),
             goals=[_xy(goal.evaluated_get(depsgraph).matrix_world.translation) for goal in goals],
             facing=math.atan2(world[1][0], world[0][0]),  # where the local X axis points
+            leave_at_goal=_leaves(agent),
         ))
     return agents
+
+
+def _leaves(agent) -> bool:
+    value = agent.get(LEAVE_AT_GOAL, False)
+    if value not in (True, False, 0, 1):
+        raise SceneError(f"Agent '{agent.name}': custom property '{LEAVE_AT_GOAL}' must be true or false, "
+                         f"got {value!r}")
+    return bool(value)
 
 
 def _footprint(obj, depsgraph):

@@ -17,12 +17,15 @@ Point = Tuple[float, float]
 
 @dataclass(frozen=True)
 class AgentInput:
-    """One agent: name, standing position [m], goals [m], facing [rad] (None: toward the first goal)."""
+    """One agent: name, standing position [m], goals [m], facing [rad] (None:
+    toward the first goal), and whether it walks through its last goal and
+    leaves the scene there (instead of coming to rest on it)."""
 
     name: str
     position: Point
     goals: Sequence[Point]
     facing: Optional[float] = None
+    leave_at_goal: bool = False
 
 
 @dataclass(frozen=True)
@@ -58,6 +61,8 @@ def scenario_document(scenario: ScenarioInput) -> dict:
         }
         if agent.facing is not None:
             entry["facing"] = float(agent.facing)
+        if agent.leave_at_goal:
+            entry["leave_at_goal"] = True
         agents.append(entry)
     document = {
         "format": "footfall-scenario",
@@ -79,7 +84,7 @@ def document_of(scenario) -> dict:
     """The document of a scenario the core has read (a native Scenario, as
     from a SteerSuite file), its agents and obstacles; parameters at their defaults."""
     return scenario_document(ScenarioInput(
-        agents=[AgentInput(a.name, a.position, a.goals, a.facing) for a in scenario.agents],
+        agents=[AgentInput(a.name, a.position, a.goals, a.facing, a.leave_at_goal) for a in scenario.agents],
         obstacles=[ObstacleInput(o.polygon, o.height) for o in scenario.obstacles]))
 
 

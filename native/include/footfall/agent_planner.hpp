@@ -20,6 +20,9 @@ struct AgentSpec {
   Vec2 position;            ///< Standing position of the COM. [m]
   double facing = 0;        ///< Initial facing. [rad]
   std::vector<Vec2> goals;  ///< Goals, visited in order. [m] [non-empty]
+  /// Walks through its last goal and leaves the scene there, as SteerSuite's
+  /// agents do, instead of coming to rest on it.
+  bool leave_at_goal = false;
 };
 
 /// How an agent's plan ended.
@@ -52,6 +55,9 @@ struct AgentPlan {
   FootstepState start;              ///< Standing start state.
   std::vector<Footstep> footsteps;  ///< The timed footsteps, in order.
   int goals_reached = 0;            ///< Goals reached, in order.
+  /// The agent walked through its last goal and is gone after its last step
+  /// (present_at): no one can meet it there.
+  bool leaves = false;
   int searches = 0;                 ///< Footstep searches run.
   long long nodes_generated = 0;    ///< Summed over the searches.
   long long nodes_expanded = 0;     ///< Summed over the searches.
@@ -62,6 +68,9 @@ struct AgentPlan {
   double end_time() const;
 };
 
+/// False once an agent that leaves has taken its last step.
+inline bool present_at(const AgentPlan& plan, double t) { return !plan.leaves || t <= plan.end_time(); }
+
 /// Plans `agents` together, each walking through its goals in turn. Each
 /// agent's way to its goal is its path on `mesh` (with room to walk upright,
 /// else to side-step; the straight line without a mesh or a path), and each
@@ -70,7 +79,8 @@ struct AgentPlan {
 /// of the torso, with a clear line of sight), which they keep clear of as
 /// moving obstacles, and replan 1 s before their plan runs out; a 20 Hz tick
 /// decides who replans when. Waiting is a valid answer. A reached last goal
-/// ends in a stop step; an agent whose way has not shortened by min_progress
+/// ends in a stop step, or for an agent that leaves at it, in the step that
+/// reaches it; an agent whose way has not shortened by min_progress
 /// for 15 s is "stuck"; the walk also ends at max_time ("time limit") or on
 /// cancel ("cancelled"). Deterministic, whatever `control.threads`.
 std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,

@@ -172,4 +172,8 @@ ComSample com_at(const Footstep& step, double t);
 std::array<Circle, 3> torso_circles(Vec2 com, double facing, const CharacterParams& character,
                                     double pad = 0.0);
 
+/// The state at the end of `step` taken from `state`: the COM where the step
+/// leaves it, its foot planted, the torso facing the step's phi.
+FootstepState state_after(const FootstepState& state, const Footstep& step);
+
 }  // namespace footfall

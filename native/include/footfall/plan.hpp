@@ -47,7 +47,8 @@ std::array<FootPose, 2> feet_at(const AgentPlan& plan, double t);
 double facing_at(const AgentPlan& plan, double t);
 
 /// The collision circles of figure 1c at time `t`: three torso circles, then
-/// one per planted foot (so four while a foot swings, five when both are down).
+/// one per planted foot (so four while a foot swings, five when both are down);
+/// none once an agent that leaves is gone.
 std::vector<Circle> collision_circles(const AgentPlan& plan, const CharacterParams& character,
                                       double t);
 

@@ -20,6 +20,13 @@ struct AgentPlan;
 /// (section 4). They are taken to share the planner's character.
 using MovingObstacles = std::vector<const AgentPlan*>;
 
+/// Stop steps that bring a character to rest, and where they leave it.
+struct Rest {
+  std::vector<Footstep> steps;
+  FootstepState state;    ///< After the steps.
+  bool complete = false;  ///< False when even the shortest stop would run into an obstacle.
+};
+
 /// Result of one footstep search.
 struct SearchResult {
   /// kSuccess: the goal was reached. kPartial: the horizon was reached first
@@ -69,6 +76,16 @@ class FootstepPlanner {
   bool collides(const Footstep& step, const MovingObstacles& others = {}) const;
   /// True if the standing or walking state's planted feet or torso collide.
   bool collides(const FootstepState& state) const;
+  /// Brings the character to rest with its feet side by side: a stop to
+  /// decelerate (when walking), then one to close the feet, each halved in
+  /// duration (down to an eighth) while it would run into an obstacle or one
+  /// of `others` (the COM still coasts while it decelerates).
+  Rest come_to_rest(const FootstepState& state, const MovingObstacles& others = {}) const;
+  /// True if a character standing with its COM at `com` could turn on the
+  /// spot: no static obstacle within half the torso width. A search that ends
+  /// short of its goal ends where its rest leaves the character room to turn,
+  /// so that the next search from there can set off in any direction.
+  bool room_to_turn(Vec2 com) const;
   /// The stop step from `state` lasting `duration`, with validity kCollides if
   /// it runs into an obstacle.
   StepResult stop_step(const FootstepState& state, double duration,
