@@ -41,6 +41,9 @@ constexpr double kCheckDistance = 40.0;
 constexpr double kNearAgent = 3.0;
 /// Longest single wait step. [s]
 constexpr double kMaxWait = 5.0;
+/// An agent whose search found nothing it could commit tries again this much
+/// later, not at every tick: a blocked agent's searches would cost the most. [s]
+constexpr double kRetryAfter = 0.1;
 
 void check_agent(const AgentSpec& agent) {
   if (agent.goals.empty()) throw std::invalid_argument("agent " + agent.name + ": has no goals");
@@ -62,6 +65,7 @@ struct Walker {
   FootstepState rested;  ///< After the rest.
   std::size_t resting = 0;
   std::size_t goal = 0;
+  double retry_at = 0.0;  ///< No search before this time. [s]
   double first_way = 0.0;  ///< Way to the current goal when it was first measured. [m]
   double best_way = std::numeric_limits<double>::infinity();  ///< Shortest way left so far. [m]
   double improved_at = 0.0;  ///< Plan time when best_way last shortened by min_progress. [s]
@@ -242,6 +246,7 @@ void commit(Walker& w, const Attempt& a, const FootstepPlanner& planner, double 
   }
   if (a.steps.empty() || touches(trial, from, planner, others)) {
     rest_until(w, planner, t);
+    w.retry_at = t + kRetryAfter;
     if (!(a.reached && a.steps.empty())) {  // at the goal already, or waiting
       progress(w, w.best_way, planner);
       return;
@@ -303,7 +308,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     for (std::size_t i = 0; i < walkers.size(); ++i) {
       if (walkers[i].done) continue;
       active = true;
-      if (walkers[i].state.time - t <= kReplanLead) due.push_back(i);
+      if (walkers[i].state.time - t <= kReplanLead && t >= walkers[i].retry_at) due.push_back(i);
     }
     if (!active) break;
     const bool cancelled = control.cancelled();
