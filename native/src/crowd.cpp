@@ -168,7 +168,11 @@ bool touches(const AgentPlan& trial, double from, const FootstepPlanner& planner
   const CharacterParams& c = planner.character();
   for (const AgentPlan* other : others) {
     const double end = std::max(trial.end_time(), other->end_time()) + kCheckDt;
-    for (double t = from; t <= end; t += kCheckDt) {
+    // On the global grid of kCheckDt, as `footfall metrics` samples: a foot
+    // lifted and another put down at the same instant touch only then.
+    for (long k = static_cast<long>(std::ceil(from / kCheckDt - 1e-9));; ++k) {
+      const double t = static_cast<double>(k) * kCheckDt;
+      if (t > end) break;
       const ComSample me = com_at(trial, t), them = com_at(*other, t);
       if (distance(me.position, them.position) > kNearAgent) continue;
       const double pad = 0.5 * (length(me.velocity) + length(them.velocity)) * kCheckDt;
