@@ -412,7 +412,10 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     // most generated nodes are never expanded.
     if (current != 0 && collides(step_to(search, current).step, others)) continue;
     ++result.nodes_expanded;
-    if (distance(search.nodes[current].state.com, goal) <= params_.goal_tolerance) {
+    // At the goal, and able to come to rest there among the others (whose
+    // rests may already stand on it).
+    if (distance(search.nodes[current].state.com, goal) <= params_.goal_tolerance &&
+        (current == 0 || come_to_rest(search.nodes[current].state, others).complete)) {
       goal_node = current;
       break;
     }

@@ -37,8 +37,9 @@ def doorway_plan(ff):
 
     c, p = character.derive_parameters(imported_rig()[1].dimensions)
     walls = [sc.ObstacleInput(o.polygon, o.height) for o in ff.wall_with_door(4.0, 1.2)]
-    agents = [sc.AgentInput("ann", (0, 0.2), [(8, 0.1)]), sc.AgentInput("bob", (-1.5, -0.4), [(8, -0.2)]),
-              sc.AgentInput("cy", (-3, 0.5), [(7, 0.3)])]
+    # Goals far enough apart for all three to stand at them.
+    agents = [sc.AgentInput("ann", (0, 0.2), [(8, 0.7)]), sc.AgentInput("bob", (-1.5, -0.4), [(8, -0.5)]),
+              sc.AgentInput("cy", (-3, 0.5), [(7, 0.1)])]
     plan = sc.plan(sc.scenario_document(sc.ScenarioInput(agents, walls, c, p)))
     check(all(a.status == ff.AgentStatus.REACHED for a in plan.agents), "not every agent reached")
     path = TMP / "doorway-plan.json"
@@ -183,6 +184,12 @@ def test_export_validates_and_reimports():
         scene.frame_set(frame)
         expected[frame] = bones_now(names, body_bones)
     objects_before = sorted(o.name for o in bpy.data.objects)
+
+    # Into a folder that does not exist: a clear error, and the scene as it was.
+    hidden = sorted(o.name for o in bpy.data.objects if o.hide_viewport)
+    expect_error(bpy.ops.footfall.export_gltf, "/no/such/folder/crowd.glb: the folder /no/such/folder does not exist", filepath="/no/such/folder/crowd.glb")
+    check(sorted(o.name for o in bpy.data.objects) == objects_before, "the failed export changed the scene")
+    check(sorted(o.name for o in bpy.data.objects if o.hide_viewport) == hidden, "the failed export hid objects")
 
     out = TMP / "crowd.glb"
     check(bpy.ops.footfall.export_gltf(filepath=str(out)) == {"FINISHED"}, "export failed")

@@ -171,7 +171,9 @@ def _export_still_crowd(filepath: str, copies: List[bpy.types.Object]) -> None:
     try:
         result = bpy.ops.export_scene.gltf(**_exporter_options(filepath))
     except RuntimeError as error:
-        raise ExportError(f"{filepath}: Blender's glTF exporter failed: {error}") from error
+        # The operator's error carries the exporter's traceback: its last line says what failed.
+        lines = [line for line in str(error).splitlines() if line.strip() and not line.startswith("Location:")]
+        raise ExportError(f"{filepath}: Blender's glTF exporter failed: {lines[-1] if lines else error}") from error
     if "FINISHED" not in result:
         raise ExportError(f"{filepath}: Blender's glTF exporter did not finish")
 
@@ -182,6 +184,9 @@ def export_crowd(filepath: str, scene, progress: Optional[Callable[[float], None
     armatures = crowd_armatures()
     if not armatures:
         raise ExportError("Nothing to export: apply a plan first (Footfall > Apply Plan)")
+    folder = os.path.dirname(os.path.abspath(filepath))
+    if not os.path.isdir(folder) or not os.access(folder, os.W_OK):
+        raise ExportError(f"{filepath}: the folder {folder} does not exist or cannot be written to")
     frames = list(range(scene.frame_start, scene.frame_end + 1))
     fps = scene.render.fps / scene.render.fps_base
     before = datablocks.snapshot()

@@ -29,7 +29,8 @@ struct Rest {
 
 /// Result of one footstep search.
 struct SearchResult {
-  /// kSuccess: the goal was reached. kPartial: the horizon was reached first
+  /// kSuccess: the goal was reached, where the character can come to rest
+  /// among `others`. kPartial: the horizon was reached first
   /// and `footsteps` lead to the closed node with the best heuristic among
   /// those the character can stop from (a single wait step when no node beats
   /// a standing start). kNoPath: not even that is possible. kInvalidStart: the start
