@@ -4,10 +4,11 @@
 // replans when; the output is every agent's continuous footstep plan.
 //
 // No overlaps: every plan ends with the agent coming to rest (a provisional
-// rest, replaced when the agent replans), and a new plan is committed only if
-// it keeps clear of every other agent's plan, rest included, seen or not;
-// otherwise the agent waits where its rest leaves it. Every committed plan
-// was checked against everyone's rest, so waiting is always clear.
+// rest, replaced when the agent replans; an agent that leaves at its last goal
+// is gone after it instead), and a new plan is committed only if it keeps
+// clear of every other agent's plan, rest included, seen or not; otherwise
+// the agent waits where its rest leaves it. Every committed plan was checked
+// against everyone's rest, so waiting is always clear.
 //
 // Determinism: the searches of one tick read a snapshot (every plan as it
 // stood when the tick began) and may run on several threads; their results are

@@ -32,7 +32,8 @@ struct SearchResult {
   /// kSuccess: the goal was reached, where the character can come to rest
   /// among `others`. kPartial: the horizon was reached first
   /// and `footsteps` lead to the closed node with the best heuristic among
-  /// those the character can stop from (a single wait step when no node beats
+  /// those the character can come to rest from, with room to turn where it
+  /// rests (room_to_turn; a single wait step when no node beats
   /// a standing start). kNoPath: not even that is possible. kInvalidStart: the start
   /// collides. kInvalidGoal: the goal lies inside an obstacle.
   Status status = Status::kPartial;
