@@ -128,15 +128,22 @@ def _instance(name: str, template, rig, collection) -> bpy.types.Object:
     armature.data.name = name
     collection.objects.link(armature)
     for mesh in (c for c in rig.children if c.type == "MESH"):
-        body = mesh.copy()  # mesh data linked, vertex groups and modifiers copied
+        body = deformed_copy(mesh, armature, collection)
         body.name = f"{name} body"
         body.hide_render = body.hide_viewport = False  # whatever the template's visibility
-        body.parent = armature
-        for modifier in body.modifiers:
-            if modifier.type == "ARMATURE":
-                modifier.object = armature
-        collection.objects.link(body)
     return armature
+
+
+def deformed_copy(mesh, armature, collection) -> bpy.types.Object:
+    """A copy of `mesh` (data linked, vertex groups and modifiers copied)
+    parented to and deformed by `armature`, in `collection`."""
+    body = mesh.copy()
+    body.parent = armature
+    for modifier in body.modifiers:
+        if modifier.type == "ARMATURE":
+            modifier.object = armature
+    collection.objects.link(body)
+    return body
 
 
 def _add_controls(armature, rest: RigRest) -> None:

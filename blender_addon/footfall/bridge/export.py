@@ -73,12 +73,7 @@ def _still_copies(armatures, names: Dict[object, str], scene_collection) -> List
     _remove_controls(copies)
     for copy, armature in zip(copies, armatures):
         for child in armature.children:
-            body = child.copy()
-            body.parent = copy
-            for modifier in body.modifiers:
-                if modifier.type == "ARMATURE":
-                    modifier.object = copy
-            scene_collection.objects.link(body)
+            animate.deformed_copy(child, copy, scene_collection)
     return copies
 
 
