@@ -28,7 +28,7 @@ def stage(scene, target: Vector) -> None:
         obj.color = (0.9, 0.55, 0.3, 1)
     camera = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
     camera.data.lens = 30
-    camera.location = target + Vector((-4.0, -9.0, 7.5))
+    camera.location = target + Vector((-5.0, -13.0, 11.0))
     camera.rotation_euler = (target - camera.location).to_track_quat("-Z", "Y").to_euler()
     scene.collection.objects.link(camera)
     scene.camera = camera
@@ -61,7 +61,7 @@ def main():
             obj.hide_render = obj.hide_viewport = True
     check(bpy.ops.footfall.plan(), "plan")
     check(bpy.ops.footfall.apply(), "apply")
-    stage(scene, Vector((6.0, 0.0, 0.5)))
+    stage(scene, Vector((5.0, 0.0, 0.5)))
     scene.frame_set(scene.frame_start + int(0.6 * (scene.frame_end - scene.frame_start)))
     scene.render.filepath = str(OUT / "demo.png")
     bpy.ops.render.render(write_still=True)

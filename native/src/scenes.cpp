@@ -21,9 +21,19 @@ std::vector<Obstacle> wall_with_door(double x, double door_width, double door_ce
 
 Scenario demo_scenario() {
   Scenario scenario;
-  scenario.obstacles = wall_with_door(5.0, 1.0);
+  scenario.obstacles = wall_with_door(5.0, 1.6);
+  // The room behind the door, cluttered.
   scenario.obstacles.push_back(box_obstacle({8.0, 0.0}, {1.0, 1.0}, 0.8));
+  scenario.obstacles.push_back(box_obstacle({9.8, -2.2}, {0.8, 0.8}, 0.75));
+  scenario.obstacles.push_back(box_obstacle({10.2, 2.6}, {1.4, 0.6}, 0.9));
+  scenario.obstacles.push_back(box_obstacle({13.0, -0.6}, {0.6, 1.6}, 1.0));
+  // A crowd before it, each with its own place in the room.
   scenario.agents.push_back({"walker", {0.0, 0.5}, 0.0, {{11.0, 0.3}}});
+  scenario.agents.push_back({"ada", {0.0, -1.0}, 0.0, {{14.5, -2.5}}});
+  scenario.agents.push_back({"ben", {-1.5, 1.2}, 0.0, {{13.5, 2.0}}});
+  scenario.agents.push_back({"cleo", {-1.5, -0.4}, 0.0, {{11.5, -2.0}}});
+  scenario.agents.push_back({"dan", {-4.5, 0.3}, 0.0, {{8.5, 2.0}}});
+  scenario.agents.push_back({"eve", {-3.0, 1.8}, 0.0, {{7.0, -2.5}}});
   return scenario;
 }
 

@@ -318,6 +318,36 @@ def expect_error(operator, fragment, **arguments):
     raise AssertionError("no error")
 
 
+def demo_plan(ff):
+    """The built-in demo planned for the rig, as scripts/demo.py does: a crowd
+    through a doorway, whose waits make sections shorter than the clips'
+    cross-fades."""
+    from footfall.core import character, scenario as sc
+
+    document = sc.document_of(ff.demo_scenario())
+    document["character"], document["planner"] = character.derive_parameters(imported_rig()[1].dimensions)
+    plan = sc.plan(document)
+    path = TMP / "demo-plan.json"
+    ff.write_plan_file(plan, str(path))
+    return plan, path
+
+
+def test_a_crowd_with_short_waits_applies():
+    ff, plan, path = applied(demo_plan)
+    for agent in plan.agents:
+        strips = [s for t in bpy.data.objects[agent.name].animation_data.nla_tracks for s in t.strips]
+        check(len(strips) >= 1, f"{agent.name}: no clip strips")
+        # Strips on one track never overlap (Blender refuses that), and every section has its strip.
+        check(len(strips) == len(sections_of(agent)), f"{agent.name}: {len(strips)} strips")
+
+
+def sections_of(agent):
+    from footfall.core import clip_timing
+
+    return clip_timing.sections([clip_timing.Step(s.start_time, s.end_time, s.foot.name.lower(), s.kind.name.lower(),
+                                                  s.behavior.name.lower()) for s in agent.footsteps])
+
+
 def test_failures_leave_the_scene_as_it_was():
     from footfall.core import native
 
@@ -351,4 +381,4 @@ def doorway_plan_without_rig(ff):
 
 run([test_feet_and_pelvis_follow_the_plan, test_arms_swing_opposite_to_the_legs, test_behaviours_play_their_clips,
      test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was,
-     test_applying_again_replaces_the_crowd])
+     test_applying_again_replaces_the_crowd, test_a_crowd_with_short_waits_applies])

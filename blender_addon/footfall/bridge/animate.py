@@ -263,13 +263,31 @@ def _make_cyclic(action) -> None:
 
 def _upper_body(armature, agent, clips: Dict[str, bpy.types.Action], fps: float, frame_offset: float,
                 last_frame: float) -> None:
-    """One NLA strip per section, on two alternating tracks that cross-fade."""
+    """One NLA strip per section, on two alternating tracks that cross-fade;
+    a strip that overlaps the one before on its track (sections shorter than
+    the blends, as a crowd's short waits make) goes on a free track above."""
     steps = [clip_timing.Step(s.start_time, s.end_time, s.foot.name.lower(), s.kind.name.lower(),
                               s.behavior.name.lower()) for s in agent.footsteps]
     sections = clip_timing.sections(steps)
-    tracks = [armature.animation_data.nla_tracks.new() for _ in range(2)]
-    for track, label in zip(tracks, ("A", "B")):
-        track.name = f"Footfall upper body {label}"
+    tracks, ends = [], []  # NLA tracks, and the frame where each one's last strip ends
+
+    def add_track():
+        tracks.append(armature.animation_data.nla_tracks.new())
+        tracks[-1].name = f"Footfall upper body {chr(ord('A') + len(tracks) - 1)}"
+        ends.append(-math.inf)
+
+    def track_for(i: int, start: float, end: float) -> int:
+        """Strip i's track: A or B by turns, else the lowest free one above A, else a new one."""
+        # Blender first places the strip at the whole frame below its start.
+        k = next((k for k in [i % 2, *range(1, len(tracks))] if ends[k] <= math.floor(start)), None)
+        if k is None:
+            add_track()
+            k = len(tracks) - 1
+        ends[k] = end
+        return k
+
+    add_track()
+    add_track()
     for i, section in enumerate(sections):
         action = clips[section.behavior]
         first, last = action.curve_frame_range  # one cycle: the clip's keys
@@ -277,14 +295,16 @@ def _upper_body(armature, agent, clips: Dict[str, bpy.types.Action], fps: float,
         lead = BLEND_SECONDS if i > 0 else 0.0
         tail = BLEND_SECONDS if i < len(sections) - 1 else (last_frame - frame_offset) / fps - section.end
         timing = clip_timing.strip_timing(section, first, last, fps, frame_offset, lead, max(tail, 0.0))
-        strip = tracks[i % 2].strips.new(f"{section.behavior} {i}", int(timing.frame_start), action)
+        length = (timing.action_frame_end - timing.action_frame_start) * timing.scale * timing.repeat
+        k = track_for(i, timing.frame_start, timing.frame_start + length)
+        strip = tracks[k].strips.new(f"{section.behavior} {i}", int(timing.frame_start), action)
         # The start first: Blender 3.4 moves only the start; scale and repeat then set the end.
         strip.frame_start = timing.frame_start
         strip.action_frame_start, strip.action_frame_end = timing.action_frame_start, timing.action_frame_end
         strip.scale, strip.repeat = timing.scale, timing.repeat
         strip.extrapolation = "NOTHING" if i < len(sections) - 1 else "HOLD_FORWARD"
-        # The upper track fades in and out over the lower one.
-        if i % 2:
+        # Strips above the lowest track fade in and out over what is below.
+        if k > 0:
             strip.use_auto_blend = False
             strip.blend_in = strip.blend_out = min(BLEND_SECONDS * fps, 0.5 * (strip.frame_end - strip.frame_start))
 
