@@ -63,7 +63,7 @@ class FOOTFALL_OT_apply(bpy.types.Operator):
 
 
 class FOOTFALL_OT_export_gltf(bpy.types.Operator, ExportHelper):
-    """Bake every animated agent to one action each and export the crowd as glTF"""
+    """Bake every animated agent as Blender shows it and export the crowd as glTF, one animation per agent"""
 
     bl_idname = "footfall.export_gltf"
     bl_label = "Export Crowd glTF"
