@@ -318,6 +318,17 @@ def expect_error(operator, fragment, **arguments):
     raise AssertionError("no error")
 
 
+def test_a_sheared_pose_is_refused_by_name():
+    applied(doorway_plan)
+    rig, profile = imported_rig()
+    spine = bpy.data.objects["ann"].pose.bones[profile.bones["spine"]]
+    spine.scale = (1.0, 3.0, 1.0)  # stretches the chest above it, which the clips turn
+    objects_before = sorted(o.name for o in bpy.data.objects)
+    expect_error(bpy.ops.footfall.export_gltf, "agent 'ann', bone ", filepath=str(TMP / "sheared.glb"))
+    check(sorted(o.name for o in bpy.data.objects) == objects_before, "the failed export changed the scene")
+    check(not (TMP / "sheared.glb").exists(), "a failed export left a file")
+
+
 def demo_plan(ff):
     """The built-in demo planned for the rig, as scripts/demo.py does: a crowd
     through a doorway, whose waits make sections shorter than the clips'
@@ -381,4 +392,5 @@ def doorway_plan_without_rig(ff):
 
 run([test_feet_and_pelvis_follow_the_plan, test_arms_swing_opposite_to_the_legs, test_behaviours_play_their_clips,
      test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was,
-     test_applying_again_replaces_the_crowd, test_a_crowd_with_short_waits_applies])
+     test_applying_again_replaces_the_crowd, test_a_crowd_with_short_waits_applies,
+     test_a_sheared_pose_is_refused_by_name])

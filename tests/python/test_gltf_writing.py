@@ -48,6 +48,14 @@ def test_decompose_recovers_translation_rotation_and_scale():
         assert abs(numpy.linalg.norm(q2) - 1) < 1e-12
 
 
+def test_shear_is_zero_for_rotation_and_scale_only():
+    turned = affine(rotation_matrix((1, 2, 3), 0.7), (1, 2, 3), (0.5, 2.0, 1.0))
+    assert node_motion.shear(turned) < 1e-12
+    # A non-uniform scale above a turned bone shears it.
+    sheared = affine(numpy.identity(3), scale=(1.0, 3.0, 1.0)) @ affine(rotation_matrix((0, 0, 1), 0.6))
+    assert node_motion.shear(sheared) > 0.1
+
+
 def test_continuous_takes_the_short_way():
     angles = numpy.linspace(0, 6 * math.pi, 100)  # three full turns: q alone wraps to -q
     rotations = numpy.array([quaternion((0, 0, 1), a) for a in angles])

@@ -16,6 +16,11 @@ import numpy
 from ..core import node_motion
 
 BLOCK = 64  # frames converted at once
+MAX_SHEAR = 1e-3  # largest cosine between a pose's axes that counts as none
+
+
+class BakeError(ValueError):
+    """A pose that glTF cannot hold; the message names the agent, bone and frame."""
 
 
 @dataclass
@@ -73,6 +78,7 @@ def bake(armatures, scene, frames: Sequence[int], progress: Optional[Callable[[f
             for group, sampled in zip(groups, matrices):
                 # foreach_get gives Blender's column-major layout: transpose.
                 poses = sampled.reshape(sampled.shape[:2] + (len(group.parents), 4, 4)).transpose(0, 1, 2, 4, 3)
+                _refuse_shear(poses, block, [armatures[i] for i in group.members])
                 group.translations[rows], group.rotations[rows], group.scales[rows] = node_motion.decompose(
                     node_motion.node_matrices(poses.astype(float), group.parents))
             if progress:
@@ -83,6 +89,17 @@ def bake(armatures, scene, frames: Sequence[int], progress: Optional[Callable[[f
     for group in groups:
         group.rotations[:] = node_motion.continuous(group.rotations)
     return baked
+
+
+def _refuse_shear(poses: numpy.ndarray, frames: Sequence[int], armatures) -> None:
+    """A sheared bone (a non-uniform scale above a turned bone) cannot be
+    written as glTF translation, rotation and scale: say where, and stop."""
+    sheared = node_motion.shear(poses.astype(float)) > MAX_SHEAR
+    if sheared.any():
+        row, member, bone = (int(i[0]) for i in numpy.nonzero(sheared))
+        armature = armatures[member]
+        raise BakeError(f"agent '{armature.name}', bone '{armature.pose.bones[bone].name}', frame {frames[row]}: "
+                         "the pose is sheared (a non-uniform scale above a turned bone); glTF cannot hold it")
 
 
 @dataclass

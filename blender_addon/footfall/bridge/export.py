@@ -208,7 +208,7 @@ def export_crowd(filepath: str, scene, progress: Optional[Callable[[float], None
         glb.write(file, partial)
         os.replace(partial, filepath)
         return len(copies)
-    except (OSError, glb.GlbError) as error:
+    except (OSError, glb.GlbError, bake.BakeError) as error:
         raise ExportError(f"{filepath}: the export failed: {error}") from error
     finally:
         if os.path.exists(partial):

@@ -39,6 +39,16 @@ def _affine_inverse(matrices: numpy.ndarray) -> numpy.ndarray:
     return inverse
 
 
+def shear(matrices: numpy.ndarray) -> numpy.ndarray:
+    """Per matrix (..., 4, 4), the largest cosine between two columns of its
+    linear part: 0 for rotation times scale, which glTF's translation,
+    rotation and scale can hold; more for a sheared one, which they cannot."""
+    linear = matrices[..., :3, :3]
+    unit = linear / numpy.linalg.norm(linear, axis=-2, keepdims=True)
+    cosines = numpy.abs(numpy.swapaxes(unit, -1, -2) @ unit - numpy.identity(3))
+    return cosines.max(axis=(-2, -1))
+
+
 def decompose(matrices: numpy.ndarray):
     """Translations (..., 3), unit rotations (..., 4) as glTF's x, y, z, w, and
     scales (..., 3) of affine matrices (..., 4, 4) without shear or mirroring."""
