@@ -78,9 +78,10 @@ def bake(armatures, scene, frames: Sequence[int], progress: Optional[Callable[[f
             for group, sampled in zip(groups, matrices):
                 # foreach_get gives Blender's column-major layout: transpose.
                 poses = sampled.reshape(sampled.shape[:2] + (len(group.parents), 4, 4)).transpose(0, 1, 2, 4, 3)
+                poses = poses.astype(float)
                 _refuse_shear(poses, block, [armatures[i] for i in group.members])
                 group.translations[rows], group.rotations[rows], group.scales[rows] = node_motion.decompose(
-                    node_motion.node_matrices(poses.astype(float), group.parents))
+                    node_motion.node_matrices(poses, group.parents))
             if progress:
                 progress(min(start + BLOCK, len(frames)) / len(frames))
     finally:
@@ -94,7 +95,7 @@ def bake(armatures, scene, frames: Sequence[int], progress: Optional[Callable[[f
 def _refuse_shear(poses: numpy.ndarray, frames: Sequence[int], armatures) -> None:
     """A sheared bone (a non-uniform scale above a turned bone) cannot be
     written as glTF translation, rotation and scale: say where, and stop."""
-    sheared = node_motion.shear(poses.astype(float)) > MAX_SHEAR
+    sheared = node_motion.shear(poses) > MAX_SHEAR
     if sheared.any():
         row, member, bone = (int(i[0]) for i in numpy.nonzero(sheared))
         armature = armatures[member]

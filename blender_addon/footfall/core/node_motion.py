@@ -43,10 +43,11 @@ def shear(matrices: numpy.ndarray) -> numpy.ndarray:
     """Per matrix (..., 4, 4), the largest cosine between two columns of its
     linear part: 0 for rotation times scale, which glTF's translation,
     rotation and scale can hold; more for a sheared one, which they cannot."""
-    linear = matrices[..., :3, :3]
-    unit = linear / numpy.linalg.norm(linear, axis=-2, keepdims=True)
-    cosines = numpy.abs(numpy.swapaxes(unit, -1, -2) @ unit - numpy.identity(3))
-    return cosines.max(axis=(-2, -1))
+    columns = [matrices[..., :3, k] for k in range(3)]
+    lengths = [numpy.sqrt(numpy.sum(c * c, axis=-1)) for c in columns]
+    cosines = [numpy.abs(numpy.sum(columns[a] * columns[b], axis=-1)) / (lengths[a] * lengths[b])
+               for a, b in ((0, 1), (0, 2), (1, 2))]
+    return numpy.maximum(numpy.maximum(cosines[0], cosines[1]), cosines[2])
 
 
 def decompose(matrices: numpy.ndarray):
