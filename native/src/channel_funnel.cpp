@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace footfall {
@@ -73,6 +74,18 @@ bool blocks(const Corner& c, const Corner& apex, const Corner& target) {
   return beside < c.radius;
 }
 
+/// True if the segment `from` -> `to` passes portal end `end` as it must:
+/// at least `radius` away, and on the end's `side` (+1: the walker's left)
+/// wherever it is abeam of the segment, its ends included (an end level
+/// with where the segment starts, on the wrong side, is passed wrongly).
+bool passes_end(Vec2 end, int side, Vec2 from, Vec2 to, double radius) {
+  constexpr double kSlack = 1e-9;
+  const Vec2 way = to - from;
+  const double along = dot(end - from, way);
+  const bool wrong_side = along >= 0 && along <= dot(way, way) && side * cross(way, end - from) < 0;
+  return !wrong_side && distance_to_segment(end, from, to) >= radius - kSlack;
+}
+
 /// Where the path meets corner k's circle (`in`) and leaves it (`out`).
 struct Touch {
   Vec2 in, out;
@@ -107,7 +120,6 @@ std::vector<Vec2> trace(const std::vector<Corner>& corners, const std::vector<To
 std::optional<std::size_t> first_missed_end(const std::vector<Portal>& portals, double radius,
                                              const std::vector<Corner>& corners,
                                              const std::vector<Touch>& touches) {
-  constexpr double kSlack = 1e-9;
   std::size_t k = 0;  // corners[k] is the last corner at or before the portal
   for (std::size_t i = 0; i < portals.size(); ++i) {
     while (k + 2 < corners.size() && corners[k + 1].portal <= static_cast<int>(i)) ++k;
@@ -115,14 +127,10 @@ std::optional<std::size_t> first_missed_end(const std::vector<Portal>& portals, 
       return (c.side > 0 && c.center == portals[i].left) || (c.side < 0 && c.center == portals[i].right);
     };
     if (is_corner(corners[k]) || is_corner(corners[k + 1])) continue;
-    const Vec2 from = touches[k].out, to = touches[k + 1].in, way = to - from;
-    for (int side : {+1, -1}) {
-      const Vec2 end = side > 0 ? portals[i].left : portals[i].right;
-      const double along = dot(end - from, way);
-      const bool wrong_side = along > 0 && along < dot(way, way) && side * cross(way, end - from) < 0;
-      if (wrong_side || distance_to_segment(end, from, to) < radius - kSlack)
+    for (int side : {+1, -1})
+      if (!passes_end(side > 0 ? portals[i].left : portals[i].right, side, touches[k].out,
+                      touches[k + 1].in, radius))
         return 2 * i + (side > 0 ? 0 : 1);
-    }
   }
   return std::nullopt;
 }
@@ -178,7 +186,103 @@ std::optional<std::size_t> worst_wrap(const std::vector<Corner>& corners, Vec2 s
   return worst;
 }
 
+/// True if the tangent from `a` to `b` crosses portals [first, last] as a
+/// disc's centre may: every portal end other than the two corners lies on
+/// its own side of it and at least `radius` from it.
+bool crosses_cleanly(const Corner& a, const Corner& b, const std::vector<Portal>& portals, int first,
+                     int last, double radius) {
+  Vec2 from, to;
+  if (!tangent(a, b, from, to)) return false;
+  for (int i = std::max(first, 0); i <= last && i < static_cast<int>(portals.size()); ++i)
+    for (int side : {+1, -1}) {
+      const Vec2 end = side > 0 ? portals[i].left : portals[i].right;
+      const auto is = [&](const Corner& c) { return c.side == side && c.center == end; };
+      if (!is(a) && !is(b) && !passes_end(end, side, from, to, radius)) return false;
+    }
+  return true;
+}
+
+/// The length of the arc round `c` from where the tangent from `in` touches
+/// it to where the tangent to `out` leaves it.
+double arc_length(const Corner& in, const Corner& c, const Corner& out) {
+  if (c.radius == 0.0) return 0.0;
+  Vec2 from, touch_in, touch_out, to;
+  tangent(in, c, from, touch_in);
+  tangent(c, out, touch_out, to);
+  return c.radius * sweep(c.side, angle_of(touch_in - c.center), angle_of(touch_out - c.center));
+}
+
+/// The shortest path through the channel by dynamic programming over every
+/// portal end as a possible corner: exact for any channel, but cubic in its
+/// length, so only the fallback for channels the funnel's repairs cannot
+/// settle. Empty if no disc of `radius` gets through.
+std::vector<Corner> shortest_corners(Vec2 start, Vec2 goal, const std::vector<Portal>& portals,
+                                     double radius) {
+  const int n = static_cast<int>(portals.size());
+  std::vector<Corner> nodes{{start, 0.0, 0, -1}};
+  for (int i = 0; i < n; ++i) {
+    nodes.push_back({portals[i].left, radius, +1, i});
+    nodes.push_back({portals[i].right, radius, -1, i});
+  }
+  nodes.push_back({goal, 0.0, 0, n});
+  const int count = static_cast<int>(nodes.size());
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  // reach[b][a]: shortest way from the start to where the tangent from a
+  // touches b; a later corner of the same circle is the same corner.
+  std::vector<std::vector<double>> reach(count, std::vector<double>(count, kInf));
+  std::vector<std::vector<int>> before(count, std::vector<int>(count, -1));
+  auto link = [&](int a, int b) {
+    return !nodes[a].same(nodes[b]) &&
+           crosses_cleanly(nodes[a], nodes[b], portals, nodes[a].portal, std::min(nodes[b].portal, n - 1), radius);
+  };
+  auto span = [&](int a, int b) {
+    Vec2 from, to;
+    tangent(nodes[a], nodes[b], from, to);
+    return distance(from, to);
+  };
+  for (int b = 1; b < count; ++b)
+    if (link(0, b)) reach[b][0] = span(0, b);
+  std::vector<char> links(count);
+  for (int b = 1; b + 1 < count; ++b) {
+    if (std::all_of(reach[b].begin(), reach[b].end(), [&](double r) { return r == kInf; })) continue;
+    for (int c = b + 1; c < count; ++c) links[c] = nodes[c].portal != nodes[b].portal && link(b, c);
+    for (int a = 0; a < b; ++a) {
+      if (reach[b][a] == kInf) continue;
+      for (int c = b + 1; c < count; ++c) {
+        if (!links[c]) continue;
+        const double total = reach[b][a] + arc_length(nodes[a], nodes[b], nodes[c]) + span(b, c);
+        if (total < reach[c][b]) {
+          reach[c][b] = total;
+          before[c][b] = a;
+        }
+      }
+    }
+  }
+  const int last = count - 1;
+  int b = static_cast<int>(std::min_element(reach[last].begin(), reach[last].end()) - reach[last].begin());
+  if (reach[last][b] == kInf) return {};
+  std::vector<Corner> out{nodes[last]};
+  for (int c = last; b >= 0;) {
+    out.push_back(nodes[b]);
+    const int a = before[c][b];
+    c = b;
+    b = a;
+  }
+  std::reverse(out.begin(), out.end());
+  return out;
+}
+
 }  // namespace
+
+FunnelPath around_corner(Vec2 start, Vec2 corner, int side, Vec2 goal, double radius, double tolerance) {
+  FunnelPath result;
+  const std::vector<Corner> corners{{start, 0.0, 0, -1}, {corner, radius, side, 0}, {goal, 0.0, 0, 1}};
+  std::vector<Touch> touches;
+  if (!touch_points(corners, touches)) return result;
+  result.points = trace(corners, touches, tolerance);
+  result.ok = true;
+  return result;
+}
 
 FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, double radius,
                   double tolerance) {
@@ -236,19 +340,18 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
         continue;
       }
     }
-    if (!ok) {
-      result.failed_portal = std::min(i, n - 1);
-      return result;
-    }
+    if (!ok) break;
   }
   corners.push_back({goal, 0.0, 0, n});
   // The funnel's corners are a first guess; a portal end the path still
-  // passes too near or on the wrong side joins them, until none does.
-  for (int round = 0;; ++round) {
-    std::vector<Touch> touches;
+  // passes too near or on the wrong side joins them, until none does. The
+  // rare channel where that goes round in circles (two corners that cross
+  // the funnel with a wall's end between them) gets the exact, slow answer.
+  std::vector<Touch> touches;
+  for (int round = 0; ok; ++round) {
     if (!touch_points(corners, touches) || round > 2 * n + 4) {
-      result.failed_portal = n > 0 ? n - 1 : 0;
-      return result;
+      ok = false;
+      break;
     }
     if (const std::optional<std::size_t> missing = first_missed_end(portals, radius, corners, touches)) {
       const Corner end = *missing % 2 == 0 ? left_of(static_cast<int>(*missing / 2))
@@ -262,9 +365,16 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
       corners.erase(corners.begin() + static_cast<long>(*loose));
       continue;
     }
-    result.points = trace(corners, touches, tolerance);
     break;
   }
+  if (!ok) {
+    corners = shortest_corners(start, goal, portals, radius);
+    if (corners.empty() || !touch_points(corners, touches)) {
+      result.failed_portal = n > 0 ? n - 1 : 0;
+      return result;
+    }
+  }
+  result.points = trace(corners, touches, tolerance);
   result.ok = true;
   return result;
 }

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <unordered_set>
 
 #include "navmesh_impl.hpp"
@@ -49,6 +51,9 @@ std::vector<Vec2> clip_to_rectangle(std::vector<Vec2> polygon, Vec2 lo, Vec2 hi)
       return side.keep_above ? coord(p, side.axis) >= side.bound : coord(p, side.axis) <= side.bound;
     };
     auto crossing = [&](Vec2 a, Vec2 b) {
+      // The same point whichever way the edge runs: a wall (there and back)
+      // must not come out as a sliver with two crossing points.
+      if (std::tie(a.x, a.y) > std::tie(b.x, b.y)) std::swap(a, b);
       const double t = (side.bound - coord(a, side.axis)) / (coord(b, side.axis) - coord(a, side.axis));
       Vec2 p = a + t * (b - a);
       (side.axis == 0 ? p.x : p.y) = side.bound;  // exactly on the side
@@ -161,8 +166,14 @@ void NavMeshState::forget_windings(const std::vector<Vertex>& vertices) {
   }
 }
 
-void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, const std::vector<Vec2>& polygon,
-                                   int sign) {
+void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, int sign) {
+  // The winding numbers are those of the constraint as it lies in the mesh,
+  // crossing points included: they are rounded off the caller's lines, and a
+  // sliver face beside one can be outside the triangulated outline while its
+  // centroid is inside the caller's polygon (which flooded the whole domain).
+  std::vector<Vec2> outline;
+  for (auto v = cdt.vertices_in_constraint_begin(constraint); v != cdt.vertices_in_constraint_end(constraint); ++v)
+    outline.push_back(to_vec((*v)->point()));
   auto on_constraint = [&](Face f, int i) {
     if (!f->is_constrained(i)) return false;
     const Vertex va = f->vertex(Cdt::ccw(i)), vb = f->vertex(Cdt::cw(i));
@@ -174,7 +185,7 @@ void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, const std::vect
   std::vector<Face> stack;
   auto flood = [&](Face start) {
     if (cdt.is_infinite(start) || !seen.insert(start).second) return;
-    const int inside = winding_number(polygon, centroid(start));
+    const int inside = winding_number(outline, centroid(start));
     if (inside == 0) return;
     stack.push_back(start);
     while (!stack.empty()) {
@@ -233,10 +244,9 @@ int NavMesh::add_polygon(const std::vector<Vec2>& polygon, const std::string& na
   for (Vec2 p : cleaned) points.push_back(to_point(p));
   NavMeshState::Obstacle obstacle;
   obstacle.constraint = m.cdt.insert_constraint(points.begin(), points.end(), true);
-  obstacle.polygon = cleaned;
   const std::vector<Vertex> touched = constraint_vertices(m.cdt, obstacle.constraint);
   m.forget_windings(touched);
-  m.shift_enclosed(obstacle.constraint, cleaned, +1);
+  m.shift_enclosed(obstacle.constraint, +1);
   m.repair_windings(touched);
   m.obstacles.emplace(m.next_id, std::move(obstacle));
   return m.next_id++;
@@ -270,7 +280,7 @@ void NavMesh::remove(int id) {
   std::vector<Vertex> touched;
   if (obstacle.constraint != nullptr) {
     touched = constraint_vertices(m.cdt, obstacle.constraint);
-    m.shift_enclosed(obstacle.constraint, obstacle.polygon, -1);
+    m.shift_enclosed(obstacle.constraint, -1);
     m.cdt.remove_constraint(obstacle.constraint);
   } else if (obstacle.point != Vertex()) {
     obstacle.point->info().points -= 1;

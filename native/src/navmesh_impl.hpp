@@ -49,7 +49,6 @@ struct NavMeshState {
   struct Obstacle {
     Cdt::Constraint_id constraint = nullptr;  ///< Polygons, walls and segments.
     Vertex point;                             ///< Point obstacles (null outside the domain).
-    std::vector<Vec2> polygon;                ///< Cleaned vertices, for winding numbers.
   };
 
   Cdt cdt;
@@ -70,8 +69,9 @@ struct NavMeshState {
   void forget_windings(const std::vector<Vertex>& vertices);
   /// Gives every face marked unknown near `seeds` its winding number again.
   void repair_windings(const std::vector<Vertex>& seeds);
-  /// Adds `sign` times the winding number of `polygon` to the faces it encloses.
-  void shift_enclosed(Cdt::Constraint_id constraint, const std::vector<Vec2>& polygon, int sign);
+  /// Adds `sign` times the winding number of the closed `constraint` to the
+  /// faces it encloses.
+  void shift_enclosed(Cdt::Constraint_id constraint, int sign);
   /// Removes a vertex that no constraint and no point obstacle uses any more.
   void remove_if_orphan(Vertex v);
 };

@@ -29,59 +29,70 @@ namespace {
 
 constexpr int kNoEdge = 3;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-/// A state is expanded again by a channel whose estimated length to it is
-/// below this factor times the best so far: the estimate (straight lines
-/// between crossing points) overrates channels that wind through many small
-/// triangles, so a rival that looks a little longer may be the shorter.
-constexpr double kRivalSlack = 1.25;
+constexpr double kInf = std::numeric_limits<double>::infinity();
 /// How far back a new triangle is looked for in its own channel.
 constexpr int kLoopCheck = 8;
-/// How often one (triangle, entry edge) state may be expanded, by channels
-/// that reach it with a shorter estimate each time: enough for the few
-/// channels that compete, and it bounds the work to a few passes over the mesh.
-constexpr int kMaxExpansions = 4;
-/// The search stops once no channel left can be shorter than the best path
-/// by more than this fraction: the path is within 0.5 % of the shortest
-/// through any channel, and long queries over open ground stop at the first.
-constexpr double kLengthTolerance = 0.005;
+/// The search offers channels in order of their lower bound with the part
+/// still ahead weighted by this factor, and stops once no channel left can
+/// be shorter than the best path by more than kLengthTolerance: the answer
+/// is within (1 + kLengthTolerance) * kAheadWeight (0.8 %) of the shortest
+/// path through any channel it could offer. The weight keeps long queries
+/// over open ground from widening the search to every detour of similar
+/// length.
+constexpr double kAheadWeight = 1.005;
+constexpr double kLengthTolerance = 0.003;
+/// Dominated nodes kept per edge when a search is run again because a
+/// channel it offered failed for the disc.
+constexpr int kRivalsOnRetry = 4;
 /// Rounding allowance when comparing a measured clearance with the radius. [m]
 constexpr double kClearanceSlack = 1e-9;
 
-struct Node {
-  Face face;
-  int entry;
-  int parent;
-  Vec2 point;    // where the estimate assumes the path crosses the entry edge
-  double g;      // estimated length from the start to `point`
-  double bound;  // no path through the channel so far is shorter
+/// The part of a portal a disc's centre can cross: the portal kept `radius`
+/// from both ends (every mesh vertex is on an obstacle).
+struct Gate {
+  Vec2 left, right;  ///< As seen walking through.
 };
 
-/// The point of portal [a, b], kept `radius` from both ends, nearest to `p`.
-Vec2 nearest_on_portal(Vec2 p, Vec2 a, Vec2 b, double radius) {
-  const Vec2 d = b - a;
+Gate gate_of(Vec2 left, Vec2 right, double radius) {
+  const Vec2 d = right - left;
   const double len = length(d);
-  const double lo = std::min(radius / len, 0.5), hi = std::max(1.0 - radius / len, 0.5);
-  const double t = std::clamp(dot(p - a, d) / (len * len), lo, hi);
-  return a + t * d;
+  const double keep = std::min(radius, 0.5 * len) / len;
+  return {left + keep * d, right - keep * d};
 }
 
-/// The shortest |from - q| + |q - to| over q on portal [a, b] kept `radius`
-/// from its ends: a lower bound on any path through it.
-double detour_bound(Vec2 from, Vec2 to, Vec2 a, Vec2 b, double radius) {
-  const Vec2 d = b - a;
+/// The shortest |from - q| + |q - to| over q on segment [lo, hi].
+double via_segment(Vec2 from, Vec2 to, Vec2 lo, Vec2 hi) {
+  const Vec2 d = hi - lo;
   const double len = length(d);
+  if (len == 0.0) return distance(from, lo) + distance(lo, to);
   const Vec2 u = d * (1.0 / len);
-  const Vec2 lo = a + std::min(radius, 0.5 * len) * u, hi = b - std::min(radius, 0.5 * len) * u;
-  // Mirror `to` to the far side of the portal's line; the straight line from
+  // Mirror `to` to the far side of the segment's line; the straight line from
   // `from` then meets the line where the detour is shortest, and the detour
-  // is convex along the line, so clamping to the portal gives its minimum.
-  const double sf = cross(u, from - a), st = cross(u, to - a);
+  // is convex along the line, so clamping to the segment gives its minimum.
+  const double sf = cross(u, from - lo), st = cross(u, to - lo);
   const Vec2 mirrored = (sf > 0) == (st > 0) && sf != 0 ? to - 2 * st * perp(u) : to;
-  const double sm = cross(u, mirrored - a);
+  const double sm = cross(u, mirrored - lo);
   const double along = sf == sm ? dot(from - lo, u) : dot(from + (sf / (sf - sm)) * (mirrored - from) - lo, u);
-  const Vec2 q = lo + std::clamp(along, 0.0, length(hi - lo)) * u;
+  const Vec2 q = lo + std::clamp(along, 0.0, len) * u;
   return distance(from, q) + distance(q, to);
 }
+
+/// One search node, after Polyanya (Cui, Harabor and Grastien, IJCAI 2017):
+/// the paths that come into `face` through `interval`, a part of a gate seen
+/// whole from `root`, the point where the shortest of them last turned.
+/// Lengths are relaxed: gates instead of the disc, so they never exceed the
+/// length of a disc's path through the same channel.
+struct Node {
+  Face face;
+  int entry;    ///< Edge of `face` the interval lies on (kNoEdge: the start).
+  int parent;
+  Gate interval;
+  bool left_end, right_end;  ///< The interval ends where its gate does: a path may turn there.
+  Vec2 root;
+  double g;  ///< Relaxed length from the start to `root`.
+  double f;  ///< Lower bound on any path through this node to the goal.
+  int same_edge = -1;  ///< The node kept before it that came in through the same edge.
+};
 
 /// Triangles from start to goal and the portals between them: portal k
 /// joins faces[k] and faces[k + 1].
@@ -90,44 +101,168 @@ struct Channel {
   std::vector<Portal> portals;
 };
 
+/// Where `segment` lies on the side of the line from `origin` along `dir`
+/// that `side` gives (+1 left, -1 right), as parameters [t0, t1] along it;
+/// false if nowhere (touching at one point counts when `touch` is true).
+bool clip_to_side(const Gate& segment, double& t0, double& t1, Vec2 origin, Vec2 dir, double side,
+                  bool touch) {
+  const Vec2 d = segment.right - segment.left;
+  const double s0 = side * cross(dir, segment.left + t0 * d - origin);
+  const double s1 = side * cross(dir, segment.left + t1 * d - origin);
+  if (s0 < 0 && s1 < 0) return false;
+  if (!touch && s0 <= 0 && s1 <= 0) return false;
+  const double cut = t0 + (t1 - t0) * s0 / (s0 - s1);
+  if (s0 < 0) t0 = cut;
+  else if (s1 < 0) t1 = cut;
+  return true;
+}
+
+/// Offers the channels from the start's triangle to the goal's in order of
+/// a lower bound on any path through them (weighted as kAheadWeight says).
+/// A node is dropped when another reaches the same edge with a relaxed
+/// length at least as short everywhere on it, or its turning point sooner:
+/// exact for the relaxed lengths, but a channel the relaxation favours can
+/// still fail for the disc. So a search that saw one fail is run again with
+/// `rivals`: that many dominated nodes per edge are kept, and turning points
+/// are not pruned (with none pruned at all, the channels would multiply
+/// without bound).
 class ChannelSearch {
  public:
-  ChannelSearch(const NavMeshState& mesh, const PathQuery& q, Face start, Face goal)
-      : mesh_(mesh), q_(q), goal_(goal) {
+  ChannelSearch(const NavMeshState& mesh, const PathQuery& q, Face start, Face goal, int rivals)
+      : mesh_(mesh), q_(q), goal_(goal), rivals_(rivals) {
     faces_.reserve(1024);
-    nodes_.push_back({start, kNoEdge, -1, q_.from, 0.0, distance(q_.from, q_.to)});
-    open_.push({nodes_[0].bound, nodes_[0].bound, 0});
+    nodes_.reserve(1024);
+    const double straight = distance(q_.from, q_.to);
+    nodes_.push_back({start, kNoEdge, -1, {q_.from, q_.from}, false, false, q_.from, 0.0, straight});
+    open_.push({straight, 0});
   }
 
   /// The next channel to the goal, in order of `bound`, the lower bound on
   /// the length of a path through it; false when none is left.
   bool next(Channel& channel, double& bound) {
     while (!open_.empty()) {
-      const int index = std::get<2>(open_.top());
+      const int index = open_.top().second;
       open_.pop();
-      const Node node = nodes_[index];
-      if (node.face == goal_ && node.entry != kNoEdge) {
+      if (nodes_[index].face == goal_ && nodes_[index].entry != kNoEdge) {
         unwind(index, channel);
-        bound = node.bound;
+        bound = nodes_[index].f;
         return true;
       }
-      State& state = faces_[node.face].entries[node.entry];
-      const bool better = node.g < state.best_g;
-      if (!better && (state.expansions >= kMaxExpansions || node.g >= kRivalSlack * state.best_g))
-        continue;
-      ++state.expansions;
-      state.best_g = std::min(state.best_g, node.g);
-      for (int exit = 0; exit < 3; ++exit)
-        if (exit != node.entry && passable(node, exit)) push_child(index, exit);
+      expand(index);
     }
     return false;
   }
 
  private:
-  struct State {
-    int expansions = 0;
-    double best_g = std::numeric_limits<double>::infinity();
+  /// What the search knows of one face: its corners' widths (NaN until
+  /// measured) and, per entry edge, the last node kept that came in through
+  /// it, how many dominated ones were kept anyway, and the shortest relaxed
+  /// length to each end of its gate for a path that turns there.
+  struct FaceSearch {
+    std::array<double, 3> corner_width{kNaN, kNaN, kNaN};
+    std::array<int, 3> last_in{-1, -1, -1};
+    std::array<int, 3> rivals{0, 0, 0};
+    std::array<std::array<double, 2>, 3> turn_g{{{kInf, kInf}, {kInf, kInf}, {kInf, kInf}}};
   };
+  enum Turn { kLeft = 0, kRight = 1 };
+
+  void expand(int index) {
+    const Node node = nodes_[index];
+    const Face f = node.face;
+    FaceSearch& here = faces_[f];
+    if (node.entry == kNoEdge) {  // the start's triangle: every gate is seen whole
+      for (int exit = 0; exit < 3; ++exit)
+        if (passable(node, here, exit))
+          push(index, exit, exit_gate(f, exit), true, true, node.root, node.g);
+      return;
+    }
+    const Vec2 at_left = node.interval.left, at_right = node.interval.right;
+    const Vec2 to_left = at_left - node.root, to_right = at_right - node.root;
+    // A root on the interval's line (the start on an edge, or rounding)
+    // sees everything ahead; a straight line is never too long a bound.
+    const bool sees_all =
+        std::abs(cross(at_right - at_left, node.root - at_left)) <= 1e-12 * dot(to_left, to_left) ||
+        cross(to_left, to_right) >= 0;
+    for (const int exit : {Cdt::cw(node.entry), Cdt::ccw(node.entry)}) {
+      if (!passable(node, here, exit)) continue;
+      const Gate gate = exit_gate(f, exit);
+      if (sees_all) {
+        push(index, exit, gate, true, true, node.root, node.g);
+        continue;
+      }
+      // Seen from the root: right of the ray through the interval's left end
+      // and left of the ray through its right end.
+      double t0 = 0.0, t1 = 1.0;
+      if (clip_to_side(gate, t0, t1, node.root, to_left, -1, true) &&
+          clip_to_side(gate, t0, t1, node.root, to_right, +1, true))
+        push_part(index, exit, gate, t0, t1, node.root, node.g);
+      // Hidden from the root, beyond an end of the interval where its gate
+      // ends: the path turns round that end (the first to get there does).
+      double h0 = 0.0, h1 = 1.0;
+      const double via_left = node.g + length(to_left), via_right = node.g + length(to_right);
+      if (node.left_end && clip_to_side(gate, h0, h1, node.root, to_left, +1, false) &&
+          first_to_turn(here, node.entry, kLeft, via_left))
+        push_part(index, exit, gate, h0, h1, at_left, via_left);
+      h0 = 0.0, h1 = 1.0;
+      if (node.right_end && clip_to_side(gate, h0, h1, node.root, to_right, -1, false) &&
+          first_to_turn(here, node.entry, kRight, via_right))
+        push_part(index, exit, gate, h0, h1, at_right, via_right);
+    }
+  }
+
+  /// The gate of `f`'s edge `exit`, as seen walking out through it.
+  Gate exit_gate(Face f, int exit) const {
+    return gate_of(to_vec(f->vertex(Cdt::cw(exit))->point()), to_vec(f->vertex(Cdt::ccw(exit))->point()),
+                   q_.radius);
+  }
+
+  void push_part(int index, int exit, const Gate& gate, double t0, double t1, Vec2 root, double g) {
+    const Vec2 d = gate.right - gate.left;
+    push(index, exit, {gate.left + t0 * d, gate.left + t1 * d}, t0 == 0.0, t1 == 1.0, root, g);
+  }
+
+  void push(int index, int exit, const Gate& interval, bool left_end, bool right_end, Vec2 root,
+            double g) {
+    const Face from = nodes_[index].face;
+    const Face next = from->neighbor(exit);
+    const int entry = next->index(from);
+    // The goal's face may be the start's, when the straight line between
+    // them is blocked: a channel may come back to it round a corner.
+    if (next != goal_ && circles_back(index, next)) return;
+    FaceSearch& there = faces_[next];
+    if (!admit(there, entry, interval, root, g)) return;
+    const double f = g + kAheadWeight * via_segment(root, q_.to, interval.left, interval.right);
+    nodes_.push_back({next, entry, index, interval, left_end, right_end, root, g, f, there.last_in[entry]});
+    there.last_in[entry] = static_cast<int>(nodes_.size() - 1);
+    open_.push({f, static_cast<int>(nodes_.size() - 1)});
+  }
+
+  /// False if a node kept before that came into `face` through `entry`
+  /// covers `interval` and is no longer anywhere on it than g + |root - p|
+  /// (by the triangle inequality, when its length to `root` is no more than
+  /// g), unless rivals are left.
+  bool admit(FaceSearch& face, int entry, const Gate& interval, Vec2 root, double g) const {
+    constexpr double kSlack = 1e-9;
+    for (int i = face.last_in[entry]; i >= 0; i = nodes_[i].same_edge) {
+      const Node& a = nodes_[i];
+      const Vec2 d = a.interval.right - a.interval.left;
+      const double dd = dot(d, d);
+      const double t0 = dd > 0 ? dot(interval.left - a.interval.left, d) / dd : 0.0;
+      const double t1 = dd > 0 ? dot(interval.right - a.interval.left, d) / dd : 0.0;
+      if (t0 >= -kSlack && t1 <= 1 + kSlack && a.g + distance(a.root, root) <= g + kSlack)
+        return face.rivals[entry]++ < rivals_;
+    }
+    return true;
+  }
+
+  /// True if no path seen so far turned at the `side` end of `face`'s gate
+  /// `entry` sooner than g (and records g); with rivals, every path may.
+  bool first_to_turn(FaceSearch& face, int entry, Turn side, double g) const {
+    double& best = face.turn_g[entry][side];
+    if (g > best && rivals_ == 0) return false;
+    best = std::min(best, g);
+    return true;
+  }
 
   /// True if the channel ending at node `index` passed through `face` in its
   /// last kLoopCheck steps: a channel that circles back is never the shortest.
@@ -137,20 +272,7 @@ class ChannelSearch {
     return false;
   }
 
-  void push_child(int index, int exit) {
-    const Node& node = nodes_[index];
-    const Face next = node.face->neighbor(exit);
-    if (circles_back(index, next)) return;
-    const Vec2 a = to_vec(node.face->vertex(Cdt::ccw(exit))->point());
-    const Vec2 b = to_vec(node.face->vertex(Cdt::cw(exit))->point());
-    const Vec2 crossing = nearest_on_portal(node.point, a, b, q_.radius);
-    const double g = node.g + distance(node.point, crossing);
-    const double bound = std::max(node.bound, detour_bound(q_.from, q_.to, a, b, q_.radius));
-    nodes_.push_back({next, next->index(node.face), index, crossing, g, bound});
-    open_.push({bound, g + distance(crossing, q_.to), static_cast<int>(nodes_.size() - 1)});
-  }
-
-  bool passable(const Node& node, int exit) {
+  bool passable(const Node& node, FaceSearch& here, int exit) {
     const Face f = node.face;
     if (f->is_constrained(exit) || !mesh_.walkable(f->neighbor(exit))) return false;
     const double need = 2 * q_.radius;
@@ -160,7 +282,7 @@ class ChannelSearch {
     if (node.entry == kNoEdge) return true;
     // Each corner's width is measured once per query, however often its
     // face is expanded (the walk behind it is the costly part).
-    double& width = faces_[f].corner_width[3 - node.entry - exit];
+    double& width = here.corner_width[3 - node.entry - exit];
     if (std::isnan(width)) width = corner_width(mesh_, f, 3 - node.entry - exit, need);
     return width >= need;
   }
@@ -183,16 +305,11 @@ class ChannelSearch {
   const NavMeshState& mesh_;
   const PathQuery& q_;
   Face goal_;
+  int rivals_;
   std::vector<Node> nodes_;
-  /// (bound, estimated total length, node): lowest bound first, then the estimate.
-  using Entry = std::tuple<double, double, int>;
+  /// (f, node): lowest bound first.
+  using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open_;
-  /// What the search knows of one face: its states by entry edge, and its
-  /// corners' widths (NaN until measured).
-  struct FaceSearch {
-    std::array<State, 4> entries;
-    std::array<double, 3> corner_width{kNaN, kNaN, kNaN};
-  };
   std::unordered_map<Face, FaceSearch> faces_;
 };
 
@@ -301,23 +418,42 @@ std::size_t face_index(const Channel& channel, Vec2 p) {
 }
 
 constexpr int kMaxExtraCorners = 16;
+/// The finest arc sampling a squeeze is retried with. [m]
+constexpr double kFinestArcTolerance = 1e-6;
+
+/// What trying one channel gave.
+enum class ChannelOutcome {
+  kClear,      ///< A clear path shorter than the best so far.
+  kLonger,     ///< Its path, as the search's bound foresaw, is no shorter than the best.
+  kMisjudged,  ///< Too narrow after all, or made longer by obstacles beside it.
+};
 
 /// The shortest path through `channel` that clears the radius, wrapping
-/// obstacles beside the channel as they turn up. False if the channel is too
-/// narrow, or its path would not be shorter than `give_up_length`.
-bool clear_path(const NavMeshState& mesh, const PathQuery& q, const Channel& channel,
-                double give_up_length, std::vector<Vec2>& points, double& clearance) {
+/// obstacles beside the channel as they turn up, if it is shorter than
+/// `give_up_length`.
+ChannelOutcome clear_path(const NavMeshState& mesh, const PathQuery& q, const Channel& channel,
+                          double give_up_length, std::vector<Vec2>& points, double& clearance) {
   std::vector<ExtraCorner> extra;
+  double tolerance = q.arc_tolerance;
   for (int pass = 0; pass <= kMaxExtraCorners; ++pass) {
-    FunnelPath path = funnel(q.from, q.to, portals_with(channel, extra), q.radius, q.arc_tolerance);
-    if (!path.ok || polyline_length(path.points) >= give_up_length) return false;
+    FunnelPath path = funnel(q.from, q.to, portals_with(channel, extra), q.radius, tolerance);
+    if (!path.ok) return ChannelOutcome::kMisjudged;
+    if (polyline_length(path.points) >= give_up_length)
+      return extra.empty() ? ChannelOutcome::kLonger : ChannelOutcome::kMisjudged;
     const Pinch pinch = find_pinch(mesh, path.points, q.radius);
     if (pinch.clearance >= q.radius - kClearanceSlack) {
       points = std::move(path.points);
       clearance = pinch.clearance;
-      return true;
+      return ChannelOutcome::kClear;
     }
-    if (!pinch.in_free_space) return false;
+    if (!pinch.in_free_space) return ChannelOutcome::kMisjudged;
+    // Arcs are sampled outside their circles; in a squeeze that bulge alone
+    // can come too near the far side, so sample finer before looking for
+    // a missed obstacle.
+    if (pinch.clearance > q.radius - tolerance && tolerance > kFinestArcTolerance) {
+      tolerance = std::max(0.1 * tolerance, kFinestArcTolerance);
+      continue;
+    }
     // Near an edge, its ends are the corners to wrap (its foot slides along
     // as the path bends); the foot itself only once both ends are in.
     const NearestObstacle& near = pinch.obstacle;
@@ -328,10 +464,10 @@ bool clear_path(const NavMeshState& mesh, const PathQuery& q, const Channel& cha
     const Vec2 candidates[3] = {near.edge_from, near.edge_to, near.point};
     const Vec2* corner = std::find_if(std::begin(candidates), std::end(candidates),
                                       [&](Vec2 p) { return !known(p); });
-    if (corner == std::end(candidates)) return false;  // all wrapped already: no progress
+    if (corner == std::end(candidates)) return ChannelOutcome::kMisjudged;  // no progress
     extra.push_back({face_index(channel, *corner), pinch.along, *corner, left});
   }
-  return false;
+  return ChannelOutcome::kMisjudged;
 }
 
 
@@ -378,12 +514,30 @@ PathResult NavMesh::find_path(const PathQuery& q) const {
       keep({q.from, q.to}, pinch.clearance);
       return result;  // nothing is shorter
     }
+    // Blocked by a corner of their own triangle: the way round it may stay
+    // inside, which no channel (a triangle left and entered again) offers.
+    for (int k = 0; k < 3; ++k)
+      for (int side : {+1, -1}) {
+        const Vec2 corner = to_vec(start->vertex(k)->point());
+        FunnelPath path = around_corner(q.from, corner, side, q.to, q.radius, q.arc_tolerance);
+        if (!path.ok || polyline_length(path.points) >= best) continue;
+        const Pinch round = find_pinch(m, path.points, q.radius);
+        if (round.clearance >= q.radius - kClearanceSlack) keep(std::move(path.points), round.clearance);
+      }
   }
-  ChannelSearch search(m, q, start, goal);
   Channel channel;
   double bound = 0.0;
-  while (search.next(channel, bound) && bound * (1 + kLengthTolerance) < best)
-    if (clear_path(m, q, channel, best, points, clearance)) keep(std::move(points), clearance);
+  bool misjudged = false;
+  for (const int rivals : {0, kRivalsOnRetry}) {
+    ChannelSearch search(m, q, start, goal, rivals);
+    while (search.next(channel, bound) && bound * (1 + kLengthTolerance) < best)
+      switch (clear_path(m, q, channel, best, points, clearance)) {
+        case ChannelOutcome::kClear: keep(std::move(points), clearance); break;
+        case ChannelOutcome::kLonger: break;
+        case ChannelOutcome::kMisjudged: misjudged = true; break;
+      }
+    if (!misjudged) break;
+  }
   return result;  // kNoPath unless a channel gave a path
 }
 
