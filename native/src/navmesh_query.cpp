@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <tuple>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "channel_funnel.hpp"
 #include "navmesh_impl.hpp"
@@ -41,6 +42,9 @@ constexpr int kLoopCheck = 8;
 /// length.
 constexpr double kAheadWeight = 1.005;
 constexpr double kLengthTolerance = 0.003;
+/// Nodes a search expands before it checks whether the goal is sealed off,
+/// and how far that check floods.
+constexpr int kPocketCheckAfter = 2048;
 /// Dominated nodes kept per edge when a search is run again because a
 /// channel it offered failed for the disc.
 constexpr int kRivalsOnRetry = 4;
@@ -143,6 +147,9 @@ class ChannelSearch {
     while (!open_.empty()) {
       const int index = open_.top().second;
       open_.pop();
+      // A long search may be walking all the ground around a goal no disc
+      // can reach; a flood from the goal tells that at a fraction of the cost.
+      if (++expanded_ == kPocketCheckAfter && goal_sealed_off(nodes_.front().face)) return false;
       if (nodes_[index].face == goal_ && nodes_[index].entry != kNoEdge) {
         unwind(index, channel);
         bound = nodes_[index].f;
@@ -264,6 +271,33 @@ class ChannelSearch {
     return true;
   }
 
+  /// True if the goal's triangle lies in a pocket the disc cannot leave: a
+  /// flood from it over the traversals the search accepts ends, within
+  /// kPocketCheckAfter states, without meeting the start's triangle.
+  bool goal_sealed_off(Face start) {
+    std::vector<std::pair<Face, int>> stack{{goal_, kNoEdge}};
+    std::unordered_set<std::pair<Face, int>, FaceEntryHash> seen;
+    while (!stack.empty()) {
+      const auto [f, entry] = stack.back();
+      stack.pop_back();
+      if (f == start || seen.size() > static_cast<std::size_t>(kPocketCheckAfter)) return false;
+      Node at{};
+      at.face = f;
+      at.entry = entry;
+      for (int exit = 0; exit < 3; ++exit) {
+        if (exit == entry || !passable(at, faces_[f], exit)) continue;
+        const Face next = f->neighbor(exit);
+        if (seen.insert({next, next->index(f)}).second) stack.push_back({next, next->index(f)});
+      }
+    }
+    return true;
+  }
+  struct FaceEntryHash {
+    std::size_t operator()(const std::pair<Face, int>& k) const {
+      return std::hash<const void*>()(&*k.first) * 3 + static_cast<std::size_t>(k.second);
+    }
+  };
+
   /// True if the channel ending at node `index` passed through `face` in its
   /// last kLoopCheck steps: a channel that circles back is never the shortest.
   bool circles_back(int index, Face face) const {
@@ -306,6 +340,7 @@ class ChannelSearch {
   const PathQuery& q_;
   Face goal_;
   int rivals_;
+  int expanded_ = 0;
   std::vector<Node> nodes_;
   /// (f, node): lowest bound first.
   using Entry = std::pair<double, int>;

@@ -245,6 +245,31 @@ TEST(NavMesh, FindsThePathPastStackedBoxes) {
             PathStatus::kFound);
 }
 
+// A long search checks whether the goal is walled in (a flood from it) before
+// it walks the whole field: the answer must not change, sealed or open.
+TEST(NavMesh, AGoalWalledInAcrossAWideFieldHasNoPath) {
+  for (const double door : {0.0, 1.5}) {
+    NavMesh mesh({0, 0}, {200, 200});
+    for (double x = 2; x < 200; x += 4)
+      for (double y = 2; y < 200; y += 4)
+        if (std::hypot(x - 150, y - 150) > 6) mesh.add_polygon(box({x, y}, {x + 1, y + 1}));
+    // A 4 x 4 m pen round (150, 150), its door (if any) in the west wall.
+    mesh.add_polygon(box({147.8, 147.8}, {152.2, 148}));
+    mesh.add_polygon(box({147.8, 152}, {152.2, 152.2}));
+    mesh.add_polygon(box({152, 148}, {152.2, 152}));
+    mesh.add_polygon(box({147.8, 148}, {148, 150 - door / 2}));
+    mesh.add_polygon(box({147.8, 150 + door / 2}, {148, 152}));
+    const PathResult in = path(mesh, {1, 1}, {150, 150}, 0.5);
+    const PathResult out = path(mesh, {150, 150}, {1, 1}, 0.5);
+    const PathStatus expected = door > 0 ? PathStatus::kFound : PathStatus::kNoPath;
+    EXPECT_EQ(in.status, expected) << "door " << door;
+    EXPECT_EQ(out.status, expected) << "door " << door;
+    if (door > 0) {
+      EXPECT_NEAR(in.length, out.length, 0.008 * in.length);  // each within 0.8 % of the shortest
+    }
+  }
+}
+
 // Walkability does not depend on the order obstacles arrive in, also where
 // they cross each other and the domain's boundary.
 TEST(NavMesh, InsertionOrderDoesNotChangeWhatIsFree) {
