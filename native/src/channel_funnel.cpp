@@ -297,6 +297,7 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
   std::vector<Corner> corners{{start, 0.0, 0}};
   Corner apex = corners.front(), left = apex, right = apex;
   int apex_index = -1, left_index = -1, right_index = -1;
+  Vec2 left_dir, right_dir;  // from the apex towards left and right, while they differ from it
   bool ok = true;
   for (int i = 0; i <= n; ++i) {
     const Corner new_left = left_of(i), new_right = right_of(i);
@@ -314,11 +315,11 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
       right = new_right;
       right_index = i;
     } else if (const Vec2 to_new_right = direction(apex, new_right, ok);
-               right.same(apex) || right.same(new_right) ||
-               cross(direction(apex, right, ok), to_new_right) >= 0) {
-      if (left.same(apex) || cross(direction(apex, left, ok), to_new_right) <= 0) {
+               right.same(apex) || right.same(new_right) || cross(right_dir, to_new_right) >= 0) {
+      if (left.same(apex) || cross(left_dir, to_new_right) <= 0) {
         right = new_right;
         right_index = i;
+        right_dir = to_new_right;
       } else {
         // Crossed: the left corner comes first, unless the new right one
         // stands in the way to it (with circles, either may).
@@ -330,11 +331,11 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
       left = new_left;
       left_index = i;
     } else if (const Vec2 to_new_left = direction(apex, new_left, ok);
-               left.same(apex) || left.same(new_left) ||
-               cross(direction(apex, left, ok), to_new_left) <= 0) {
-      if (right.same(apex) || cross(direction(apex, right, ok), to_new_left) >= 0) {
+               left.same(apex) || left.same(new_left) || cross(left_dir, to_new_left) <= 0) {
+      if (right.same(apex) || cross(right_dir, to_new_left) >= 0) {
         left = new_left;
         left_index = i;
+        left_dir = to_new_left;
       } else {
         wrap(blocks(new_left, apex, right) ? +1 : -1, blocks(new_left, apex, right) ? i : right_index);
         continue;
