@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "footfall/plan.hpp"
 #include "footfall/planner.hpp"
 #include "footfall/scenes.hpp"
 
@@ -102,6 +103,50 @@ void run_bench(int repeat, std::ostream& out) {
         << 1000.0 * median / std::max(1.0, steps / plans) << "\n";
   }
   out << "(" << repeat << " timed runs per plan; one core; plans start standing)\n";
+}
+
+void run_crowd_bench(int threads, std::ostream& out) {
+  struct CrowdWorkload {
+    const char* name;
+    Scenario scenario;
+  };
+  const CrowdWorkload workloads[] = {
+      {"egress of 50", egress_scenario(50, 1)},
+      {"two-way hall of 200", two_way_hall_scenario(200, 2)},
+      {"500 among 700 boxes", box_field_crowd_scenario(500, 700, 7)},
+  };
+  out << std::left << std::setw(22) << "workload" << std::right << std::setw(8) << "agents"
+      << std::setw(9) << "reached" << std::setw(10) << "searches" << std::setw(11) << "generated"
+      << std::setw(10) << "expanded" << std::setw(10) << "ms/plan" << std::setw(10) << "sim s"
+      << std::setw(10) << "wall s" << std::setw(16) << "ms/agent/tick"
+      << "\n";
+  for (const CrowdWorkload& workload : workloads) {
+    RunControl control;
+    control.threads = threads;
+    const auto begin = std::chrono::steady_clock::now();
+    const Plan plan = plan_scenario(workload.scenario, control);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    double searches = 0, generated = 0, expanded = 0, simulated = 0;
+    int reached = 0;
+    for (const AgentPlan& agent : plan.agents) {
+      searches += agent.searches;
+      generated += static_cast<double>(agent.nodes_generated);
+      expanded += static_cast<double>(agent.nodes_expanded);
+      simulated = std::max(simulated, agent.end_time());
+      reached += agent.status == AgentStatus::kReached ? 1 : 0;
+    }
+    const double agents = static_cast<double>(plan.agents.size());
+    const double ticks = std::max(1.0, simulated * 20.0);
+    out << std::left << std::setw(22) << workload.name << std::right << std::setw(8)
+        << plan.agents.size() << std::setw(9) << reached << std::setw(10) << searches
+        << std::fixed << std::setprecision(1) << std::setw(11) << generated / std::max(1.0, searches)
+        << std::setw(10) << expanded / std::max(1.0, searches) << std::setprecision(3) << std::setw(10)
+        << 1000.0 * wall / std::max(1.0, searches) << std::setprecision(1) << std::setw(10)
+        << simulated << std::setw(10) << wall << std::setprecision(4) << std::setw(16)
+        << 1000.0 * wall / (agents * ticks) << "\n";
+  }
+  out << "(one run each on " << threads
+      << " thread(s); ms/plan and ms/agent/tick are the whole run's wall time shared out)\n";
 }
 
 }  // namespace footfall::tools

@@ -1,5 +1,6 @@
 // The `footfall bench` command: per-plan time and search effort on the
-// standard single-character workloads.
+// standard single-character workloads, and with --crowds on the crowd
+// workloads of the footstep paper's table 1.
 #pragma once
 
 #include <ostream>
@@ -8,5 +9,10 @@ namespace footfall::tools {
 
 /// Runs every workload `repeat` times and prints a table to `out`.
 void run_bench(int repeat, std::ostream& out);
+
+/// Plans each crowd workload once on `threads` threads and prints, per
+/// workload, the searches' effort and the planning time per plan and per
+/// agent per 20 Hz tick to `out`.
+void run_crowd_bench(int threads, std::ostream& out);
 
 }  // namespace footfall::tools

@@ -34,6 +34,8 @@ const char* const kUsage =
     "       footfall path SCENARIO --from X,Y --to X,Y --radius R\n"
     "                                         shortest path for a disc of radius R, as JSON\n"
     "       footfall bench [--repeat N]       time the planner on the standard workloads\n"
+    "       footfall bench --crowds [--threads N]\n"
+    "                                         plan the crowd workloads of the paper's table 1\n"
     "       footfall --version | --help\n";
 
 struct UsageError : std::invalid_argument {
@@ -231,16 +233,25 @@ int run(int argc, char** argv) {
   }
   if (verb == "path") return print_path(argc, argv);
   if (verb == "bench") {
-    int repeat = 20;
+    int repeat = 20, threads = 1;
+    bool crowds = false;
     for (int i = 2; i < argc; ++i) {
       if (std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) {
         repeat = std::atoi(argv[++i]);
         if (repeat < 1) throw UsageError("--repeat needs a positive number");
+      } else if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
+        threads = std::atoi(argv[++i]);
+        if (threads < 1 || threads > 64) throw UsageError("--threads needs a number from 1 to 64");
+      } else if (std::strcmp(argv[i], "--crowds") == 0) {
+        crowds = true;
       } else {
         throw UsageError(std::string("unknown option ") + argv[i]);
       }
     }
-    footfall::tools::run_bench(repeat, std::cout);
+    if (crowds)
+      footfall::tools::run_crowd_bench(threads, std::cout);
+    else
+      footfall::tools::run_bench(repeat, std::cout);
     return 0;
   }
   throw UsageError("unknown command " + verb);

@@ -2,12 +2,14 @@
 // plans, waiting when they must; the plans do not depend on the thread count.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "footfall/metrics.hpp"
 #include "footfall/plan.hpp"
 #include "footfall/plan_io.hpp"
+#include "footfall/scenes.hpp"
 #include "footfall/steersuite.hpp"
 
 namespace footfall {
@@ -99,6 +101,37 @@ TEST(Crowd, ThreadsDoNotChangeThePlan) {
   const Scenario circle = load_steersuite(kCases + "/circle-20.xml");
   EXPECT_EQ(plan_to_json(plan_clear_of_each_other(circle, 1)),
             plan_to_json(plan_clear_of_each_other(circle, 2)));
+}
+
+// The table-1 workloads come from seeded generators: valid scenes, the same
+// for the same seed, every agent where the generator says.
+TEST(Crowd, TableOneWorkloadsAreValidSeededScenes) {
+  const Scenario egress = egress_scenario(50, 1);
+  const Scenario hall = two_way_hall_scenario(200, 2);
+  const Scenario field = box_field_crowd_scenario(500, 700, 7);
+  for (const Scenario* scenario : {&egress, &hall, &field}) EXPECT_NO_THROW(validate(*scenario));
+  EXPECT_EQ(egress.agents.size(), 50u);
+  EXPECT_EQ(hall.agents.size(), 200u);
+  EXPECT_EQ(field.agents.size(), 500u);
+  EXPECT_EQ(field.obstacles.size(), 700u);
+  for (const AgentSpec& agent : egress.agents) {
+    EXPECT_LT(agent.position.x, 5.0) << agent.name;  // inside the room
+    EXPECT_GT(agent.goals.back().x, 5.0) << agent.name;  // beyond its door
+  }
+  int walking_east = 0;
+  for (const AgentSpec& agent : hall.agents) {
+    EXPECT_GT(std::abs(agent.goals.back().x - agent.position.x), 40.0) << agent.name;
+    walking_east += agent.goals.back().x > agent.position.x;
+  }
+  EXPECT_EQ(walking_east, 100);
+  const Scenario again = box_field_crowd_scenario(500, 700, 7);
+  for (std::size_t i = 0; i < field.agents.size(); ++i) {
+    EXPECT_TRUE(again.agents[i].position == field.agents[i].position);
+    EXPECT_TRUE(again.agents[i].goals.back() == field.agents[i].goals.back());
+    const double walk = distance(field.agents[i].position, field.agents[i].goals.back());
+    EXPECT_GE(walk, 10.0);
+    EXPECT_LE(walk, 20.0);
+  }
 }
 
 }  // namespace

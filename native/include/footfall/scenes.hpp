@@ -26,6 +26,19 @@ Scenario demo_scenario();
 /// every machine). [m]
 std::vector<Obstacle> box_field(int count, double size, std::uint64_t seed);
 
+/// The crowd workloads of the footstep paper's table 1, from seeded
+/// generators; every agent leaves at its goal, as SteerSuite's do.
+/// An egress: `agents` at random in a 10 x 10 m room, each leaving through
+/// the 1.2 m door in its east wall to a point 7 m beyond it. Throws
+/// std::invalid_argument if the room cannot hold them (so do the others).
+Scenario egress_scenario(int agents, std::uint64_t seed);
+/// A two-way hall, 80 x 5 m and open at both ends: half the agents start in
+/// each half and leave by the far end.
+Scenario two_way_hall_scenario(int agents, std::uint64_t seed);
+/// `agents` at random among `boxes` boxes in an 80 m field (box_field), each
+/// walking 10-20 m in a random direction.
+Scenario box_field_crowd_scenario(int agents, int boxes, std::uint64_t seed);
+
 /// A small portable random generator (splitmix64), so that seeded scenes are
 /// the same everywhere.
 class SceneRandom {
