@@ -104,6 +104,15 @@ Point centroid(Face f) {
   return CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
 }
 
+/// True if `p` lies strictly inside face `f` (exact orientation tests).
+bool strictly_inside(Face f, const Point& p) {
+  for (int i = 0; i < 3; ++i)
+    if (CGAL::orientation(f->vertex(Cdt::ccw(i))->point(), f->vertex(Cdt::cw(i))->point(), p) !=
+        CGAL::LEFT_TURN)
+      return false;
+  return true;
+}
+
 std::vector<Vertex> constraint_vertices(const Cdt& cdt, Cdt::Constraint_id constraint) {
   std::vector<Vertex> out(cdt.vertices_in_constraint_begin(constraint),
                           cdt.vertices_in_constraint_end(constraint));
@@ -184,8 +193,13 @@ void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, int sign) {
   std::unordered_set<Face> seen;
   std::vector<Face> stack;
   auto flood = [&](Face start) {
-    if (cdt.is_infinite(start) || !seen.insert(start).second) return;
-    const int inside = winding_number(outline, centroid(start));
+    if (cdt.is_infinite(start) || seen.count(start)) return;
+    // A sliver's rounded centroid can fall outside it, onto the far side of
+    // a nearly collinear edge; such a face is flooded from a neighbour.
+    const Point c = centroid(start);
+    if (!strictly_inside(start, c)) return;
+    seen.insert(start);
+    const int inside = winding_number(outline, c);
     if (inside == 0) return;
     stack.push_back(start);
     while (!stack.empty()) {

@@ -270,6 +270,23 @@ TEST(NavMesh, AGoalWalledInAcrossAWideFieldHasNoPath) {
   }
 }
 
+// Walls whose edges meet one ulp apart (as box centres and sizes give them):
+// a sliver face between the edges has a rounded centroid on the far side of
+// one, which flooded the room as if inside that wall.
+TEST(NavMesh, WallsMeetingOneUlpApartLeaveTheRoomFree) {
+  NavMesh mesh({-10, -10}, {17, 10});
+  mesh.add_polygon({{4.9000000000000004, -5.2000000000000002}, {5.0999999999999996, -5.2000000000000002},
+                    {5.0999999999999996, -0.59999999999999964}, {4.9000000000000004, -0.59999999999999964}});
+  mesh.add_polygon({{4.9000000000000004, 0.59999999999999964}, {5.0999999999999996, 0.59999999999999964},
+                    {5.0999999999999996, 5.2000000000000002}, {4.9000000000000004, 5.2000000000000002}});
+  mesh.add_polygon({{-5.0999999999999996, -5.2000000000000002}, {-4.9000000000000004, -5.2000000000000002},
+                    {-4.9000000000000004, 5.2000000000000002}, {-5.0999999999999996, 5.2000000000000002}});
+  mesh.add_polygon({{-5, 5}, {5, 5}, {5, 5.1999999999999993}, {-5, 5.1999999999999993}});
+  mesh.add_polygon({{-5, -5.1999999999999993}, {5, -5.1999999999999993}, {5, -5}, {-5, -5}});
+  EXPECT_NEAR(mesh.clearance({3.06, 1.75}), 1.84, 1e-9);
+  EXPECT_EQ(path(mesh, {3.06, 1.75}, {12, 0}, 0.3).status, PathStatus::kFound);  // out by the door
+}
+
 // Walkability does not depend on the order obstacles arrive in, also where
 // they cross each other and the domain's boundary.
 TEST(NavMesh, InsertionOrderDoesNotChangeWhatIsFree) {
