@@ -23,6 +23,7 @@
 
 #include "footfall/agent_planner.hpp"
 #include "footfall/plan.hpp"
+#include "contact.hpp"
 #include "local_goal.hpp"
 #include "workers.hpp"
 
@@ -169,19 +170,23 @@ bool touches(const AgentPlan& trial, double from, const FootstepPlanner& planner
   const CharacterParams& c = planner.character();
   for (const AgentPlan* other : others) {
     const double end = std::max(trial.end_time(), other->end_time()) + kCheckDt;
+    // The gap where the trial starts (see touching()).
+    double start_gap = std::numeric_limits<double>::infinity();
     // On the global grid of kCheckDt, as `footfall metrics` samples: a foot
     // lifted and another put down at the same instant touch only then.
-    for (long k = static_cast<long>(std::ceil(from / kCheckDt - 1e-9));; ++k) {
+    const long first = static_cast<long>(std::ceil(from / kCheckDt - 1e-9));
+    for (long k = first;; ++k) {
       const double t = static_cast<double>(k) * kCheckDt;
       if (t > end) break;
       const ComSample me = com_at(trial, t), them = com_at(*other, t);
       if (distance(me.position, them.position) > kNearAgent) continue;
       const double pad = 0.5 * (length(me.velocity) + length(them.velocity)) * kCheckDt;
       const std::vector<Circle> mine = collision_circles(trial, c, t);
+      Gap gap;
       for (const Circle& theirs : collision_circles(*other, c, t))
-        for (const Circle& circle : mine)
-          if (distance(circle.center, theirs.center) < circle.radius + theirs.radius + pad)
-            return true;
+        for (const Circle& circle : mine) gap.add(circle, theirs, pad);
+      if (k == first && standing_still(length(me.velocity), length(them.velocity))) start_gap = gap.outright;
+      if (touching(gap, start_gap)) return true;
     }
   }
   return false;

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 #include "footfall/plan.hpp"
+#include "contact.hpp"
 #include "footstep_shape.hpp"
 
 namespace footfall {
@@ -27,10 +29,6 @@ constexpr double kNearAgent = 3.0;
 // Far above any COM speed (desired speeds are at most 10 m/s): a bound for
 // leaving out agents too far away to matter. [m/s]
 constexpr double kMaxComSpeed = 20.0;
-
-bool circles_touch(const Circle& a, const Circle& b) {
-  return distance(a.center, b.center) <= a.radius + b.radius;
-}
 
 std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, Foot last_foot) {
   // Clamped before the conversion, so that far-away coordinates stay defined.
@@ -233,25 +231,30 @@ bool FootstepPlanner::collides(const Footstep& step, const MovingObstacles& othe
   const int samples =
       std::max(1, static_cast<int>(std::ceil(top_speed * step.duration() / spacing)));
   const double dt = step.duration() / samples;
+  // Per close agent, the gap at the step's start (see touching()).
+  thread_local std::vector<double> start_gap;
+  start_gap.assign(close.size(), std::numeric_limits<double>::infinity());
   for (int i = 0; i <= samples; ++i) {
     const double t = step.start_time + dt * i;
     const Vec2 com = com_at(step, t).position;
-    const auto torso = torso_circles(com, step.phi, character_, pad);
-    for (const Circle& circle : torso) {
+    const auto torso = torso_circles(com, step.phi, character_);
+    for (Circle circle : torso) {
+      circle.radius += pad;
       if (obstacles_.first_overlap(circle, near) >= 0) return true;
     }
-    for (const AgentPlan* other : close) {
-      const ComSample them = com_at(*other, t);
+    for (std::size_t j = 0; j < close.size(); ++j) {
+      const ComSample them = com_at(*close[j], t);
       if (distance(com, them.position) > kNearAgent) continue;
-      // Both move between samples: their circles are grown by half their travel.
+      // Both move between samples: the circles are grown by half the travel.
       const double their_pad = 0.5 * length(them.velocity) * dt;
-      for (Circle theirs : collision_circles(*other, character_, t)) {
-        theirs.radius += their_pad;
-        if (circles_touch(foot, theirs)) return true;
-        for (const Circle& circle : torso) {
-          if (circles_touch(circle, theirs)) return true;
-        }
+      Gap gap;  // of the torso: the foot is put down clear of everyone, standing close or not
+      for (const Circle& theirs : collision_circles(*close[j], character_, t)) {
+        if (distance(foot.center, theirs.center) <= foot.radius + theirs.radius + their_pad) return true;
+        for (const Circle& circle : torso) gap.add(circle, theirs, pad + their_pad);
       }
+      if (i == 0 && standing_still(length(step.com_velocity_start), length(them.velocity)))
+        start_gap[j] = gap.outright;
+      if (touching(gap, start_gap[j])) return true;
     }
   }
   return false;

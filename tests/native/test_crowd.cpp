@@ -103,6 +103,17 @@ TEST(Crowd, ThreadsDoNotChangeThePlan) {
             plan_to_json(plan_clear_of_each_other(circle, 2)));
 }
 
+// Two agents standing shoulder to shoulder, 1 cm apart: any step brings one
+// within the other's padding (half its travel to the next sample), so under
+// that rule alone neither could ever walk off, as happened to agents waiting
+// at a door. Agents that stand still may move while they come no nearer.
+TEST(Crowd, AgentsStandingShoulderToShoulderWalkOff) {
+  Scenario scenario;
+  scenario.agents.push_back({"left", {0.0, 0.61}, 0.0, {{10.0, 0.61}}, true});
+  scenario.agents.push_back({"right", {0.0, 0.0}, 0.0, {{10.0, 0.0}}, true});
+  plan_clear_of_each_other(scenario);
+}
+
 // The table-1 workloads come from seeded generators: valid scenes, the same
 // for the same seed, every agent where the generator says.
 TEST(Crowd, TableOneWorkloadsAreValidSeededScenes) {

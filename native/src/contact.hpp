@@ -1,0 +1,46 @@
+// Footfall — when two agents' circles count as touching, for the footstep
+// search and for the crowd's commit check alike.
+#pragma once
+
+#include <algorithm>
+#include <limits>
+
+#include "footfall/geometry.hpp"
+
+namespace footfall {
+
+/// How near two agents come at one instant: the smallest gap between a
+/// circle of one and a circle of the other (negative where they overlap),
+/// outright and with both grown by the padding that covers their travel
+/// until the next sample. [m]
+struct Gap {
+  double outright = std::numeric_limits<double>::infinity();
+  double padded = std::numeric_limits<double>::infinity();
+
+  /// Takes in the pair (a, b), whose radii are grown by `pad` between samples.
+  void add(const Circle& a, const Circle& b, double pad) {
+    const double gap = distance(a.center, b.center) - a.radius - b.radius;
+    outright = std::min(outright, gap);
+    padded = std::min(padded, gap - pad);
+  }
+};
+
+/// True if two agents whose COMs move at `speed_a` and `speed_b` are standing
+/// still (swaying on the spot at most). [m/s]
+inline bool standing_still(double speed_a, double speed_b) {
+  constexpr double kStill = 0.1;  // [m/s]
+  return speed_a < kStill && speed_b < kStill;
+}
+
+/// True if the pair touches at a sample whose gap is `now`, in a move that
+/// began with the outright gap `at_start` (infinite unless both stood still
+/// there): an outright overlap always does; coming within the padding does
+/// unless the pair comes no nearer than it was at the start. Without the
+/// exception, two agents left standing close after a jam could never take a
+/// step, each held by the other's padding.
+inline bool touching(const Gap& now, double at_start) {
+  constexpr double kSlack = 1e-9;  // [m]
+  return now.outright < 0 || (now.padded < 0 && now.outright < at_start - kSlack);
+}
+
+}  // namespace footfall
