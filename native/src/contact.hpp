@@ -3,11 +3,24 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "footfall/geometry.hpp"
 
 namespace footfall {
+
+/// Agents are checked against each other at the instants t = k * kContactDt,
+/// in the search, in the crowd's commit check and in `footfall metrics`
+/// (20 Hz) alike: a foot lifted and another put down at the same instant
+/// touch only then, so a check between the grid's instants would disagree
+/// with the others. [s]
+constexpr double kContactDt = 0.05;
+
+/// The first instant of the contact grid at or after time t (within 1 ns).
+inline long first_contact_instant(double t) {
+  return static_cast<long>(std::ceil(t / kContactDt - 1e-9));
+}
 
 /// How near two agents come at one instant: the smallest gap between a
 /// circle of one and a circle of the other (negative where they overlap),

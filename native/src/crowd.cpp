@@ -162,25 +162,22 @@ MovingObstacles near(const std::vector<Walker>& walkers, std::size_t i, double t
 
 /// True if `trial`, from time `from` on, touches one of `others` under the
 /// five-circle model that measures a plan (torso circles and planted feet;
-/// after its last step a plan stands where it ends). Checked every kCheckDt,
+/// after its last step a plan stands where it ends). Checked every kContactDt,
 /// the circles grown by half of both agents' travel in between.
 bool touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
              const MovingObstacles& others) {
-  constexpr double kCheckDt = 0.05;  // [s]
   const CharacterParams& c = planner.character();
   for (const AgentPlan* other : others) {
-    const double end = std::max(trial.end_time(), other->end_time()) + kCheckDt;
+    const double end = std::max(trial.end_time(), other->end_time()) + kContactDt;
     // The gap where the trial starts (see touching()).
     double start_gap = std::numeric_limits<double>::infinity();
-    // On the global grid of kCheckDt, as `footfall metrics` samples: a foot
-    // lifted and another put down at the same instant touch only then.
-    const long first = static_cast<long>(std::ceil(from / kCheckDt - 1e-9));
+    const long first = first_contact_instant(from);
     for (long k = first;; ++k) {
-      const double t = static_cast<double>(k) * kCheckDt;
+      const double t = static_cast<double>(k) * kContactDt;
       if (t > end) break;
       const ComSample me = com_at(trial, t), them = com_at(*other, t);
       if (distance(me.position, them.position) > kNearAgent) continue;
-      const double pad = 0.5 * (length(me.velocity) + length(them.velocity)) * kCheckDt;
+      const double pad = 0.5 * (length(me.velocity) + length(them.velocity)) * kContactDt;
       const std::vector<Circle> mine = collision_circles(trial, c, t);
       Gap gap;
       for (const Circle& theirs : collision_circles(*other, c, t))

@@ -10,6 +10,7 @@
 #include "footfall/plan.hpp"
 #include "contact.hpp"
 #include "footstep_shape.hpp"
+#include "sampled_agents.hpp"
 
 namespace footfall {
 namespace {
@@ -26,9 +27,6 @@ constexpr double kDuplicateTurn = 1e-3;  // [rad] goal-directed turn equal to a 
 // Agents whose COMs are further apart cannot touch: every circle lies within
 // a stride and a foot of its COM. [m]
 constexpr double kNearAgent = 3.0;
-// Far above any COM speed (desired speeds are at most 10 m/s): a bound for
-// leaving out agents too far away to matter. [m/s]
-constexpr double kMaxComSpeed = 20.0;
 
 std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, Foot last_foot) {
   // Clamped before the conversion, so that far-away coordinates stay defined.
@@ -88,6 +86,25 @@ class KeySet {
   size_t size_ = 0;
 };
 
+// A disc that holds the torso throughout the step, grown by `margin`: the
+// whole step's COM lies within half the chord plus the sway of the chord's
+// midpoint.
+Circle sweep_bound(const Footstep& step, const CharacterParams& character, double margin) {
+  const double chord = distance(step.com_start, step.com_end);
+  const double sway = step.alpha * step.duration() * step.duration() / 4.0;
+  return {0.5 * (step.com_start + step.com_end),
+          0.5 * chord + sway + 0.5 * character.torso_width + margin};
+}
+
+// `others` sampled from time `from` on, for a check outside a search (which
+// keeps its own samples for all its steps).
+detail::SampledAgents& sampled(const MovingObstacles& others, const CharacterParams& character,
+                               double from) {
+  thread_local detail::SampledAgents samples;
+  samples.reset(others, character, from);
+  return samples;
+}
+
 }  // namespace
 
 struct FootstepPlanner::TabledAction {
@@ -125,6 +142,7 @@ struct FootstepPlanner::Search {
   std::vector<Node> nodes;
   std::vector<OpenEntry> open;  // a binary heap
   KeySet seen;
+  detail::SampledAgents others;  // the plans the search avoids
   int generated = 0;
 
   void push(Node node, double weight) {
@@ -179,6 +197,8 @@ FootstepPlanner::FootstepPlanner(const CharacterParams& character, const Planner
         ": a step at the preferred speed and duration breaks both feet's limits (" +
         to_string(normal.validity) + ")");
   }
+  for (const Circle& circle : torso_circles({0.0, 0.0}, 0.0, character_))
+    torso_extent_ = std::max(torso_extent_, length(circle.center) + circle.radius);
   expected_step_cost_ = normal.step.cost.total();
   expected_step_length_ = distance(normal.step.com_start, normal.step.com_end);
 }
@@ -201,29 +221,21 @@ bool FootstepPlanner::collides(const FootstepState& state) const {
 }
 
 bool FootstepPlanner::collides(const Footstep& step, const MovingObstacles& others) const {
-  const Circle foot{step.foot_position, character_.foot_radius};
-  if (obstacles_.overlaps(foot)) return true;
+  return collides(step, sampled(others, character_, step.start_time));
+}
+
+bool FootstepPlanner::collides(const Footstep& step, detail::SampledAgents& others) const {
+  return hits_obstacles(step) || touches_agents(step, others);
+}
+
+bool FootstepPlanner::hits_obstacles(const Footstep& step) const {
+  if (obstacles_.overlaps({step.foot_position, character_.foot_radius})) return true;
   const double spacing = params_.collision_sample_spacing;
   const double pad = 0.5 * spacing;
-  // The whole step's COM lies within half the chord plus the sway of the chord
-  // midpoint: only the obstacles near that disc can be touched.
-  const double chord = distance(step.com_start, step.com_end);
-  const double sway = step.alpha * step.duration() * step.duration() / 4.0;
-  const Circle bound{0.5 * (step.com_start + step.com_end),
-                     0.5 * chord + sway + 0.5 * character_.torso_width + pad};
   thread_local std::vector<int> near;
   near.clear();
-  obstacles_.gather(bound, near);
-  // Other agents that cannot come near the step while it lasts are left out
-  // before sampling: a COM moves at most kMaxComSpeed (a generous bound on
-  // any step's speed) for half the step either side of its middle.
-  thread_local MovingObstacles close;
-  close.clear();
-  const double mid = 0.5 * (step.start_time + step.end_time);
-  const double reach = bound.radius + kNearAgent + kMaxComSpeed * 0.5 * step.duration();
-  for (const AgentPlan* other : others)
-    if (distance(com_at(*other, mid).position, bound.center) <= reach) close.push_back(other);
-  if (near.empty() && close.empty()) return false;
+  obstacles_.gather(sweep_bound(step, character_, pad), near);
+  if (near.empty()) return false;
   // Samples no further apart along the COM path than `spacing`: the path is
   // never longer than speed * time between samples, where the COM speed of a
   // walking step is at most its speed at either end.
@@ -231,36 +243,73 @@ bool FootstepPlanner::collides(const Footstep& step, const MovingObstacles& othe
   const int samples =
       std::max(1, static_cast<int>(std::ceil(top_speed * step.duration() / spacing)));
   const double dt = step.duration() / samples;
-  // Per close agent, the gap at the step's start (see touching()).
-  thread_local std::vector<double> start_gap;
-  start_gap.assign(close.size(), std::numeric_limits<double>::infinity());
   for (int i = 0; i <= samples; ++i) {
-    const double t = step.start_time + dt * i;
-    const Vec2 com = com_at(step, t).position;
-    const auto torso = torso_circles(com, step.phi, character_);
-    for (Circle circle : torso) {
+    const Vec2 com = com_at(step, step.start_time + dt * i).position;
+    for (Circle circle : torso_circles(com, step.phi, character_)) {
       circle.radius += pad;
       if (obstacles_.first_overlap(circle, near) >= 0) return true;
     }
-    for (std::size_t j = 0; j < close.size(); ++j) {
-      const ComSample them = com_at(*close[j], t);
-      if (distance(com, them.position) > kNearAgent) continue;
-      // Both move between samples: the circles are grown by half the travel.
-      const double their_pad = 0.5 * length(them.velocity) * dt;
+  }
+  return false;
+}
+
+bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents& others) const {
+  // The contact instants while the step is under way; the one at its end
+  // belongs to the next step.
+  const long first = first_contact_instant(step.start_time);
+  const long last = first_contact_instant(step.end_time) - 1;
+  if (others.size() == 0 || last < first) return false;
+  // Agents that cannot come near the step at one of its instants are left out
+  // before sampling: between the middle instant and the step's ends, a COM
+  // moves at most at the top speed of its plan.
+  const long middle = first + (last - first) / 2;
+  const double span = static_cast<double>(last - middle) * kContactDt;
+  const Circle sweep = sweep_bound(step, character_, 0.0);
+  thread_local std::vector<std::size_t> close;
+  close.clear();
+  for (std::size_t j = 0; j < others.size(); ++j) {
+    const double reach = sweep.radius + kNearAgent + others.top_speed(j) * span;
+    if (distance(others.at(j, middle).com, sweep.center) <= reach) close.push_back(j);
+  }
+  if (close.empty()) return false;
+  const Circle foot{step.foot_position, character_.foot_radius};
+  // Per close agent, the gap at the step's first instant (see touching()).
+  thread_local std::vector<double> start_gap;
+  start_gap.assign(close.size(), std::numeric_limits<double>::infinity());
+  for (long k = first; k <= last; ++k) {
+    const ComSample me = com_at(step, static_cast<double>(k) * kContactDt);
+    const double speed = length(me.velocity);
+    const auto torso = torso_circles(me.position, step.phi, character_);
+    const double extent = std::max(torso_extent_, distance(foot.center, me.position) + foot.radius);
+    for (std::size_t c = 0; c < close.size(); ++c) {
+      const detail::AgentSample& near = others.at(close[c], k);
+      if (!near.present || distance(me.position, near.com) > kNearAgent) continue;
+      const detail::AgentSample& them = others.with_circles(close[c], k);
+      // Both move between instants: the circles are grown by half the travel.
+      const double pad = 0.5 * (speed + them.speed) * kContactDt;
+      // Too far apart for any pair of circles to come within the padding; at
+      // the first instant the gap is still wanted for the exception below.
+      const double apart = distance(me.position, them.com) - extent - them.extent - pad;
+      if (k != first && apart > 0.0) continue;
       Gap gap;  // of the torso: the foot is put down clear of everyone, standing close or not
-      for (const Circle& theirs : collision_circles(*close[j], character_, t)) {
-        if (distance(foot.center, theirs.center) <= foot.radius + theirs.radius + their_pad) return true;
-        for (const Circle& circle : torso) gap.add(circle, theirs, pad + their_pad);
+      for (int i = 0; i < them.count; ++i) {
+        const Circle& theirs = them.circles[i];
+        if (distance(foot.center, theirs.center) <= foot.radius + theirs.radius + pad) return true;
+        for (const Circle& circle : torso) gap.add(circle, theirs, pad);
       }
-      if (i == 0 && standing_still(length(step.com_velocity_start), length(them.velocity)))
-        start_gap[j] = gap.outright;
-      if (touching(gap, start_gap[j])) return true;
+      if (k == first && standing_still(speed, them.speed)) start_gap[c] = gap.outright;
+      if (touching(gap, start_gap[c])) return true;
     }
   }
   return false;
 }
 
 Rest FootstepPlanner::come_to_rest(const FootstepState& state, const MovingObstacles& others) const {
+  return come_to_rest(state, sampled(others, character_, state.time));
+}
+
+Rest FootstepPlanner::come_to_rest(const FootstepState& state,
+                                   detail::SampledAgents& others) const {
   Rest rest{{}, state, false};
   const auto stop = [&] {
     double duration = params_.stop_duration;
@@ -284,6 +333,11 @@ bool FootstepPlanner::room_to_turn(Vec2 com) const {
 
 StepResult FootstepPlanner::stop_step(const FootstepState& state, double duration,
                                       const MovingObstacles& others) const {
+  return stop_step(state, duration, sampled(others, character_, state.time));
+}
+
+StepResult FootstepPlanner::stop_step(const FootstepState& state, double duration,
+                                      detail::SampledAgents& others) const {
   StepResult stop = create_footstep(
       state, {StepKind::kStop, other(state.last_foot), state.facing, 0.0, duration}, character_);
   if (stop.valid() && collides(stop.step, others)) stop.validity = StepValidity::kCollides;
@@ -401,6 +455,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   search.nodes.clear();
   search.open.clear();
   search.generated = 0;
+  search.others.reset(others, character_, start.time);
   search.seen.clear(static_cast<size_t>(params_.max_expansions) * 8);
   const detail::Heading start_heading = detail::heading_of(start);
   search.seen.insert(state_key(start.com, start_heading.angle, start_heading.speed,
@@ -413,12 +468,12 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     const int current = search.pop();
     // Collisions are checked lazily, when a node is taken off the open list:
     // most generated nodes are never expanded.
-    if (current != 0 && collides(step_to(search, current).step, others)) continue;
+    if (current != 0 && collides(step_to(search, current).step, search.others)) continue;
     ++result.nodes_expanded;
     // At the goal, and able to come to rest there among the others (whose
     // rests may already stand on it).
     if (distance(search.nodes[current].state.com, goal) <= params_.goal_tolerance &&
-        (current == 0 || come_to_rest(search.nodes[current].state, others).complete)) {
+        (current == 0 || come_to_rest(search.nodes[current].state, search.others).complete)) {
       goal_node = current;
       break;
     }
@@ -440,7 +495,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
                      [&](int a, int b) { return nodes[a].h < nodes[b].h; });
     for (const int candidate : closed) {
       if (!start.standing() || nodes[candidate].h < nodes[0].h) {
-        const Rest rest = come_to_rest(nodes[candidate].state, others);
+        const Rest rest = come_to_rest(nodes[candidate].state, search.others);
         if (rest.complete && room_to_turn(rest.state.com)) {
           end = candidate;
           break;
@@ -449,7 +504,8 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     }
     // Nothing better than the start: a standing character waits.
     if (end < 0) {
-      const StepResult wait = start.standing() ? stop_step(start, others) : StepResult{};
+      const StepResult wait =
+          start.standing() ? stop_step(start, params_.stop_duration, search.others) : StepResult{};
       if (start.standing() && wait.valid()) {
         result.footsteps.push_back(wait.step);
         result.end_state = wait.state;

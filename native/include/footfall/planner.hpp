@@ -14,6 +14,9 @@
 namespace footfall {
 
 struct AgentPlan;
+namespace detail {
+class SampledAgents;
+}
 
 /// Other agents' plans, which a search keeps clear of as moving obstacles: at
 /// every sampled time of a step, the five circles each plan gives at that time
@@ -71,10 +74,11 @@ class FootstepPlanner {
   /// COM travel of one normal step. [m]
   double expected_step_length() const { return expected_step_length_; }
 
-  /// True if the step collides with an obstacle: its landing foot, or the
-  /// torso circles at samples no further apart than the sample spacing; or if
-  /// at one of those samples its torso or planted foot touches a circle of
-  /// one of `others`.
+  /// True if the step collides with an obstacle (its landing foot, or the
+  /// torso circles at samples no further apart than the sample spacing), or
+  /// if at an instant of the contact grid (every 0.05 s, as the crowd's
+  /// commit check and `footfall metrics` sample) its torso or planted foot
+  /// touches a circle of one of `others`.
   bool collides(const Footstep& step, const MovingObstacles& others = {}) const;
   /// True if the standing or walking state's planted feet or torso collide.
   bool collides(const FootstepState& state) const;
@@ -106,6 +110,13 @@ class FootstepPlanner {
   // A walking action of the discretised set, precomputed in its local frame.
   struct TabledAction;
   void expand(Search& search, int index, Vec2 goal) const;
+  // The checks against other agents, reading `others` sampled once per search.
+  bool collides(const Footstep& step, detail::SampledAgents& others) const;
+  bool hits_obstacles(const Footstep& step) const;
+  bool touches_agents(const Footstep& step, detail::SampledAgents& others) const;
+  Rest come_to_rest(const FootstepState& state, detail::SampledAgents& others) const;
+  StepResult stop_step(const FootstepState& state, double duration,
+                       detail::SampledAgents& others) const;
   StepResult step_to(const Search& search, int index) const;
 
   CharacterParams character_;
@@ -113,6 +124,7 @@ class FootstepPlanner {
   const ObstacleMap& obstacles_;
   double expected_step_cost_ = 0;
   double expected_step_length_ = 0;
+  double torso_extent_ = 0;  // how far the torso circles reach from the COM [m]
   std::vector<TabledAction> actions_;
 };
 
