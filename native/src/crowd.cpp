@@ -71,6 +71,11 @@ struct Walker {
   double first_way = 0.0;  ///< Way to the current goal when it was first measured. [m]
   double best_way = std::numeric_limits<double>::infinity();  ///< Shortest way left so far. [m]
   double improved_at = 0.0;  ///< Plan time when best_way last shortened by min_progress. [s]
+  /// Agents a plan of this one's was refused for touching since its last
+  /// commit: seen or not, its searches avoid them (it has bumped into them).
+  /// Without them, an agent that does not see who is in its way finds the
+  /// same refused plan again at every retry.
+  MovingObstacles noticed;
   bool done = false;
 };
 
@@ -83,14 +88,16 @@ bool leaves_now(const Walker& w, bool reached) {
 struct Attempt {
   std::vector<Footstep> steps;
   FootstepState end;
+  Rest rest;  ///< After the steps, among the agents the search saw.
   bool reached = false;  ///< The steps reach the current goal itself.
   double way_left = 0.0;
   int nodes_generated = 0, nodes_expanded = 0;
   bool searched = false;
 };
 
-/// The plans of the agents that agent `i` sees at time `t`: within
-/// kViewDistance, in front of its torso, and with a clear line of sight.
+/// The plans of the agents that agent `i` sees at time `t` (within
+/// kViewDistance, in front of its torso, and with a clear line of sight),
+/// and of those it has noticed.
 MovingObstacles seen_by(const std::vector<Walker>& walkers, std::size_t i, double t,
                         const NavMesh* mesh) {
   const Vec2 eye = com_at(walkers[i].plan, t).position;
@@ -104,23 +111,27 @@ MovingObstacles seen_by(const std::vector<Walker>& walkers, std::size_t i, doubl
     if (mesh != nullptr && mesh->clearance_between(eye, them, 1e-9) < 1e-9) continue;
     seen.push_back(&walkers[j].plan);
   }
+  for (const AgentPlan* other : walkers[i].noticed)
+    if (present_at(*other, t) && std::find(seen.begin(), seen.end(), other) == seen.end())
+      seen.push_back(other);
   return seen;
 }
 
 /// Cuts the attempt's steps back to the last state from which the agent
-/// comes to rest, with room to turn unless the steps reach the goal (none
-/// left: it waits). Committed plans are checked with the agent standing after
-/// its rest, so the rest must be complete; and the next search starts there,
-/// so it must be able to set off in any direction: a rest in a door frame,
-/// facing a post, can leave every step blocked.
-void cut_to_rest(const FootstepPlanner& planner, const FootstepState& start, Attempt& a) {
+/// comes to rest among `others`, free to set off again unless the steps
+/// reach the goal (none left: it waits), and keeps that rest. Committed plans
+/// are checked with the agent standing after its rest, so the rest must be
+/// complete; and the next search starts there, so it must be able to set
+/// off: a rest in a door frame, facing a post, can leave every step blocked.
+void cut_to_rest(const FootstepPlanner& planner, const FootstepState& start,
+                 const MovingObstacles& others, Attempt& a) {
   std::vector<FootstepState> states{start};
   for (const Footstep& step : a.steps) states.push_back(state_after(states.back(), step));
   std::size_t keep = a.steps.size();
   for (; keep > 0; --keep) {
-    const Rest rest = planner.come_to_rest(states[keep]);
+    a.rest = planner.come_to_rest(states[keep], others);
     const bool at_goal = a.reached && keep == a.steps.size();
-    if (rest.complete && (at_goal || planner.room_to_turn(rest.state.com))) break;
+    if (a.rest.complete && (at_goal || planner.free_to_set_off(a.rest.state))) break;
   }
   if (keep == a.steps.size()) return;
   a.steps.resize(keep);
@@ -139,7 +150,7 @@ Attempt search(const Walker& w, const FootstepPlanner& planner, const NavMesh* m
   a.steps = result.footsteps;
   a.end = result.footsteps.empty() ? w.state : result.end_state;
   a.reached = result.status == Status::kSuccess && target.is_goal;
-  if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, a);
+  if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, others, a);
   a.way_left = a.reached ? 0.0 : way_toward(mesh, planner.character(), a.end.com, goal).length;
   a.nodes_generated = result.nodes_generated;
   a.nodes_expanded = result.nodes_expanded;
@@ -160,12 +171,13 @@ MovingObstacles near(const std::vector<Walker>& walkers, std::size_t i, double t
   return out;
 }
 
-/// True if `trial`, from time `from` on, touches one of `others` under the
+/// The first of `others` that `trial`, from time `from` on, touches (null if
+/// none) under the
 /// five-circle model that measures a plan (torso circles and planted feet;
 /// after its last step a plan stands where it ends). Checked every kContactDt,
 /// the circles grown by half of both agents' travel in between.
-bool touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
-             const MovingObstacles& others) {
+const AgentPlan* touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
+                         const MovingObstacles& others) {
   const CharacterParams& c = planner.character();
   for (const AgentPlan* other : others) {
     const double end = std::max(trial.end_time(), other->end_time()) + kContactDt;
@@ -183,10 +195,10 @@ bool touches(const AgentPlan& trial, double from, const FootstepPlanner& planner
       for (const Circle& theirs : collision_circles(*other, c, t))
         for (const Circle& circle : mine) gap.add(circle, theirs, pad);
       if (k == first && standing_still(length(me.velocity), length(them.velocity))) start_gap = gap.outright;
-      if (touching(gap, start_gap)) return true;
+      if (touching(gap, start_gap)) return other;
     }
   }
-  return false;
+  return nullptr;
 }
 
 /// Lets the agent's provisional rest happen (it is no longer provisional),
@@ -235,9 +247,8 @@ void commit(Walker& w, const Attempt& a, const FootstepPlanner& planner, double 
   // One that leaves at its last goal walks on through it; the others come to rest.
   const bool leaving = leaves_now(w, a.reached);
   if (!leaving) {
-    const Rest rest = planner.come_to_rest(rested);
-    steps.insert(steps.end(), rest.steps.begin(), rest.steps.end());
-    rested = rest.state;
+    steps.insert(steps.end(), a.rest.steps.begin(), a.rest.steps.end());
+    rested = a.rest.state;
   }
   AgentPlan trial;
   trial.leaves = leaving;
@@ -251,7 +262,9 @@ void commit(Walker& w, const Attempt& a, const FootstepPlanner& planner, double 
     // foot (feet_at): that step's circles change with the new steps too.
     from = kept > 0 ? trial.footsteps[kept - 1].start_time : a.steps.front().start_time;
   }
-  if (a.steps.empty() || touches(trial, from, planner, others)) {
+  const AgentPlan* touched = a.steps.empty() ? nullptr : touches(trial, from, planner, others);
+  if (touched != nullptr) w.noticed.push_back(touched);
+  if (a.steps.empty() || touched != nullptr) {
     rest_until(w, planner, t);
     w.retry_at = t + kRetryAfter;
     if (!(a.reached && a.steps.empty())) {  // at the goal already, or waiting
@@ -259,6 +272,7 @@ void commit(Walker& w, const Attempt& a, const FootstepPlanner& planner, double 
       return;
     }
   } else {
+    w.noticed.clear();
     w.plan.footsteps = std::move(trial.footsteps);
     w.resting = steps.size() - a.steps.size();
     w.state = a.end;

@@ -323,12 +323,51 @@ Rest FootstepPlanner::come_to_rest(const FootstepState& state,
     }
     return false;
   };
-  rest.complete = (rest.state.standing() || stop()) && stop();
+  rest.complete = (rest.state.standing() || stop()) && stop() && stands_clear(rest.state, others);
   return rest;
 }
 
+bool FootstepPlanner::stands_clear(const FootstepState& state,
+                                   detail::SampledAgents& others) const {
+  // Room to turn on the spot, as room_to_turn() asks of static obstacles:
+  // two agents resting face to face a few centimetres apart could never
+  // step again, every turn swinging a shoulder into the other.
+  std::vector<Circle> mine{{state.com, 0.5 * character_.torso_width}};
+  for (const Vec2& foot : state.feet) mine.push_back({foot, character_.foot_radius});
+  double extent = 0.0;
+  for (const Circle& circle : mine)
+    extent = std::max(extent, distance(circle.center, state.com) + circle.radius);
+  const long first = first_contact_instant(state.time);
+  for (std::size_t j = 0; j < others.size(); ++j) {
+    // After its plan ends, the other stands too: the first instant from then
+    // on is the last that can differ.
+    const long last = std::max(first, first_contact_instant(others.plan(j).end_time()));
+    const double span = static_cast<double>(last - first) * kContactDt;
+    if (distance(others.at(j, first).com, state.com) > kNearAgent + others.top_speed(j) * span)
+      continue;
+    double start_gap = std::numeric_limits<double>::infinity();  // see touching()
+    for (long k = first; k <= last; ++k) {
+      const detail::AgentSample& near = others.at(j, k);
+      if (!near.present) break;  // gone for good
+      if (distance(near.com, state.com) > kNearAgent) continue;
+      const detail::AgentSample& them = others.with_circles(j, k);
+      const double pad = 0.5 * them.speed * kContactDt;
+      if (k != first && distance(them.com, state.com) - extent - them.extent - pad > 0.0) continue;
+      Gap gap;
+      for (int i = 0; i < them.count; ++i)
+        for (const Circle& circle : mine) gap.add(circle, them.circles[i], pad);
+      if (k == first && standing_still(0.0, them.speed)) start_gap = gap.outright;
+      if (touching(gap, start_gap)) return false;
+    }
+  }
+  return true;
+}
+
 bool FootstepPlanner::room_to_turn(Vec2 com) const {
-  return !obstacles_.overlaps({com, 0.5 * character_.torso_width});
+  // Grown by the padding of the steps' torso checks (hits_obstacles), or a
+  // character facing a wall at just half its width could turn in no step.
+  return !obstacles_.overlaps(
+      {com, 0.5 * character_.torso_width + 0.5 * params_.collision_sample_spacing});
 }
 
 StepResult FootstepPlanner::stop_step(const FootstepState& state, double duration,
@@ -366,6 +405,31 @@ StepResult FootstepPlanner::step_to(const Search& search, int index) const {
                            node.phi, reach, character_);
 }
 
+template <class Visit>
+bool FootstepPlanner::tabled_walks(const FootstepState& state, Foot foot, Visit&& visit) const {
+  const detail::Heading heading = detail::heading_of(state);
+  const int f = static_cast<int>(foot);
+  const double inward = -outward_sign(foot);
+  const OrientationInterval reach = reachable_orientations(
+      state.foot_orientation[static_cast<int>(other(foot))], other(foot), character_.max_foot_turn);
+  for (const TabledAction& action : actions_) {
+    if (!action.allowed[f]) continue;
+    const double phi = wrap_angle(heading.angle + inward * action.shape.turn);
+    if (visit(detail::walk_step(state, foot, heading, action.shape, phi, reach, character_), phi,
+              action.shape))
+      return true;
+  }
+  return false;
+}
+
+bool FootstepPlanner::free_to_set_off(const FootstepState& rested) const {
+  if (!room_to_turn(rested.com)) return false;
+  const auto clear = [&](const StepResult& step, double, const detail::StepShape&) {
+    return step.valid() && !hits_obstacles(step.step);
+  };
+  return tabled_walks(rested, Foot::kLeft, clear) || tabled_walks(rested, Foot::kRight, clear);
+}
+
 // Generates the successors of node `index`: every tabled action and the
 // goal-directed one for each foot that may step, and the stop.
 void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
@@ -396,18 +460,15 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   const double goal_angle = angle_of(goal - state.com);
   for (const Foot foot : {Foot::kLeft, Foot::kRight}) {
     if (!state.standing() && foot == state.last_foot) continue;
-    const int f = static_cast<int>(foot);
     const double inward = -outward_sign(foot);
+    tabled_walks(state, foot, [&](const StepResult& next, double phi, const detail::StepShape& shape) {
+      add(next, StepKind::kWalk, foot, phi, shape.turn, shape.speed, shape.duration,
+          phi + inward * shape.turn);
+      return false;
+    });
     const OrientationInterval reach =
         reachable_orientations(state.foot_orientation[static_cast<int>(other(foot))], other(foot),
                                character_.max_foot_turn);
-    for (const TabledAction& action : actions_) {
-      if (!action.allowed[f]) continue;
-      const detail::StepShape& shape = action.shape;
-      const double phi = wrap_angle(heading.angle + inward * shape.turn);
-      add(detail::walk_step(state, foot, heading, shape, phi, reach, character_), StepKind::kWalk,
-          foot, phi, shape.turn, shape.speed, shape.duration, phi + inward * shape.turn);
-    }
     // The goal-directed phi aims the step's chord at the goal.
     const double goal_turn = inward * wrap_angle(goal_angle - heading.angle);
     if (!(goal_turn > 0.0 && goal_turn < 0.5 * kPi)) continue;
@@ -488,7 +549,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     result.status = Status::kSuccess;
   } else {
     // Horizon: the closed node with the best heuristic that the character can
-    // still stop from, with room to turn where it stops, so that the worst
+    // still stop from, free to set off where it stops, so that the worst
     // case is a sequence of stop steps and the next search is not trapped.
     result.status = Status::kPartial;
     std::stable_sort(closed.begin(), closed.end(),
@@ -496,7 +557,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     for (const int candidate : closed) {
       if (!start.standing() || nodes[candidate].h < nodes[0].h) {
         const Rest rest = come_to_rest(nodes[candidate].state, search.others);
-        if (rest.complete && room_to_turn(rest.state.com)) {
+        if (rest.complete && free_to_set_off(rest.state)) {
           end = candidate;
           break;
         }

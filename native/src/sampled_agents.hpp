@@ -30,6 +30,7 @@ class SampledAgents {
   /// instants of interest begin at time `from`. Earlier samples are forgotten.
   void reset(const MovingObstacles& others, const CharacterParams& character, double from);
   std::size_t size() const { return others_->size(); }
+  const AgentPlan& plan(std::size_t j) const { return *(*others_)[j]; }
   /// Agent j at instant k (t = k * kContactDt): presence, COM and speed.
   const AgentSample& at(std::size_t j, long k);
   /// The same, with its circles.

@@ -78,9 +78,11 @@ TEST(Crowd, AgentsThatLeaveAtTheGoalShareIt) {
   for (const AgentPlan& agent : plan.agents) {
     SCOPED_TRACE(agent.name);
     EXPECT_TRUE(agent.leaves);
-    // One that had come to rest near the goal while waiting leaves from there.
+    // One that had come to rest near the goal while waiting leaves from
+    // there: within the goal tolerance (0.3 m) before its rest, and a stop
+    // coasts at most half its 0.5 s at 1.3 m/s.
     walked_through += agent.footsteps.back().kind == StepKind::kWalk;
-    EXPECT_LE(distance(agent.footsteps.back().com_end, goal), 0.5);
+    EXPECT_LE(distance(agent.footsteps.back().com_end, goal), 0.3 + 0.25 * 1.3);
     EXPECT_TRUE(present_at(agent, agent.end_time()));
     EXPECT_FALSE(present_at(agent, agent.end_time() + 0.01));
     EXPECT_TRUE(collision_circles(agent, plan.character, agent.end_time() + 0.01).empty());

@@ -294,6 +294,31 @@ TEST(Planner, KeepsClearOfOtherAgentsPlans) {
   }
 }
 
+// A rest is where an agent may stand for a while, and where its next search
+// starts: it needs room to turn on the spot among the others, or two agents
+// resting face to face a few centimetres apart could never step again.
+TEST(Planner, ARestLeavesRoomToTurnAmongOtherAgents) {
+  const CharacterParams character;
+  const ObstacleMap none;
+  const FootstepPlanner planner(character, PlannerParams{}, none);
+  const FootstepState here = standing_state({0, 0}, 0, character);
+  for (const auto& [apart, room] : {std::pair<double, bool>{0.35, false}, {0.8, true}}) {
+    SCOPED_TRACE(::testing::Message() << apart << " m apart");
+    AgentPlan facing;
+    facing.name = "facing";
+    facing.start = standing_state({apart, 0}, 3.14159265358979, character);
+    EXPECT_EQ(planner.come_to_rest(here, {&facing}).complete, room);
+    // Alone, it rests anywhere.
+    EXPECT_TRUE(planner.come_to_rest(here).complete);
+  }
+  // One walking through the spot later in its plan takes the room too.
+  AgentPlan passing;
+  passing.name = "passing";
+  passing.start = standing_state({-4, 0}, 0, character);
+  passing.footsteps = planner.plan(passing.start, {4, 0}).footsteps;
+  EXPECT_FALSE(planner.come_to_rest(here, {&passing}).complete);
+}
+
 TEST(Plan, FeetNeverJump) {
   // The demo, and a walk with stops and restarts along the way (goal behind a wall).
   Scenario stops = one_agent({box_obstacle({3, 0}, {0.2, 3})}, {0, 0}, 0, {6, 0});

@@ -35,8 +35,8 @@ struct SearchResult {
   /// kSuccess: the goal was reached, where the character can come to rest
   /// among `others`. kPartial: the horizon was reached first
   /// and `footsteps` lead to the closed node with the best heuristic among
-  /// those the character can come to rest from, with room to turn where it
-  /// rests (room_to_turn; a single wait step when no node beats
+  /// those the character can come to rest from, free to set off again where
+  /// it rests (free_to_set_off; a single wait step when no node beats
   /// a standing start). kNoPath: not even that is possible. kInvalidStart: the start
   /// collides. kInvalidGoal: the goal lies inside an obstacle.
   Status status = Status::kPartial;
@@ -85,13 +85,22 @@ class FootstepPlanner {
   /// Brings the character to rest with its feet side by side: a stop to
   /// decelerate (when walking), then one to close the feet, each halved in
   /// duration (down to an eighth) while it would run into an obstacle or one
-  /// of `others` (the COM still coasts while it decelerates).
+  /// of `others` (the COM still coasts while it decelerates). The rest is
+  /// complete only if the character, standing there, keeps room to turn on
+  /// the spot among `others` while their plans last.
   Rest come_to_rest(const FootstepState& state, const MovingObstacles& others = {}) const;
   /// True if a character standing with its COM at `com` could turn on the
-  /// spot: no static obstacle within half the torso width. A search that ends
-  /// short of its goal ends where its rest leaves the character room to turn,
-  /// so that the next search from there can set off in any direction.
+  /// spot: no static obstacle within half the torso width (and the padding
+  /// of the steps' checks, half the sample spacing).
   bool room_to_turn(Vec2 com) const;
+  /// True if a character standing at `rested` has room to turn and can set
+  /// off: one of the tabled walking steps from there is clear of the static
+  /// obstacles. A search that ends short of its goal ends where its rest
+  /// leaves the character free to set off, so that the next search from
+  /// there is not trapped. Room to turn alone is not enough: the first step
+  /// from standing moves the COM forward, so a character facing a wall a few
+  /// centimetres more than half its width away could take no step at all.
+  bool free_to_set_off(const FootstepState& rested) const;
   /// The stop step from `state` lasting `duration`, with validity kCollides if
   /// it runs into an obstacle.
   StepResult stop_step(const FootstepState& state, double duration,
@@ -110,11 +119,19 @@ class FootstepPlanner {
   // A walking action of the discretised set, precomputed in its local frame.
   struct TabledAction;
   void expand(Search& search, int index, Vec2 goal) const;
+  // Calls visit(step, phi, shape) for each tabled walking step `foot` may
+  // take from `state`, until one call returns true (then returns true).
+  template <class Visit>
+  bool tabled_walks(const FootstepState& state, Foot foot, Visit&& visit) const;
   // The checks against other agents, reading `others` sampled once per search.
   bool collides(const Footstep& step, detail::SampledAgents& others) const;
   bool hits_obstacles(const Footstep& step) const;
   bool touches_agents(const Footstep& step, detail::SampledAgents& others) const;
   Rest come_to_rest(const FootstepState& state, detail::SampledAgents& others) const;
+  // True if the character, standing at `state` from its time on, keeps clear
+  // of `others` with room to turn (a disc half the torso width around its
+  // COM) while their plans last (after them, they stand too).
+  bool stands_clear(const FootstepState& state, detail::SampledAgents& others) const;
   StepResult stop_step(const FootstepState& state, double duration,
                        detail::SampledAgents& others) const;
   StepResult step_to(const Search& search, int index) const;
