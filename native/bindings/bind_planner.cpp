@@ -39,8 +39,10 @@ void bind_planner(py::module_& m) {
            py::arg("character"), py::arg("planner"), py::arg("obstacles"),
            py::keep_alive<1, 4>())  // the planner refers to the obstacle map
       .def("plan", &FootstepPlanner::plan, py::arg("start"), py::arg("goal"),
-           py::arg("others") = MovingObstacles{}, py::call_guard<py::gil_scoped_release>(),
-           "Best-first search; `others`: agent plans to keep clear of as moving obstacles.")
+           py::arg("others") = MovingObstacles{}, py::arg("leaves") = false,
+           py::call_guard<py::gil_scoped_release>(),
+           "Best-first search; `others`: agent plans to keep clear of as moving obstacles; "
+           "`leaves`: the character is gone at the goal, so needs no room to rest there.")
       .def("heuristic", &FootstepPlanner::heuristic, py::arg("state"), py::arg("goal"))
       .def("expected_step_cost", &FootstepPlanner::expected_step_cost)
       .def("expected_step_length", &FootstepPlanner::expected_step_length)

@@ -145,7 +145,9 @@ Attempt search(const Walker& w, const FootstepPlanner& planner, const NavMesh* m
   const Vec2 goal = w.spec->goals[w.goal];
   const Way way = way_toward(mesh, planner.character(), w.state.com, goal);
   const LocalGoal target = local_goal(planner, mesh, way);
-  const SearchResult result = planner.plan(w.state, target.point, others);
+  // One that leaves at this goal needs no room to rest there.
+  const SearchResult result =
+      planner.plan(w.state, target.point, others, leaves_now(w, target.is_goal));
   Attempt a;
   a.steps = result.footsteps;
   a.end = result.footsteps.empty() ? w.state : result.end_state;

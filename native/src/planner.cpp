@@ -493,7 +493,7 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
 }
 
 SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
-                                   const MovingObstacles& others) const {
+                                   const MovingObstacles& others, bool leaves) const {
   if (!in_world(start.com) || !is_finite(start.com_velocity) || !std::isfinite(start.facing) ||
       !in_world(start.feet[0]) || !in_world(start.feet[1]) || !std::isfinite(start.time)) {
     throw std::invalid_argument("start: the state must be finite and within 1e9 m of the origin");
@@ -532,9 +532,10 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     if (current != 0 && collides(step_to(search, current).step, search.others)) continue;
     ++result.nodes_expanded;
     // At the goal, and able to come to rest there among the others (whose
-    // rests may already stand on it).
+    // rests may already stand on it), unless it leaves there.
     if (distance(search.nodes[current].state.com, goal) <= params_.goal_tolerance &&
-        (current == 0 || come_to_rest(search.nodes[current].state, search.others).complete)) {
+        (current == 0 || leaves ||
+         come_to_rest(search.nodes[current].state, search.others).complete)) {
       goal_node = current;
       break;
     }

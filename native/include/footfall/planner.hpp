@@ -33,7 +33,7 @@ struct Rest {
 /// Result of one footstep search.
 struct SearchResult {
   /// kSuccess: the goal was reached, where the character can come to rest
-  /// among `others`. kPartial: the horizon was reached first
+  /// among `others` (unless it leaves there). kPartial: the horizon was reached first
   /// and `footsteps` lead to the closed node with the best heuristic among
   /// those the character can come to rest from, free to set off again where
   /// it rests (free_to_set_off; a single wait step when no node beats
@@ -62,9 +62,11 @@ class FootstepPlanner {
   /// Throws std::invalid_argument for a non-finite or far-away start or goal.
   /// The foot orientations of the result are chosen by the post-process over
   /// these steps alone; a caller that chains searches runs
-  /// choose_foot_orientations once more over the whole chain.
-  SearchResult plan(const FootstepState& start, Vec2 goal,
-                    const MovingObstacles& others = {}) const;
+  /// choose_foot_orientations once more over the whole chain. A character
+  /// that `leaves` at the goal (gone after its last step) needs no room to
+  /// come to rest there: in a crowd packed round a shared exit there is none.
+  SearchResult plan(const FootstepState& start, Vec2 goal, const MovingObstacles& others = {},
+                    bool leaves = false) const;
 
   /// Heuristic of equation 6: the cost of one normal step times the number of
   /// normal steps to the goal (the distance less the goal tolerance). [J]
