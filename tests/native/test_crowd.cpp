@@ -99,6 +99,16 @@ TEST(Crowd, AnAgentThatStaysComesToRestOnItsGoal) {
   EXPECT_TRUE(present_at(agent, agent.end_time() + 100.0));
 }
 
+// Two of SteerSuite's big cases, which the issue names: 80 agents crossing in
+// the middle from four sides, and two flows of 100 through a hall. Every agent
+// reaches its goal, with no overlap and no SteerBench collision episode.
+TEST(Crowd, BigSteerSuiteCasesEveryAgentReaches) {
+  for (const char* name : {"4-way-oncomming", "hallway-two-way"}) {
+    SCOPED_TRACE(name);
+    plan_clear_of_each_other(load_steersuite(kCases + "/" + name + ".xml"), 2);
+  }
+}
+
 TEST(Crowd, ThreadsDoNotChangeThePlan) {
   const Scenario circle = load_steersuite(kCases + "/circle-20.xml");
   EXPECT_EQ(plan_to_json(plan_clear_of_each_other(circle, 1)),
