@@ -33,8 +33,10 @@ namespace {
 constexpr double kTick = 0.05;          ///< The scheduling tick (20 Hz). [s]
 constexpr double kReplanLead = 1.0;     ///< An agent replans when this little of its plan is left. [s]
 constexpr double kViewDistance = 30.0;  ///< Agents farther away are not seen. [m]
-/// An agent whose way has not shortened by min_progress for this long is stuck. [s]
+/// An agent whose way has not shortened by min_progress for this long, nor
+/// that of any agent within kQueueDistance, is stuck. [s]
 constexpr double kStuckAfter = 15.0;
+constexpr double kQueueDistance = 4.0;  ///< [m]
 constexpr double kProgressInterval = 0.2;  ///< Between progress reports. [s]
 /// A new plan is checked against the agents this near now; none farther can
 /// reach it within a plan's few seconds. [m]
@@ -220,23 +222,36 @@ void rest_until(Walker& w, const FootstepPlanner& planner, double t) {
   }
 }
 
-/// Notes the way left; an agent whose way has not shortened by min_progress
-/// for kStuckAfter is stuck, and its rest becomes the end of its walk.
+/// Notes the way left, and when it last shortened by min_progress.
 void progress(Walker& w, double way_left, const FootstepPlanner& planner) {
   if (w.first_way == 0.0) w.first_way = way_left;
   if (way_left < w.best_way - planner.params().min_progress) {
     w.best_way = way_left;
     w.improved_at = w.state.time;
-  } else if (w.state.time - w.improved_at > kStuckAfter) {
-    w.plan.reason = "stuck";
-    w.done = true;
   }
+}
+
+/// True if agent `i` is stuck: its way has not shortened by min_progress for
+/// kStuckAfter, and neither has that of any agent within kQueueDistance. One
+/// waiting behind others that move is queueing (at a crowded exit, for
+/// longer than kStuckAfter), not stuck; a deadlock does not move at all.
+bool stuck(const std::vector<Walker>& walkers, std::size_t i) {
+  const Walker& w = walkers[i];
+  const double since = w.state.time - kStuckAfter;
+  if (w.improved_at >= since) return false;
+  for (std::size_t j = 0; j < walkers.size(); ++j) {
+    const Walker& other = walkers[j];
+    if (j != i && !other.done && other.improved_at >= since &&
+        distance(other.state.com, w.state.com) <= kQueueDistance)
+      return false;
+  }
+  return true;
 }
 
 /// Adds the attempt's steps and a provisional rest after them to the
 /// walker's plan, in place of its old rest, if the plan then keeps clear of
 /// `others`, before and after they end; otherwise the old rest happens and the agent waits there. Then
-/// goals reached, progress, stuck.
+/// goals reached and progress.
 void commit(Walker& w, const Attempt& a, const FootstepPlanner& planner, double t,
             const MovingObstacles& others) {
   if (a.searched) {
@@ -348,8 +363,14 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     workers.run(due.size(), [&](std::size_t k) {
       attempts[k] = search(walkers[due[k]], planner, mesh, seen_by(walkers, due[k], t, mesh));
     });
-    for (std::size_t k = 0; k < due.size(); ++k)
-      commit(walkers[due[k]], attempts[k], planner, t, near(walkers, due[k], t));
+    for (std::size_t k = 0; k < due.size(); ++k) {
+      Walker& w = walkers[due[k]];
+      commit(w, attempts[k], planner, t, near(walkers, due[k], t));
+      if (!w.done && stuck(walkers, due[k])) {
+        w.plan.reason = "stuck";
+        w.done = true;
+      }
+    }
     const auto now = std::chrono::steady_clock::now();
     if (control.progress &&
         std::chrono::duration<double>(now - last_report).count() >= kProgressInterval) {

@@ -65,16 +65,23 @@ StepResult create_walk(const FootstepState& state, const FootstepAction& action,
 
 // The stop action: the COM decelerates uniformly to rest, and the stepping foot
 // lands beside the point of rest, at the stance offset, turned to the facing.
+// From standing, the facing may change (a pivot): a walk sets off along the
+// facing, so without pivots a character standing face to face with a wall or
+// another could never step away.
 StepResult create_stop(const FootstepState& state, const FootstepAction& action,
                        const CharacterParams& character) {
   const Foot foot = other(state.last_foot);
   const double T = action.duration;
   if (!(T > 0.0)) return invalid(StepValidity::kDurationOutOfRange);
+  if (!std::isfinite(action.phi)) return invalid(StepValidity::kNotFinite);
+  const double facing = state.standing() ? wrap_angle(action.phi) : state.facing;
+  if (std::fabs(wrap_angle(facing - state.facing)) > kMaxPivot + 1e-12)
+    return invalid(StepValidity::kOrientationEmpty);
   const Vec2 rest = state.com + (0.5 * T) * state.com_velocity;
   const double s = outward_sign(foot);
   const OrientationInterval reach = reachable_orientations(
       state.foot_orientation[static_cast<int>(other(foot))], other(foot), character.max_foot_turn);
-  const double orientation = clamp_orientation(state.facing, reach, foot);
+  const double orientation = clamp_orientation(facing, reach, foot);
 
   StepResult result;
   Footstep& step = result.step;
@@ -82,14 +89,14 @@ StepResult create_stop(const FootstepState& state, const FootstepAction& action,
   step.kind = StepKind::kStop;
   step.start_time = state.time;
   step.end_time = state.time + T;
-  step.foot_position = rest + (s * character.foot_offset) * perp(unit(state.facing));
+  step.foot_position = rest + (s * character.foot_offset) * perp(unit(facing));
   step.orientation_interval = {orientation, orientation};
   step.foot_orientation = orientation;
   step.com_start = state.com;
   step.com_end = rest;
   step.com_velocity_start = state.com_velocity;
   step.com_velocity_end = {0.0, 0.0};
-  step.phi = state.facing;
+  step.phi = facing;
   const double tan_theta = distance(rest, state.com) / character.com_height;
   step.cost.fixed_rate = character.energy_rate * T;
   step.cost.speed_change = speed_change_cost(character.mass, 0.0, length(state.com_velocity),

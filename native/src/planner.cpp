@@ -24,6 +24,7 @@ constexpr double kCellPosition = 0.04;
 constexpr double kCellHeading = 4.0 * kPi / 180.0;
 constexpr double kCellSpeed = 0.1;
 constexpr double kDuplicateTurn = 1e-3;  // [rad] goal-directed turn equal to a tabled one
+constexpr double kPivotTurn = 0.25 * kPi;  // [rad] the smaller pivot the search tries
 // Agents whose COMs are further apart cannot touch: every circle lies within
 // a stride and a foot of its COM. [m]
 constexpr double kNearAgent = 3.0;
@@ -486,10 +487,15 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
           foot, phi, goal_turn, gait.speed, gait.duration, phi + inward * goal_turn);
     }
   }
+  // The stop (a wait when standing), and from standing the pivots.
   const Foot stop_foot = other(state.last_foot);
-  add(create_footstep(state, {StepKind::kStop, stop_foot, state.facing, 0.0, params_.stop_duration},
-                      character_),
-      StepKind::kStop, stop_foot, state.facing, 0.0, 0.0, params_.stop_duration, state.facing);
+  for (const double turn : {0.0, kPivotTurn, -kPivotTurn, kMaxPivot, -kMaxPivot}) {
+    if (turn != 0.0 && !state.standing()) break;
+    const double phi = wrap_angle(state.facing + turn);
+    add(create_footstep(state, {StepKind::kStop, stop_foot, phi, 0.0, params_.stop_duration},
+                        character_),
+        StepKind::kStop, stop_foot, phi, 0.0, 0.0, params_.stop_duration, phi);
+  }
 }
 
 SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,

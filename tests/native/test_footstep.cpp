@@ -242,13 +242,47 @@ TEST(Footstep, StopBringsTheComToRestBesideTheFeet) {
   // The COM decelerates uniformly: half way it has covered three quarters.
   const ComSample mid = com_at(r.step, r.step.start_time + 0.25);
   EXPECT_NEAR(distance(mid.position, state.com), 0.75 * distance(rest, state.com), 1e-12);
-  // A stop from standing is a wait: nothing moves but the stepping foot.
+  // A stop from standing that keeps the facing is a wait: nothing moves but
+  // the stepping foot.
   const StepResult wait =
-      create_footstep(r.state, {StepKind::kStop, Foot::kLeft, 0.0, 0.0, 0.5}, character);
+      create_footstep(r.state, {StepKind::kStop, Foot::kLeft, r.state.facing, 0.0, 0.5}, character);
   ASSERT_TRUE(wait.valid());
   EXPECT_EQ(wait.step.com_end, r.state.com);
   EXPECT_DOUBLE_EQ(wait.step.cost.speed_change, 0.0);
   EXPECT_NEAR(distance(wait.state.feet[0], wait.state.feet[1]), 2 * character.foot_offset, 1e-12);
+  // From walking, a stop keeps the facing whatever phi says.
+  const StepResult ahead =
+      create_footstep(state, {StepKind::kStop, Foot::kRight, 2.0, 0.0, 0.5}, character);
+  ASSERT_TRUE(ahead.valid());
+  EXPECT_DOUBLE_EQ(ahead.step.phi, state.facing);
+}
+
+// A walk sets off along the facing, so a character standing face to face with
+// a wall needs to turn on the spot first: a stop from standing with a new
+// facing, up to a quarter turn.
+TEST(Footstep, APivotTurnsAStandingCharacterOnTheSpot) {
+  const CharacterParams character;
+  const FootstepState standing = standing_state({1.0, 2.0}, 0.0, character);
+  const Foot foot = other(standing.last_foot);
+  for (const double turn : {kPi / 4, -kPi / 4, kPi / 2, -kPi / 2}) {
+    SCOPED_TRACE(turn);
+    const StepResult pivot =
+        create_footstep(standing, {StepKind::kStop, foot, turn, 0.0, 0.5}, character);
+    ASSERT_TRUE(pivot.valid()) << to_string(pivot.validity);
+    EXPECT_EQ(pivot.step.com_end, standing.com);
+    EXPECT_TRUE(pivot.state.standing());
+    EXPECT_NEAR(pivot.state.facing, turn, 1e-12);
+    // The stepping foot lands beside the COM, across the new facing.
+    EXPECT_NEAR(distance(pivot.step.foot_position, standing.com), character.foot_offset, 1e-12);
+    EXPECT_NEAR(dot(pivot.step.foot_position - standing.com, unit(turn)), 0.0, 1e-12);
+    // The pair rule holds: the foot turns no further than the other allows.
+    EXPECT_LE(std::fabs(wrap_angle(pivot.step.foot_orientation - 0.0)), character.max_foot_turn + 1e-12);
+    // Only the fixed rate is paid: nothing speeds up.
+    EXPECT_DOUBLE_EQ(pivot.step.cost.speed_change, 0.0);
+  }
+  // More than a quarter turn at once is refused.
+  EXPECT_EQ(create_footstep(standing, {StepKind::kStop, foot, 2.0, 0.0, 0.5}, character).validity,
+            StepValidity::kOrientationEmpty);
 }
 
 TEST(Footstep, TorsoCirclesSpanTheTorsoWidth) {

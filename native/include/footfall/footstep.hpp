@@ -31,6 +31,10 @@ enum class StepKind {
   kWalk,  ///< A parabolic step (equation 1).
   kStop,  ///< The special stop action: the COM comes to rest, the feet side by side.
 };
+
+/// Largest turn of one pivot: a stop from standing that turns the character
+/// on the spot (FootstepAction::phi). [rad]
+constexpr double kMaxPivot = 1.5707963267948966;
 /// "walk" or "stop".
 const char* to_string(StepKind kind);
 
@@ -86,7 +90,10 @@ FootstepState standing_state(Vec2 position, double facing, const CharacterParams
 struct FootstepAction {
   StepKind kind = StepKind::kWalk;  ///< Walk or the special stop.
   Foot foot = Foot::kLeft;  ///< Stepping foot: the other one than the last, unless standing.
-  double phi = 0;           ///< Parabola orientation. [rad]
+  /// Parabola orientation. For a stop from standing, the facing after it (a
+  /// pivot, at most kMaxPivot from the facing before); a stop from walking
+  /// keeps the facing, whatever phi says. [rad]
+  double phi = 0;
   double speed = 1.3;       ///< Desired COM speed at the start of the step. [m/s]
   double duration = 0.5;    ///< Step duration T. [s]
 };
