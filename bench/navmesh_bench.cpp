@@ -9,8 +9,6 @@
 #include <cstdint>
 #include <memory>
 #include <random>
-#include <set>
-#include <utility>
 #include <vector>
 
 #include "channel_funnel.hpp"
@@ -78,10 +76,7 @@ const BoxScene& scene_of(int boxes) {
   return boxes == 2000 ? two_thousand : boxes == 10000 ? ten_thousand : room;
 }
 
-/// The meshes queries run on; each query benchmark builds the landmarks
-/// for its radius first (as a program that loads a scene and then asks many
-/// queries would have them).
-NavMesh& mesh_of(int boxes) {
+const NavMesh& mesh_of(int boxes) {
   static const std::unique_ptr<NavMesh> two_thousand = build(scene_of(2000));
   static const std::unique_ptr<NavMesh> ten_thousand = build(scene_of(10000));
   static const std::unique_ptr<NavMesh> room = build(scene_of(60));
@@ -100,24 +95,10 @@ void BM_Build(benchmark::State& state) {
 }
 BENCHMARK(BM_Build)->Arg(60)->Arg(2000)->Arg(10000)->Unit(benchmark::kMillisecond);
 
-/// The landmarks of a built mesh (NavMesh::build_landmarks); range(1) is
-/// the radius in centimetres.
-void BM_BuildLandmarks(benchmark::State& state) {
-  const auto mesh = build(scene_of(static_cast<int>(state.range(0))));
-  for (auto _ : state) mesh->build_landmarks(static_cast<double>(state.range(1)) / 100.0);
-}
-BENCHMARK(BM_BuildLandmarks)
-    ->ArgsProduct({{60, 10000}, {100, 200}})
-    ->Unit(benchmark::kMillisecond);
-
-/// Path queries, with the landmarks for their radius built; range(1) is the
-/// radius in centimetres.
+/// Path queries; range(1) is the radius in centimetres.
 void BM_Query(benchmark::State& state) {
-  NavMesh& mesh = mesh_of(static_cast<int>(state.range(0)));
-  const double radius = static_cast<double>(state.range(1)) / 100.0;
-  static std::set<std::pair<const NavMesh*, double>> built;  // the benchmark runs more than once
-  if (built.insert({&mesh, radius}).second) mesh.build_landmarks(radius);
-  const std::vector<PathQuery> all = queries(mesh, radius, 200, 7);
+  const NavMesh& mesh = mesh_of(static_cast<int>(state.range(0)));
+  const std::vector<PathQuery> all = queries(mesh, static_cast<double>(state.range(1)) / 100.0, 200, 7);
   std::size_t i = 0, found = 0, asked = 0;
   for (auto _ : state) {
     const PathResult result = mesh.find_path(all[i]);

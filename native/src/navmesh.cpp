@@ -3,7 +3,6 @@
 // inside the changed obstacle are shifted, faces CGAL created are re-derived
 // from their known neighbours across the edges between them.
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -263,7 +262,6 @@ int NavMesh::add_polygon(const std::vector<Vec2>& polygon, const std::string& na
   m.forget_windings(touched);
   m.shift_enclosed(obstacle.constraint, +1);
   m.repair_windings(touched);
-  m.drop_landmarks();
   m.obstacles.emplace(m.next_id, std::move(obstacle));
   return m.next_id++;
 }
@@ -282,7 +280,6 @@ int NavMesh::add_point(Vec2 point, const std::string& name) {
   obstacle.point->info().points += 1;
   m.forget_windings({obstacle.point});
   m.repair_windings({obstacle.point});
-  m.drop_landmarks();
   m.obstacles.emplace(m.next_id, std::move(obstacle));
   return m.next_id++;
 }
@@ -292,7 +289,6 @@ void NavMesh::remove(int id) {
   const auto found = m.obstacles.find(id);
   if (found == m.obstacles.end())
     throw std::out_of_range("no obstacle with id " + std::to_string(id));
-  m.drop_landmarks();
   const NavMeshState::Obstacle obstacle = std::move(found->second);
   m.obstacles.erase(found);
   std::vector<Vertex> touched;
@@ -318,12 +314,6 @@ void NavMesh::remove(int id) {
     m.remove_if_orphan(v);
   }
   m.repair_windings(seeds);
-}
-
-void NavMesh::build_landmarks(double radius) {
-  if (!(radius >= 0) || !std::isfinite(radius))
-    throw std::invalid_argument("build_landmarks: radius must be a finite number >= 0");
-  impl_->build_landmarks(radius);
 }
 
 bool NavMesh::contains(int id) const { return impl_->obstacles.count(id) > 0; }

@@ -9,18 +9,13 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
-#include <atomic>
 #include <climits>
-#include <memory>
-#include <mutex>
 #include <unordered_map>
 #include <vector>
 
 #include "footfall/navmesh.hpp"
 
 namespace footfall {
-
-class Landmarks;
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_2;
@@ -62,21 +57,6 @@ struct NavMeshState {
   std::unordered_map<int, Obstacle> obstacles;
   int next_id = 0;
 
-  /// The search's landmarks (navmesh_landmarks.hpp), per query radius.
-  /// Queries build them once queries of that radius without them have
-  /// spent as many node expansions as a build takes (so at most about twice
-  /// what building them at once would cost, and never for a few short
-  /// queries); every update drops them. Guarded by the mutex, since queries
-  /// run in parallel.
-  struct LandmarkSlot {
-    double radius;
-    std::shared_ptr<const Landmarks> landmarks;
-    long unguided_work;  ///< Expansions of queries of this radius without landmarks.
-  };
-  mutable std::mutex landmark_mutex;
-  mutable std::vector<LandmarkSlot> landmark_slots;
-  mutable long landmark_cost = -1;  ///< Expansions of the last build (-1: none yet).
-
   bool in_domain(Vec2 p) const {
     return p.x >= min_corner.x && p.y >= min_corner.y && p.x <= max_corner.x && p.y <= max_corner.y;
   }
@@ -94,20 +74,6 @@ struct NavMeshState {
   void shift_enclosed(Cdt::Constraint_id constraint, int sign);
   /// Removes a vertex that no constraint and no point obstacle uses any more.
   void remove_if_orphan(Vertex v);
-  /// The landmarks for a query of this radius, built now if queries have
-  /// spent enough without them; null if not (yet) worth it.
-  std::shared_ptr<const Landmarks> landmarks_for_query(double radius) const;
-  /// Counts the expansions of a query that ran without landmarks.
-  void add_unguided_work(double radius, long expansions) const;
-  /// Builds the landmarks for this radius now (NavMesh::build_landmarks).
-  void build_landmarks(double radius) const;
-  /// Forgets every landmark: after an update their distances may be wrong.
-  void drop_landmarks();
-
- private:
-  /// The slot for `radius`, made (in place of the oldest) if there is none.
-  /// With landmark_mutex held.
-  LandmarkSlot& slot_for(double radius) const;
 };
 
 }  // namespace footfall

@@ -23,7 +23,6 @@
 
 #include "channel_funnel.hpp"
 #include "navmesh_impl.hpp"
-#include "navmesh_landmarks.hpp"
 #include "obstacle_distance.hpp"
 
 namespace footfall {
@@ -95,8 +94,7 @@ struct Node {
   bool left_end, right_end;  ///< The interval ends where its gate does: a path may turn there.
   Vec2 root;
   double g;  ///< Relaxed length from the start to `root`.
-  double root_bound;  ///< The landmarks' lower bound on any path from `root` to the goal.
-  double f;  ///< Lower bound on any path through this node to the goal (weighted ahead).
+  double f;  ///< Lower bound on any path through this node to the goal.
   int same_edge = -1;  ///< The node kept before it that came in through the same edge.
 };
 
@@ -134,17 +132,13 @@ bool clip_to_side(const Gate& segment, double& t0, double& t1, Vec2 origin, Vec2
 /// without bound).
 class ChannelSearch {
  public:
-  /// With no `goal` (a null face), the search walks everything it can reach,
-  /// in order of g (see search_everywhere).
-  ChannelSearch(const NavMeshState& mesh, const PathQuery& q, Face start, Face goal, int rivals,
-                const LandmarkHeuristic* heuristic)
-      : mesh_(mesh), q_(q), goal_(goal), rivals_(rivals), heuristic_(heuristic) {
+  ChannelSearch(const NavMeshState& mesh, const PathQuery& q, Face start, Face goal, int rivals)
+      : mesh_(mesh), q_(q), goal_(goal), rivals_(rivals) {
     faces_.reserve(1024);
     nodes_.reserve(1024);
-    const double root_bound = heuristic_ != nullptr ? heuristic_->from_face(start, q_.from) : 0.0;
-    const double f = goal_ == Face() ? 0.0 : std::max(distance(q_.from, q_.to), root_bound);
-    nodes_.push_back({start, kNoEdge, -1, {q_.from, q_.from}, false, false, q_.from, 0.0, root_bound, f});
-    open_.push({f, 0});
+    const double straight = distance(q_.from, q_.to);
+    nodes_.push_back({start, kNoEdge, -1, {q_.from, q_.from}, false, false, q_.from, 0.0, straight});
+    open_.push({straight, 0});
   }
 
   /// The next channel to the goal, in order of `bound`, the lower bound on
@@ -166,21 +160,6 @@ class ChannelSearch {
     return false;
   }
 
-  /// With no goal: expands every node, reporting for each the paths
-  /// through it to the gate ends and the centroid of its face.
-  void walk_all(SearchReport& report) {
-    while (!open_.empty()) {
-      const int index = open_.top().second;
-      open_.pop();
-      ++expanded_;
-      report_face(nodes_[index], report);
-      expand(index);
-    }
-  }
-
-  /// Nodes expanded so far.
-  long expanded() const { return expanded_; }
-
  private:
   /// What the search knows of one face: its corners' widths (NaN until
   /// measured) and, per entry edge, the last node kept that came in through
@@ -194,40 +173,6 @@ class ChannelSearch {
   };
   enum Turn { kLeft = 0, kRight = 1 };
 
-  /// The paths through `node` to points of its face: to the centroid
-  /// through the interval, and to every gate end (the points r from a
-  /// corner along its edges, whether portals or not) straight from the root
-  /// where it sees them (a little beyond the interval's rays, so that
-  /// rounding never loses one: that errs by far less than a micrometre, on
-  /// the short side), and round an end of the interval where its gate ends
-  /// (the face is convex, so that end sees every point of it). The last
-  /// straight piece of a shortest path to a gate end is one of these.
-  void report_face(const Node& node, SearchReport& report) const {
-    const Face f = node.face;
-    const Vec2 centre = (1.0 / 3.0) * (to_vec(f->vertex(0)->point()) + to_vec(f->vertex(1)->point()) +
-                                       to_vec(f->vertex(2)->point()));
-    report.centroid(f, node.g + via_segment(node.root, centre, node.interval.left, node.interval.right));
-    const Vec2 to_left = node.interval.left - node.root, to_right = node.interval.right - node.root;
-    const bool sees_all = node.entry == kNoEdge || cross(to_left, to_right) >= 0;
-    const double via_left = node.g + length(to_left), via_right = node.g + length(to_right);
-    for (int edge = 0; edge < 3; ++edge) {
-      const Gate gate = exit_gate(f, edge);
-      const Vertex ends[2] = {f->vertex(Cdt::cw(edge)), f->vertex(Cdt::ccw(edge))};
-      for (int side = 0; side < 2; ++side) {
-        const Vec2 x = side == 0 ? gate.left : gate.right;
-        const Vec2 to_x = x - node.root;
-        const double slack = 1e-12 * length(to_x);
-        double d = kInf;
-        if (sees_all || (cross(to_left, to_x) <= slack * length(to_left) &&
-                         cross(to_right, to_x) >= -slack * length(to_right)))
-          d = node.g + length(to_x);
-        if (node.left_end) d = std::min(d, via_left + distance(node.interval.left, x));
-        if (node.right_end) d = std::min(d, via_right + distance(node.interval.right, x));
-        report.gate_end(ends[side], d);
-      }
-    }
-  }
-
   void expand(int index) {
     const Node node = nodes_[index];
     const Face f = node.face;
@@ -235,7 +180,7 @@ class ChannelSearch {
     if (node.entry == kNoEdge) {  // the start's triangle: every gate is seen whole
       for (int exit = 0; exit < 3; ++exit)
         if (passable(node, here, exit))
-          push(index, exit, exit_gate(f, exit), true, true, node.root, node.g, node.root_bound);
+          push(index, exit, exit_gate(f, exit), true, true, node.root, node.g);
       return;
     }
     const Vec2 at_left = node.interval.left, at_right = node.interval.right;
@@ -249,7 +194,7 @@ class ChannelSearch {
       if (!passable(node, here, exit)) continue;
       const Gate gate = exit_gate(f, exit);
       if (sees_all) {
-        push(index, exit, gate, true, true, node.root, node.g, node.root_bound);
+        push(index, exit, gate, true, true, node.root, node.g);
         continue;
       }
       // Seen from the root: right of the ray through the interval's left end
@@ -257,18 +202,18 @@ class ChannelSearch {
       double t0 = 0.0, t1 = 1.0;
       if (clip_to_side(gate, t0, t1, node.root, to_left, -1, true) &&
           clip_to_side(gate, t0, t1, node.root, to_right, +1, true))
-        push_part(index, exit, gate, t0, t1, node.root, node.g, node.root_bound);
+        push_part(index, exit, gate, t0, t1, node.root, node.g);
       // Hidden from the root, beyond an end of the interval where its gate
       // ends: the path turns round that end (the first to get there does).
       double h0 = 0.0, h1 = 1.0;
       const double via_left = node.g + length(to_left), via_right = node.g + length(to_right);
       if (node.left_end && clip_to_side(gate, h0, h1, node.root, to_left, +1, false) &&
           first_to_turn(here, node.entry, kLeft, via_left))
-        push_part(index, exit, gate, h0, h1, at_left, via_left, turn_bound(node, at_left));
+        push_part(index, exit, gate, h0, h1, at_left, via_left);
       h0 = 0.0, h1 = 1.0;
       if (node.right_end && clip_to_side(gate, h0, h1, node.root, to_right, -1, false) &&
           first_to_turn(here, node.entry, kRight, via_right))
-        push_part(index, exit, gate, h0, h1, at_right, via_right, turn_bound(node, at_right));
+        push_part(index, exit, gate, h0, h1, at_right, via_right);
     }
   }
 
@@ -278,24 +223,13 @@ class ChannelSearch {
                    q_.radius);
   }
 
-  /// The landmarks' bound from `end`, an end of `node`'s gate where a path
-  /// turns: it lies on the entry edge, r from the vertex nearer to it.
-  double turn_bound(const Node& node, Vec2 end) const {
-    if (heuristic_ == nullptr || heuristic_->empty()) return 0.0;
-    const Vertex a = node.face->vertex(Cdt::ccw(node.entry)), b = node.face->vertex(Cdt::cw(node.entry));
-    const bool near_a = distance(end, to_vec(a->point())) <= distance(end, to_vec(b->point()));
-    return heuristic_->from_gate_end(near_a ? a : b);
-  }
-
-  void push_part(int index, int exit, const Gate& gate, double t0, double t1, Vec2 root, double g,
-                 double root_bound) {
+  void push_part(int index, int exit, const Gate& gate, double t0, double t1, Vec2 root, double g) {
     const Vec2 d = gate.right - gate.left;
-    push(index, exit, {gate.left + t0 * d, gate.left + t1 * d}, t0 == 0.0, t1 == 1.0, root, g,
-         root_bound);
+    push(index, exit, {gate.left + t0 * d, gate.left + t1 * d}, t0 == 0.0, t1 == 1.0, root, g);
   }
 
   void push(int index, int exit, const Gate& interval, bool left_end, bool right_end, Vec2 root,
-            double g, double root_bound) {
+            double g) {
     const Face from = nodes_[index].face;
     const Face next = from->neighbor(exit);
     const int entry = next->index(from);
@@ -304,14 +238,8 @@ class ChannelSearch {
     if (next != goal_ && circles_back(index, next)) return;
     FaceSearch& there = faces_[next];
     if (!admit(there, entry, interval, root, g)) return;
-    // Ahead: the straight way through the interval, or the landmarks' bound
-    // from the root, whichever is longer (both are lower bounds).
-    const double f = goal_ == Face() ? g
-                                     : g + kAheadWeight * std::max(via_segment(root, q_.to, interval.left,
-                                                                               interval.right),
-                                                                   root_bound);
-    nodes_.push_back(
-        {next, entry, index, interval, left_end, right_end, root, g, root_bound, f, there.last_in[entry]});
+    const double f = g + kAheadWeight * via_segment(root, q_.to, interval.left, interval.right);
+    nodes_.push_back({next, entry, index, interval, left_end, right_end, root, g, f, there.last_in[entry]});
     there.last_in[entry] = static_cast<int>(nodes_.size() - 1);
     open_.push({f, static_cast<int>(nodes_.size() - 1)});
   }
@@ -385,8 +313,7 @@ class ChannelSearch {
     const Vec2 a = to_vec(f->vertex(Cdt::ccw(exit))->point());
     const Vec2 b = to_vec(f->vertex(Cdt::cw(exit))->point());
     if (distance(a, b) < need) return false;
-    // The landmarks' metric has no corner test (navmesh_landmarks.hpp).
-    if (node.entry == kNoEdge || goal_ == Face()) return true;
+    if (node.entry == kNoEdge) return true;
     // Each corner's width is measured once per query, however often its
     // face is expanded (the walk behind it is the costly part).
     double& width = here.corner_width[3 - node.entry - exit];
@@ -413,7 +340,6 @@ class ChannelSearch {
   const PathQuery& q_;
   Face goal_;
   int rivals_;
-  const LandmarkHeuristic* heuristic_;
   int expanded_ = 0;
   std::vector<Node> nodes_;
   /// (f, node): lowest bound first.
@@ -582,14 +508,6 @@ ChannelOutcome clear_path(const NavMeshState& mesh, const PathQuery& q, const Ch
 
 }  // namespace
 
-long search_everywhere(const NavMeshState& mesh, Face face, Vec2 source, double radius,
-                       SearchReport& report) {
-  const PathQuery q{source, source, radius, 1.0};
-  ChannelSearch search(mesh, q, face, Face(), 0, nullptr);
-  search.walk_all(report);
-  return search.expanded();
-}
-
 PathResult NavMesh::find_path(const PathQuery& q) const {
   if (!in_world(q.from) || !in_world(q.to))
     throw std::invalid_argument("find_path: start and goal must be finite coordinates within 1e9 m");
@@ -642,24 +560,19 @@ PathResult NavMesh::find_path(const PathQuery& q) const {
         if (round.clearance >= q.radius - kClearanceSlack) keep(std::move(path.points), round.clearance);
       }
   }
-  const std::shared_ptr<const Landmarks> landmarks = m.landmarks_for_query(q.radius);
-  const LandmarkHeuristic heuristic(landmarks.get(), goal, q.to);
   Channel channel;
   double bound = 0.0;
   bool misjudged = false;
-  long expanded = 0;
   for (const int rivals : {0, kRivalsOnRetry}) {
-    ChannelSearch search(m, q, start, goal, rivals, &heuristic);
+    ChannelSearch search(m, q, start, goal, rivals);
     while (search.next(channel, bound) && bound * (1 + kLengthTolerance) < best)
       switch (clear_path(m, q, channel, best, points, clearance)) {
         case ChannelOutcome::kClear: keep(std::move(points), clearance); break;
         case ChannelOutcome::kLonger: break;
         case ChannelOutcome::kMisjudged: misjudged = true; break;
       }
-    expanded += search.expanded();
     if (!misjudged) break;
   }
-  if (landmarks == nullptr) m.add_unguided_work(q.radius, expanded);
   return result;  // kNoPath unless a channel gave a path
 }
 

@@ -310,62 +310,6 @@ TEST(NavMesh, InsertionOrderDoesNotChangeWhatIsFree) {
     ASSERT_NEAR(free_area(order), first, 1e-9) << order[0] << order[1] << order[2] << order[3];
 }
 
-// Landmarks (built for the query's radius) change only the order the search
-// offers channels in: on a field of boxes every answer agrees with the
-// search without them, within the search's tolerance (0.8 %).
-TEST(NavMesh, LandmarksKeepTheAnswers) {
-  std::mt19937_64 rng(5);
-  auto uniform = [&](double lo, double hi) {
-    return lo + (hi - lo) * static_cast<double>(rng() >> 11) * 0x1.0p-53;
-  };
-  NavMesh plain({0, 0}, {120, 120});
-  NavMesh guided({0, 0}, {120, 120});
-  for (int i = 0; i < 400; ++i) {
-    const Vec2 c{uniform(0, 120), uniform(0, 120)};
-    const Vec2 half{uniform(0.5, 3), uniform(0.5, 3)};
-    plain.add_polygon(box(c - half, c + half));
-    guided.add_polygon(box(c - half, c + half));
-  }
-  int found = 0;
-  for (const double radius : {0.25, 1.0, 2.0}) {
-    guided.build_landmarks(radius);
-    auto free_point = [&] {
-      for (;;) {
-        const Vec2 p{uniform(0, 120), uniform(0, 120)};
-        if (plain.clearance(p) > radius) return p;
-      }
-    };
-    for (int i = 0; i < 40; ++i) {
-      const PathQuery q{free_point(), free_point(), radius, 0.01};
-      const PathResult a = plain.find_path(q), b = guided.find_path(q);
-      ASSERT_EQ(a.status, b.status) << "radius " << radius << " query " << i;
-      if (a.status != PathStatus::kFound) continue;
-      ++found;
-      EXPECT_NEAR(a.length, b.length, 0.008 * std::min(a.length, b.length)) << "radius " << radius;
-      EXPECT_GE(b.min_clearance, radius - 1e-9);
-    }
-  }
-  EXPECT_GT(found, 60);
-}
-
-// Removing an obstacle can open a shortcut the landmarks never measured: they
-// are dropped, and the query answers as on a mesh built without it.
-TEST(NavMesh, LandmarksAreDroppedWhenAnObstacleGoes) {
-  NavMesh mesh({0, 0}, {60, 20});
-  const int wall = mesh.add_polygon(box({29, 2}, {31, 20}));  // the way round is by y < 2
-  mesh.build_landmarks(0.5);
-  const PathResult around = path(mesh, {5, 15}, {55, 15}, 0.5);
-  ASSERT_EQ(around.status, PathStatus::kFound);
-  EXPECT_GT(around.length, 56.0);
-  mesh.remove(wall);
-  const PathResult straight = path(mesh, {5, 15}, {55, 15}, 0.5);
-  ASSERT_EQ(straight.status, PathStatus::kFound);
-  EXPECT_NEAR(straight.length, 50.0, 1e-9);
-  mesh.build_landmarks(0.5);
-  EXPECT_NEAR(path(mesh, {5, 15}, {55, 15}, 0.5).length, 50.0, 1e-9);
-  EXPECT_THROW(mesh.build_landmarks(-1), std::invalid_argument);
-}
-
 TEST(NavMesh, UpdatesAnswerLikeARebuild) { check_updates_against_rebuilds(false); }
 // Boxes that overlap each other: every face's winding must survive the
 // intersection vertices that inserts and removals leave behind.

@@ -309,26 +309,6 @@ TEST(NavMeshOracle, RandomScenesAgreeWithTheOracle) {
   EXPECT_GT(tally.found, 150);  // the cases must mostly test something
 }
 
-// The same kind of scenes with the landmarks built for the query's radius:
-// their bounds must never make the search miss the shortest channel.
-TEST(NavMeshOracle, RandomScenesWithLandmarksAgreeWithTheOracle) {
-  Random random(777);
-  Tally tally;
-  for (int c = 0; c < 300; ++c) {
-    const NavScene scene = random_scene(random);
-    const double radius = random.uniform(0.05, 1.5);
-    const Vec2 from = random_end(random, scene, radius);
-    const Vec2 to = random_end(random, scene, radius);
-    SCOPED_TRACE(::testing::Message() << "case " << c);
-    NavMesh mesh = build_mesh(scene);
-    mesh.build_landmarks(radius);
-    check_query(scene, mesh, {from, to, radius}, tally);
-    if (failures() >= kMaxFailingCases) break;
-  }
-  tally.print("random scenes, landmarks");
-  EXPECT_GT(tally.found, 150);
-}
-
 /// A wall across the whole domain [0, 20]^2 along `angle` through `centre`,
 /// open there by a gap `gap` wide between the square ends of two boxes.
 NavScene wall_with_gap(Vec2 centre, double angle, double gap) {

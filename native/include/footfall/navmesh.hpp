@@ -90,16 +90,6 @@ class NavMesh {
   void remove(int id);
   /// True if an obstacle has this id.
   bool contains(int id) const;
-  /// Builds now the landmarks that guide queries of this radius: distances
-  /// from a few points to the whole mesh, which bound long queries far more
-  /// tightly than the straight line where the disc must go round obstacles.
-  /// Queries of a radius build them by themselves once they have spent about
-  /// as much without them as building them costs (they may then take that
-  /// long once; other queries wait); call this after loading a large scene
-  /// to have them from the first query. Every update drops them. Like an
-  /// update, it may not overlap queries. Throws std::invalid_argument for a
-  /// negative or non-finite radius. [m]
-  void build_landmarks(double radius);
 
   /// Shortest path for a disc of `query.radius`. Throws std::invalid_argument
   /// for a negative or non-finite radius or tolerance, or non-finite points.
