@@ -46,8 +46,12 @@ constexpr double kNearAgent = 3.0;
 /// Longest single wait step. [s]
 constexpr double kMaxWait = 5.0;
 /// An agent whose search found nothing it could commit tries again this much
-/// later, not at every tick: a blocked agent's searches would cost the most. [s]
+/// later, not at every tick: a blocked agent's searches would cost the most;
+/// after each further failure in a row it waits twice as long, up to
+/// kRetryAfter * 2^kMaxBackoff (someone queueing at an exit need not look
+/// for a way out ten times a second). [s]
 constexpr double kRetryAfter = 0.1;
+constexpr int kMaxBackoff = 3;
 
 void check_agent(const AgentSpec& agent) {
   if (agent.goals.empty()) throw std::invalid_argument("agent " + agent.name + ": has no goals");
@@ -70,6 +74,7 @@ struct Walker {
   std::size_t resting = 0;
   std::size_t goal = 0;
   double retry_at = 0.0;  ///< No search before this time. [s]
+  int failures = 0;        ///< Searches in a row that gave nothing to commit.
   double first_way = 0.0;  ///< Way to the current goal when it was first measured. [m]
   double best_way = std::numeric_limits<double>::infinity();  ///< Shortest way left so far. [m]
   double improved_at = 0.0;  ///< Plan time when best_way last shortened by min_progress. [s]
@@ -283,12 +288,13 @@ void commit(Walker& w, const Attempt& a, const FootstepPlanner& planner, double 
   if (touched != nullptr) w.noticed.push_back(touched);
   if (a.steps.empty() || touched != nullptr) {
     rest_until(w, planner, t);
-    w.retry_at = t + kRetryAfter;
+    w.retry_at = t + kRetryAfter * (1 << std::min(w.failures++, kMaxBackoff));
     if (!(a.reached && a.steps.empty())) {  // at the goal already, or waiting
       progress(w, w.best_way, planner);
       return;
     }
   } else {
+    w.failures = 0;
     w.noticed.clear();
     w.plan.footsteps = std::move(trial.footsteps);
     w.resting = steps.size() - a.steps.size();

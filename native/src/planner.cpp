@@ -283,18 +283,18 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
     const auto torso = torso_circles(me.position, step.phi, character_);
     const double extent = std::max(torso_extent_, distance(foot.center, me.position) + foot.radius);
     for (std::size_t c = 0; c < close.size(); ++c) {
-      const detail::AgentSample& near = others.at(close[c], k);
-      if (!near.present || distance(me.position, near.com) > kNearAgent) continue;
-      const detail::AgentSample& them = others.with_circles(close[c], k);
+      const detail::AgentWhere& them = others.at(close[c], k);
+      if (!them.present || distance(me.position, them.com) > kNearAgent) continue;
+      const detail::AgentShape& shape = others.shape(close[c], k);
       // Both move between instants: the circles are grown by half the travel.
       const double pad = 0.5 * (speed + them.speed) * kContactDt;
       // Too far apart for any pair of circles to come within the padding; at
       // the first instant the gap is still wanted for the exception below.
-      const double apart = distance(me.position, them.com) - extent - them.extent - pad;
+      const double apart = distance(me.position, them.com) - extent - shape.extent - pad;
       if (k != first && apart > 0.0) continue;
       Gap gap;  // of the torso: the foot is put down clear of everyone, standing close or not
-      for (int i = 0; i < them.count; ++i) {
-        const Circle& theirs = them.circles[i];
+      for (int i = 0; i < shape.count; ++i) {
+        const Circle& theirs = shape.circles[i];
         if (distance(foot.center, theirs.center) <= foot.radius + theirs.radius + pad) return true;
         for (const Circle& circle : torso) gap.add(circle, theirs, pad);
       }
@@ -348,15 +348,15 @@ bool FootstepPlanner::stands_clear(const FootstepState& state,
       continue;
     double start_gap = std::numeric_limits<double>::infinity();  // see touching()
     for (long k = first; k <= last; ++k) {
-      const detail::AgentSample& near = others.at(j, k);
-      if (!near.present) break;  // gone for good
-      if (distance(near.com, state.com) > kNearAgent) continue;
-      const detail::AgentSample& them = others.with_circles(j, k);
+      const detail::AgentWhere& them = others.at(j, k);
+      if (!them.present) break;  // gone for good
+      if (distance(them.com, state.com) > kNearAgent) continue;
+      const detail::AgentShape& shape = others.shape(j, k);
       const double pad = 0.5 * them.speed * kContactDt;
-      if (k != first && distance(them.com, state.com) - extent - them.extent - pad > 0.0) continue;
+      if (k != first && distance(them.com, state.com) - extent - shape.extent - pad > 0.0) continue;
       Gap gap;
-      for (int i = 0; i < them.count; ++i)
-        for (const Circle& circle : mine) gap.add(circle, them.circles[i], pad);
+      for (int i = 0; i < shape.count; ++i)
+        for (const Circle& circle : mine) gap.add(circle, shape.circles[i], pad);
       if (k == first && standing_still(0.0, them.speed)) start_gap = gap.outright;
       if (touching(gap, start_gap)) return false;
     }

@@ -12,65 +12,65 @@ void SampledAgents::reset(const MovingObstacles& others, const CharacterParams& 
                           double from) {
   others_ = &others;
   character_ = &character;
-  first_ = first_contact_instant(from);
   ++stamp_;
+  if (others.size() > stride_) {  // a wider row: the old samples are stale anyway
+    stride_ = others.size();
+    where_.clear();
+    shape_.clear();
+    rows_ = 0;
+  }
+  if (top_speed_.size() < others.size()) {
+    top_speed_.resize(others.size());
+    top_speed_stamp_.resize(others.size(), 0);
+  }
+  first_ = first_contact_instant(from);  // the rows held keep their memory, not their samples
 }
 
-SampledAgents::Entry& SampledAgents::entry(std::size_t j, long k) {
+void SampledAgents::grow(long k) {
   if (k < first_) {  // earlier than announced: rows are added in front
-    rows_.insert(rows_.begin(), static_cast<std::size_t>(first_ - k), {});
+    const auto added = static_cast<std::size_t>(first_ - k) * stride_;
+    where_.insert(where_.begin(), added, AgentWhere{});
+    shape_.insert(shape_.begin(), added, AgentShape{});
+    rows_ += first_ - k;
     first_ = k;
+  } else {
+    rows_ = k - first_ + 1;
+    where_.resize(static_cast<std::size_t>(rows_) * stride_);
+    shape_.resize(static_cast<std::size_t>(rows_) * stride_);
   }
-  const auto row = static_cast<std::size_t>(k - first_);
-  if (row >= rows_.size()) rows_.resize(row + 1);
-  std::vector<Entry>& entries = rows_[row];
-  if (entries.size() < others_->size()) entries.resize(others_->size());
-  return entries[j];
 }
 
-const AgentSample& SampledAgents::at(std::size_t j, long k) {
-  Entry& e = entry(j, k);
-  if (e.sampled != stamp_) {
-    const AgentPlan& plan = *(*others_)[j];
-    const double t = static_cast<double>(k) * kContactDt;
-    const ComSample com = com_at(plan, t);
-    e.sample.present = present_at(plan, t);
-    e.sample.com = com.position;
-    e.sample.speed = length(com.velocity);
-    e.sample.count = 0;
-    e.sampled = stamp_;
-  }
-  return e.sample;
+void SampledAgents::fill(std::size_t j, long k, AgentWhere& where) const {
+  const AgentPlan& plan = *(*others_)[j];
+  const double t = static_cast<double>(k) * kContactDt;
+  const ComSample com = com_at(plan, t);
+  where.present = present_at(plan, t);
+  where.com = com.position;
+  where.speed = length(com.velocity);
+  where.stamp = stamp_;
 }
 
-const AgentSample& SampledAgents::with_circles(std::size_t j, long k) {
-  at(j, k);
-  Entry& e = entry(j, k);
-  if (e.circled != stamp_) {
-    const double t = static_cast<double>(k) * kContactDt;
-    const std::vector<Circle> circles = collision_circles(*(*others_)[j], *character_, t);
-    e.sample.count = static_cast<int>(std::min(circles.size(), e.sample.circles.size()));
-    std::copy_n(circles.begin(), e.sample.count, e.sample.circles.begin());
-    e.sample.extent = 0.0;
-    for (int i = 0; i < e.sample.count; ++i) {
-      const Circle& c = e.sample.circles[i];
-      e.sample.extent = std::max(e.sample.extent, distance(c.center, e.sample.com) + c.radius);
-    }
-    e.circled = stamp_;
+void SampledAgents::fill(std::size_t j, long k, AgentShape& shape) const {
+  const AgentPlan& plan = *(*others_)[j];
+  const double t = static_cast<double>(k) * kContactDt;
+  const std::vector<Circle> circles = collision_circles(plan, *character_, t);
+  const Vec2 com = com_at(plan, t).position;
+  shape.count = static_cast<int>(std::min(circles.size(), shape.circles.size()));
+  std::copy_n(circles.begin(), shape.count, shape.circles.begin());
+  shape.extent = 0.0;
+  for (int i = 0; i < shape.count; ++i) {
+    const Circle& c = shape.circles[i];
+    shape.extent = std::max(shape.extent, distance(c.center, com) + c.radius);
   }
-  return e.sample;
+  shape.stamp = stamp_;
 }
 
-double SampledAgents::top_speed(std::size_t j) {
-  if (top_speed_.size() < others_->size()) top_speed_.resize(others_->size());
-  auto& [stamp, speed] = top_speed_[j];
-  if (stamp != stamp_) {
-    speed = 0.0;
-    for (const Footstep& step : (*others_)[j]->footsteps)
-      speed = std::max({speed, length(step.com_velocity_start), length(step.com_velocity_end)});
-    stamp = stamp_;
-  }
-  return speed;
+void SampledAgents::fill_top_speed(std::size_t j) {
+  double speed = 0.0;
+  for (const Footstep& step : (*others_)[j]->footsteps)
+    speed = std::max({speed, length(step.com_velocity_start), length(step.com_velocity_end)});
+  top_speed_[j] = speed;
+  top_speed_stamp_[j] = stamp_;
 }
 
 }  // namespace footfall::detail

@@ -7,21 +7,26 @@
 
 #include <array>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 #include "footfall/planner.hpp"
 
 namespace footfall::detail {
 
-/// One other agent at one instant of the contact grid.
-struct AgentSample {
-  bool present = false;  ///< Not yet gone (an agent that leaves at its goal).
+/// Where one other agent is at one instant of the contact grid.
+struct AgentWhere {
+  std::uint64_t stamp = 0;  ///< The reset that filled it (0: never).
   Vec2 com;
-  double speed = 0.0;  ///< COM speed. [m/s]
-  int count = 0;       ///< Circles held: torso, and planted feet (after with_circles).
-  std::array<Circle, 5> circles;
+  double speed = 0.0;    ///< COM speed. [m/s]
+  bool present = false;  ///< Not yet gone (an agent that leaves at its goal).
+};
+
+/// Its circles at that instant: torso, and planted feet.
+struct AgentShape {
+  std::uint64_t stamp = 0;
+  int count = 0;
   double extent = 0.0;  ///< How far the circles reach from the COM. [m]
+  std::array<Circle, 5> circles;
 };
 
 class SampledAgents {
@@ -31,28 +36,45 @@ class SampledAgents {
   void reset(const MovingObstacles& others, const CharacterParams& character, double from);
   std::size_t size() const { return others_->size(); }
   const AgentPlan& plan(std::size_t j) const { return *(*others_)[j]; }
-  /// Agent j at instant k (t = k * kContactDt): presence, COM and speed.
-  const AgentSample& at(std::size_t j, long k);
-  /// The same, with its circles.
-  const AgentSample& with_circles(std::size_t j, long k);
+  /// Agent j at instant k (t = k * kContactDt).
+  const AgentWhere& at(std::size_t j, long k) {
+    AgentWhere& where = where_[slot(j, k)];
+    if (where.stamp != stamp_) fill(j, k, where);
+    return where;
+  }
+  /// Its circles at instant k.
+  const AgentShape& shape(std::size_t j, long k) {
+    AgentShape& shape = shape_[slot(j, k)];
+    if (shape.stamp != stamp_) fill(j, k, shape);
+    return shape;
+  }
   /// The fastest agent j's COM moves in its plan: the largest speed at
   /// either end of one of its steps. [m/s]
-  double top_speed(std::size_t j);
+  double top_speed(std::size_t j) {
+    if (top_speed_stamp_[j] != stamp_) fill_top_speed(j);
+    return top_speed_[j];
+  }
 
  private:
-  struct Entry {
-    std::uint64_t sampled = 0;  ///< The reset that filled `sample` (0: never).
-    std::uint64_t circled = 0;  ///< The reset that filled its circles.
-    AgentSample sample;
-  };
-  Entry& entry(std::size_t j, long k);
+  std::size_t slot(std::size_t j, long k) {
+    if (k < first_ || k - first_ >= rows_) grow(k);
+    return static_cast<std::size_t>(k - first_) * stride_ + j;
+  }
+  void grow(long k);
+  void fill(std::size_t j, long k, AgentWhere& where) const;
+  void fill(std::size_t j, long k, AgentShape& shape) const;
+  void fill_top_speed(std::size_t j);
 
   const MovingObstacles* others_ = nullptr;
   const CharacterParams* character_ = nullptr;
-  long first_ = 0;           ///< The instant of rows_[0].
   std::uint64_t stamp_ = 0;  ///< Counts resets.
-  std::vector<std::vector<Entry>> rows_;  ///< rows_[k - first_][j]
-  std::vector<std::pair<std::uint64_t, double>> top_speed_;  ///< (reset, speed) per agent
+  long first_ = 0;           ///< The instant of the first row.
+  long rows_ = 0;            ///< Instants held.
+  std::size_t stride_ = 0;   ///< Agents per row (at least size()).
+  std::vector<AgentWhere> where_;  ///< [(k - first_) * stride_ + j]
+  std::vector<AgentShape> shape_;  ///< the same
+  std::vector<double> top_speed_;
+  std::vector<std::uint64_t> top_speed_stamp_;
 };
 
 }  // namespace footfall::detail
