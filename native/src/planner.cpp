@@ -365,10 +365,7 @@ bool FootstepPlanner::stands_clear(const FootstepState& state,
 }
 
 bool FootstepPlanner::room_to_turn(Vec2 com) const {
-  // Grown by the padding of the steps' torso checks (hits_obstacles), or a
-  // character facing a wall at just half its width could turn in no step.
-  return !obstacles_.overlaps(
-      {com, 0.5 * character_.torso_width + 0.5 * params_.collision_sample_spacing});
+  return !obstacles_.overlaps({com, 0.5 * character_.torso_width});
 }
 
 StepResult FootstepPlanner::stop_step(const FootstepState& state, double duration,
@@ -428,7 +425,17 @@ bool FootstepPlanner::free_to_set_off(const FootstepState& rested) const {
   const auto clear = [&](const StepResult& step, double, const detail::StepShape&) {
     return step.valid() && !hits_obstacles(step.step);
   };
-  return tabled_walks(rested, Foot::kLeft, clear) || tabled_walks(rested, Foot::kRight, clear);
+  if (tabled_walks(rested, Foot::kLeft, clear) || tabled_walks(rested, Foot::kRight, clear))
+    return true;
+  // Or a pivot toward a way out (the steps' checks pad the torso, so room to
+  // turn alone does not promise one).
+  for (const double turn : {kPivotTurn, -kPivotTurn, kMaxPivot, -kMaxPivot}) {
+    const StepResult pivot = create_footstep(
+        rested, {StepKind::kStop, other(rested.last_foot), rested.facing + turn, 0.0, params_.stop_duration},
+        character_);
+    if (clear(pivot, 0.0, {})) return true;
+  }
+  return false;
 }
 
 // Generates the successors of node `index`: every tabled action and the

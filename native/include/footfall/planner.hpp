@@ -92,16 +92,16 @@ class FootstepPlanner {
   /// the spot among `others` while their plans last.
   Rest come_to_rest(const FootstepState& state, const MovingObstacles& others = {}) const;
   /// True if a character standing with its COM at `com` could turn on the
-  /// spot: no static obstacle within half the torso width (and the padding
-  /// of the steps' checks, half the sample spacing).
+  /// spot: no static obstacle within half the torso width.
   bool room_to_turn(Vec2 com) const;
   /// True if a character standing at `rested` has room to turn and can set
-  /// off: one of the tabled walking steps from there is clear of the static
-  /// obstacles. A search that ends short of its goal ends where its rest
-  /// leaves the character free to set off, so that the next search from
-  /// there is not trapped. Room to turn alone is not enough: the first step
-  /// from standing moves the COM forward, so a character facing a wall a few
-  /// centimetres more than half its width away could take no step at all.
+  /// off: one of the tabled walking steps or pivots from there is clear of
+  /// the static obstacles. A search that ends short of its goal ends where
+  /// its rest leaves the character free to set off, so that the next search
+  /// from there is not trapped. Room to turn alone is not enough: a walk sets
+  /// off along the facing, and the steps' checks pad the torso, so a
+  /// character facing a wall just over half its width away could otherwise
+  /// take no step at all.
   bool free_to_set_off(const FootstepState& rested) const;
   /// The stop step from `state` lasting `duration`, with validity kCollides if
   /// it runs into an obstacle.
