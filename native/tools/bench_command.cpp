@@ -126,7 +126,8 @@ void run_crowd_bench(int threads, std::ostream& out) {
     const auto begin = std::chrono::steady_clock::now();
     const Plan plan = plan_scenario(workload.scenario, control);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-    double searches = 0, generated = 0, expanded = 0, simulated = 0;
+    long searches = 0;  // an integer: the fixed notation of the row before must not apply
+    double generated = 0, expanded = 0, simulated = 0;
     int reached = 0;
     for (const AgentPlan& agent : plan.agents) {
       searches += agent.searches;
@@ -136,12 +137,13 @@ void run_crowd_bench(int threads, std::ostream& out) {
       reached += agent.status == AgentStatus::kReached ? 1 : 0;
     }
     const double agents = static_cast<double>(plan.agents.size());
+    const auto plans = static_cast<double>(searches);
     const double ticks = std::max(1.0, simulated * 20.0);
     out << std::left << std::setw(22) << workload.name << std::right << std::setw(8)
         << plan.agents.size() << std::setw(9) << reached << std::setw(10) << searches
-        << std::fixed << std::setprecision(1) << std::setw(11) << generated / std::max(1.0, searches)
-        << std::setw(10) << expanded / std::max(1.0, searches) << std::setprecision(3) << std::setw(10)
-        << 1000.0 * wall / std::max(1.0, searches) << std::setprecision(1) << std::setw(10)
+        << std::fixed << std::setprecision(1) << std::setw(11) << generated / std::max(1.0, plans)
+        << std::setw(10) << expanded / std::max(1.0, plans) << std::setprecision(3) << std::setw(10)
+        << 1000.0 * wall / std::max(1.0, plans) << std::setprecision(1) << std::setw(10)
         << simulated << std::setw(10) << wall << std::setprecision(4) << std::setw(16)
         << 1000.0 * wall / (agents * ticks) << "\n";
   }
