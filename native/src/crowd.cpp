@@ -102,24 +102,42 @@ struct Attempt {
   bool searched = false;
 };
 
-/// The plans of the agents that agent `i` sees at time `t` (within
+/// Where every agent is at a tick's time t, and whether it is still there.
+/// The tick's commits change plans only from t on (a due agent's plan runs
+/// to t or beyond before it searches), so this holds for the whole tick.
+struct Snapshot {
+  double t = 0.0;
+  std::vector<Vec2> com;
+  std::vector<char> present;
+};
+
+Snapshot snapshot(const std::vector<Walker>& walkers, double t) {
+  Snapshot s{t, std::vector<Vec2>(walkers.size()), std::vector<char>(walkers.size())};
+  for (std::size_t j = 0; j < walkers.size(); ++j) {
+    s.com[j] = com_at(walkers[j].plan, t).position;
+    s.present[j] = present_at(walkers[j].plan, t);
+  }
+  return s;
+}
+
+/// The plans of the agents that agent `i` sees at the snapshot's time (within
 /// kViewDistance, in front of its torso, and with a clear line of sight),
 /// and of those it has noticed.
-MovingObstacles seen_by(const std::vector<Walker>& walkers, std::size_t i, double t,
+MovingObstacles seen_by(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now,
                         const NavMesh* mesh) {
-  const Vec2 eye = com_at(walkers[i].plan, t).position;
-  const Vec2 ahead = unit(facing_at(walkers[i].plan, t));
+  const Vec2 eye = now.com[i];
+  const Vec2 ahead = unit(facing_at(walkers[i].plan, now.t));
   MovingObstacles seen;
   for (std::size_t j = 0; j < walkers.size(); ++j) {
-    if (j == i || !present_at(walkers[j].plan, t)) continue;
-    const Vec2 them = com_at(walkers[j].plan, t).position;
+    if (j == i || !now.present[j]) continue;
+    const Vec2 them = now.com[j];
     const Vec2 d = them - eye;
     if (dot(d, d) > kViewDistance * kViewDistance || dot(d, ahead) <= 0.0) continue;
     if (mesh != nullptr && mesh->clearance_between(eye, them, 1e-9) < 1e-9) continue;
     seen.push_back(&walkers[j].plan);
   }
   for (const AgentPlan* other : walkers[i].noticed)
-    if (present_at(*other, t) && std::find(seen.begin(), seen.end(), other) == seen.end())
+    if (present_at(*other, now.t) && std::find(seen.begin(), seen.end(), other) == seen.end())
       seen.push_back(other);
   return seen;
 }
@@ -167,14 +185,12 @@ Attempt search(const Walker& w, const FootstepPlanner& planner, const NavMesh* m
   return a;
 }
 
-/// The plans of every other agent within kCheckDistance of agent `i` at time
-/// `t`, seen or not.
-MovingObstacles near(const std::vector<Walker>& walkers, std::size_t i, double t) {
-  const Vec2 here = com_at(walkers[i].plan, t).position;
+/// The plans of every other agent within kCheckDistance of agent `i` at the
+/// snapshot's time, seen or not.
+MovingObstacles near(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now) {
   MovingObstacles out;
   for (std::size_t j = 0; j < walkers.size(); ++j) {
-    if (j != i && present_at(walkers[j].plan, t) &&
-        distance(com_at(walkers[j].plan, t).position, here) <= kCheckDistance)
+    if (j != i && now.present[j] && distance(now.com[j], now.com[i]) <= kCheckDistance)
       out.push_back(&walkers[j].plan);
   }
   return out;
@@ -188,16 +204,25 @@ MovingObstacles near(const std::vector<Walker>& walkers, std::size_t i, double t
 const AgentPlan* touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
                          const MovingObstacles& others) {
   const CharacterParams& c = planner.character();
+  const double my_top_speed = top_com_speed(trial);
   for (const AgentPlan* other : others) {
     const double end = std::max(trial.end_time(), other->end_time()) + kContactDt;
+    // While the pair is far apart, instants they cannot close the distance
+    // in are skipped (most of those checked are never near).
+    const double closing = (my_top_speed + top_com_speed(*other)) * kContactDt;
     // The gap where the trial starts (see touching()).
     double start_gap = std::numeric_limits<double>::infinity();
     const long first = first_contact_instant(from);
-    for (long k = first;; ++k) {
+    for (long k = first, next = first;; k = next) {
       const double t = static_cast<double>(k) * kContactDt;
       if (t > end) break;
       const ComSample me = com_at(trial, t), them = com_at(*other, t);
-      if (distance(me.position, them.position) > kNearAgent) continue;
+      const double apart = distance(me.position, them.position) - kNearAgent;
+      next = k + 1;
+      if (apart > 0.0) {
+        if (closing > 0.0) next = k + std::max(1L, static_cast<long>(apart / closing));
+        continue;
+      }
       const double pad = 0.5 * (length(me.velocity) + length(them.velocity)) * kContactDt;
       const std::vector<Circle> mine = collision_circles(trial, c, t);
       Gap gap;
@@ -365,13 +390,14 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     // A plan that has run into its rest starts again from where that leaves it.
     for (std::size_t i : due)
       if (walkers[i].state.time < t) rest_until(walkers[i], planner, t);
+    const Snapshot at_tick = snapshot(walkers, t);
     std::vector<Attempt> attempts(due.size());
     workers.run(due.size(), [&](std::size_t k) {
-      attempts[k] = search(walkers[due[k]], planner, mesh, seen_by(walkers, due[k], t, mesh));
+      attempts[k] = search(walkers[due[k]], planner, mesh, seen_by(walkers, due[k], at_tick, mesh));
     });
     for (std::size_t k = 0; k < due.size(); ++k) {
       Walker& w = walkers[due[k]];
-      commit(w, attempts[k], planner, t, near(walkers, due[k], t));
+      commit(w, attempts[k], planner, t, near(walkers, due[k], at_tick));
       if (!w.done && stuck(walkers, due[k])) {
         w.plan.reason = "stuck";
         w.done = true;

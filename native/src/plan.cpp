@@ -43,6 +43,13 @@ ComSample com_at(const AgentPlan& plan, double t) {
   return com_at(plan.footsteps[step_index(plan, t)], t);
 }
 
+double top_com_speed(const AgentPlan& plan) {
+  double speed = 0.0;
+  for (const Footstep& step : plan.footsteps)
+    speed = std::max({speed, length(step.com_velocity_start), length(step.com_velocity_end)});
+  return speed;
+}
+
 double facing_at(const AgentPlan& plan, double t) {
   if (plan.footsteps.empty() || t < plan.footsteps.front().start_time) return plan.start.facing;
   return plan.footsteps[step_index(plan, t)].phi;

@@ -66,10 +66,7 @@ void SampledAgents::fill(std::size_t j, long k, AgentShape& shape) const {
 }
 
 void SampledAgents::fill_top_speed(std::size_t j) {
-  double speed = 0.0;
-  for (const Footstep& step : (*others_)[j]->footsteps)
-    speed = std::max({speed, length(step.com_velocity_start), length(step.com_velocity_end)});
-  top_speed_[j] = speed;
+  top_speed_[j] = top_com_speed(*(*others_)[j]);
   top_speed_stamp_[j] = stamp_;
 }
 

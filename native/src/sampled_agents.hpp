@@ -48,8 +48,7 @@ class SampledAgents {
     if (shape.stamp != stamp_) fill(j, k, shape);
     return shape;
   }
-  /// The fastest agent j's COM moves in its plan: the largest speed at
-  /// either end of one of its steps. [m/s]
+  /// top_com_speed of agent j's plan. [m/s]
   double top_speed(std::size_t j) {
     if (top_speed_stamp_[j] != stamp_) fill_top_speed(j);
     return top_speed_[j];
