@@ -75,6 +75,7 @@ struct Walker {
   std::size_t goal = 0;
   double retry_at = 0.0;  ///< No search before this time. [s]
   int failures = 0;        ///< Searches in a row that gave nothing to commit.
+  int last_expanded = 0;   ///< Nodes its last search expanded: a guess at the next one's cost.
   double first_way = 0.0;  ///< Way to the current goal when it was first measured. [m]
   double best_way = std::numeric_limits<double>::infinity();  ///< Shortest way left so far. [m]
   double improved_at = 0.0;  ///< Plan time when best_way last shortened by min_progress. [s]
@@ -288,6 +289,7 @@ void commit(Walker& w, const Attempt& a, const FootstepPlanner& planner, double 
     ++w.plan.searches;
     w.plan.nodes_generated += a.nodes_generated;
     w.plan.nodes_expanded += a.nodes_expanded;
+    w.last_expanded = a.nodes_expanded;
   }
   std::vector<Footstep> steps = a.steps;
   FootstepState rested = a.end;
@@ -392,7 +394,15 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       if (walkers[i].state.time < t) rest_until(walkers[i], planner, t);
     const Snapshot at_tick = snapshot(walkers, t);
     std::vector<Attempt> attempts(due.size());
-    workers.run(due.size(), [&](std::size_t k) {
+    // The dearest-looking searches start first, so that threads finish the
+    // tick together; results go by index, so the order changes nothing else.
+    std::vector<std::size_t> order(due.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return walkers[due[a]].last_expanded > walkers[due[b]].last_expanded;
+    });
+    workers.run(due.size(), [&](std::size_t job) {
+      const std::size_t k = order[job];
       attempts[k] = search(walkers[due[k]], planner, mesh, seen_by(walkers, due[k], at_tick, mesh));
     });
     for (std::size_t k = 0; k < due.size(); ++k) {
