@@ -205,12 +205,12 @@ MovingObstacles near(const std::vector<Walker>& walkers, std::size_t i, const Sn
 const AgentPlan* touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
                          const MovingObstacles& others) {
   const CharacterParams& c = planner.character();
-  const double my_top_speed = top_com_speed(trial);
+  const double my_top_speed = top_com_speed(trial, from);
   for (const AgentPlan* other : others) {
     const double end = std::max(trial.end_time(), other->end_time()) + kContactDt;
     // While the pair is far apart, instants they cannot close the distance
     // in are skipped (most of those checked are never near).
-    const double closing = (my_top_speed + top_com_speed(*other)) * kContactDt;
+    const double closing = (my_top_speed + top_com_speed(*other, from)) * kContactDt;
     // The gap where the trial starts (see touching()).
     double start_gap = std::numeric_limits<double>::infinity();
     const long first = first_contact_instant(from);

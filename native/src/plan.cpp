@@ -43,10 +43,12 @@ ComSample com_at(const AgentPlan& plan, double t) {
   return com_at(plan.footsteps[step_index(plan, t)], t);
 }
 
-double top_com_speed(const AgentPlan& plan) {
+double top_com_speed(const AgentPlan& plan, double from) {
   double speed = 0.0;
-  for (const Footstep& step : plan.footsteps)
-    speed = std::max({speed, length(step.com_velocity_start), length(step.com_velocity_end)});
+  if (plan.footsteps.empty()) return speed;
+  // From the step under way at `from`: a long plan's past costs nothing.
+  for (auto step = plan.footsteps.begin() + step_index(plan, from); step != plan.footsteps.end(); ++step)
+    speed = std::max({speed, length(step->com_velocity_start), length(step->com_velocity_end)});
   return speed;
 }
 

@@ -33,6 +33,7 @@ void SampledAgents::grow(long k) {
     shape_.insert(shape_.begin(), added, AgentShape{});
     rows_ += first_ - k;
     first_ = k;
+    std::fill(top_speed_stamp_.begin(), top_speed_stamp_.end(), 0);  // bounds from first_ on
   } else {
     rows_ = k - first_ + 1;
     where_.resize(static_cast<std::size_t>(rows_) * stride_);
@@ -66,7 +67,7 @@ void SampledAgents::fill(std::size_t j, long k, AgentShape& shape) const {
 }
 
 void SampledAgents::fill_top_speed(std::size_t j) {
-  top_speed_[j] = top_com_speed(*(*others_)[j]);
+  top_speed_[j] = top_com_speed(*(*others_)[j], static_cast<double>(first_) * kContactDt);
   top_speed_stamp_[j] = stamp_;
 }
 

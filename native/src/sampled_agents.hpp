@@ -48,7 +48,7 @@ class SampledAgents {
     if (shape.stamp != stamp_) fill(j, k, shape);
     return shape;
   }
-  /// top_com_speed of agent j's plan. [m/s]
+  /// top_com_speed of agent j's plan from the first instant on. [m/s]
   double top_speed(std::size_t j) {
     if (top_speed_stamp_[j] != stamp_) fill_top_speed(j);
     return top_speed_[j];

@@ -34,9 +34,10 @@ struct FootPose {
 /// COM of the agent at time `t` (before the first step: the start; after the
 /// last: where it ends).
 ComSample com_at(const AgentPlan& plan, double t);
-/// The largest COM speed anywhere in the plan (a step's is greatest at one of
-/// its ends): a bound for skipping ahead while two plans are far apart. [m/s]
-double top_com_speed(const AgentPlan& plan);
+/// The largest COM speed of the plan from time `from` on (a step's is
+/// greatest at one of its ends): a bound for skipping ahead while two plans
+/// are far apart. [m/s]
+double top_com_speed(const AgentPlan& plan, double from);
 
 /// Both feet at time `t`, indexed by Foot. The foot of the current step is
 /// planted; the other swings from where it was planted to where the next step
