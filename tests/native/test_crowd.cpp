@@ -126,6 +126,23 @@ TEST(Crowd, AgentsStandingShoulderToShoulderWalkOff) {
   plan_clear_of_each_other(scenario);
 }
 
+// Two agents face to face 0.6 m apart, each with its goal behind it. A walk
+// sets off along the facing, into the other: each must turn on the spot (a
+// pivot) before it can walk away.
+TEST(Crowd, AgentsFaceToFaceTurnOnTheSpotAndPart) {
+  Scenario scenario;
+  scenario.agents.push_back({"west", {0.0, 0.0}, 0.0, {{-6.0, 0.0}}});
+  scenario.agents.push_back({"east", {0.6, 0.0}, 3.14159265358979, {{6.0, 0.0}}});
+  const Plan plan = plan_clear_of_each_other(scenario);
+  for (const AgentPlan& agent : plan.agents) {
+    SCOPED_TRACE(agent.name);
+    ASSERT_FALSE(agent.footsteps.empty());
+    const Footstep& first = agent.footsteps.front();
+    EXPECT_EQ(first.kind, StepKind::kStop);
+    EXPECT_GT(std::fabs(wrap_angle(first.phi - agent.start.facing)), 0.5);
+  }
+}
+
 // The table-1 workloads come from seeded generators: valid scenes, the same
 // for the same seed, every agent where the generator says.
 TEST(Crowd, TableOneWorkloadsAreValidSeededScenes) {
