@@ -40,9 +40,10 @@ void bind_planner(py::module_& m) {
            py::keep_alive<1, 4>())  // the planner refers to the obstacle map
       .def("plan", &FootstepPlanner::plan, py::arg("start"), py::arg("goal"),
            py::arg("others") = MovingObstacles{}, py::arg("leaves") = false,
-           py::call_guard<py::gil_scoped_release>(),
+           py::arg("keep_out") = KeepOut{}, py::call_guard<py::gil_scoped_release>(),
            "Best-first search; `others`: agent plans to keep clear of as moving obstacles; "
-           "`leaves`: the character is gone at the goal, so needs no room to rest there.")
+           "`leaves`: the character is gone at the goal, so needs no room to rest there; "
+           "`keep_out`: circles its rests keep out of (a way another agent waits to take).")
       .def("heuristic", &FootstepPlanner::heuristic, py::arg("state"), py::arg("goal"))
       .def("expected_step_cost", &FootstepPlanner::expected_step_cost)
       .def("expected_step_length", &FootstepPlanner::expected_step_length)

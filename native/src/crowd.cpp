@@ -41,6 +41,8 @@ constexpr double kProgressInterval = 0.2;  ///< Between progress reports. [s]
 /// A new plan is checked against the agents this near now; none farther can
 /// reach it within a plan's few seconds. [m]
 constexpr double kCheckDistance = 40.0;
+/// Rests closer than this are the same place. [m]
+constexpr double kSamePlace = 0.01;
 /// Agents farther apart than this cannot touch. [m]
 constexpr double kNearAgent = 3.0;
 /// Longest single wait step. [s]
@@ -52,6 +54,11 @@ constexpr double kMaxWait = 5.0;
 /// for a way out ten times a second). [s]
 constexpr double kRetryAfter = 0.1;
 constexpr int kMaxBackoff = 3;
+/// How far along its wish a blocked agent asks others to make room. [m]
+constexpr double kWishReach = 2.5;
+/// Room to pass that the others leave beside a wish (more than a search's
+/// padding between samples). [m]
+constexpr double kWishPad = 0.05;
 
 void check_agent(const AgentSpec& agent) {
   if (agent.goals.empty()) throw std::invalid_argument("agent " + agent.name + ": has no goals");
@@ -75,6 +82,7 @@ struct Walker {
   std::size_t goal = 0;
   double retry_at = 0.0;  ///< No search before this time. [s]
   int failures = 0;        ///< Searches in a row that gave nothing to commit.
+  int blocked = 0;         ///< Searches in a row that committed no progress.
   int last_expanded = 0;   ///< Nodes its last search expanded: a guess at the next one's cost.
   double first_way = 0.0;  ///< Way to the current goal when it was first measured. [m]
   double best_way = std::numeric_limits<double>::infinity();  ///< Shortest way left so far. [m]
@@ -83,9 +91,23 @@ struct Walker {
   /// commit: seen or not, its searches avoid them (it has bumped into them).
   /// Without them, an agent that does not see who is in its way finds the
   /// same refused plan again at every retry.
-  MovingObstacles noticed;
+  std::vector<std::size_t> noticed;
+  /// Way left from `state`, at its last search: who goes first. [m]
+  double way = std::numeric_limits<double>::infinity();
+  /// While blocked, its wish: the first kWishReach of the way it would take
+  /// if the agents that go after it made room, as the torso circles it
+  /// sweeps (empty: none). Those standing there are asked to keep out.
+  KeepOut wish;
+  /// Agents whose wishes this one was asked to keep out of.
+  std::vector<std::size_t> yielding_to;
   bool done = false;
 };
+
+/// True if agent `a` goes before agent `b` where their ways cross: the one
+/// with less way left, then the earlier in the scenario.
+bool goes_first(const std::vector<Walker>& walkers, std::size_t a, std::size_t b) {
+  return walkers[a].way < walkers[b].way || (walkers[a].way == walkers[b].way && a < b);
+}
 
 /// True if steps that reach the walker's current goal end its walk there.
 bool leaves_now(const Walker& w, bool reached) {
@@ -99,6 +121,9 @@ struct Attempt {
   Rest rest;  ///< After the steps, among the agents the search saw.
   bool reached = false;  ///< The steps reach the current goal itself.
   double way_left = 0.0;
+  double way_from = 0.0;  ///< Way left at the start. [m]
+  /// The agent's wish (Walker::wish), when it is blocked; empty otherwise.
+  KeepOut wish;
   int nodes_generated = 0, nodes_expanded = 0;
   bool searched = false;
 };
@@ -121,43 +146,45 @@ Snapshot snapshot(const std::vector<Walker>& walkers, double t) {
   return s;
 }
 
-/// The plans of the agents that agent `i` sees at the snapshot's time (within
+/// The agents that agent `i` sees at the snapshot's time (within
 /// kViewDistance, in front of its torso, and with a clear line of sight),
-/// and of those it has noticed.
-MovingObstacles seen_by(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now,
-                        const NavMesh* mesh) {
+/// those it has noticed, and those whose wishes it keeps out of.
+std::vector<std::size_t> seen_by(const std::vector<Walker>& walkers, std::size_t i,
+                                 const Snapshot& now, const NavMesh* mesh) {
   const Vec2 eye = now.com[i];
   const Vec2 ahead = unit(facing_at(walkers[i].plan, now.t));
-  MovingObstacles seen;
+  std::vector<std::size_t> seen;
   for (std::size_t j = 0; j < walkers.size(); ++j) {
     if (j == i || !now.present[j]) continue;
     const Vec2 them = now.com[j];
     const Vec2 d = them - eye;
     if (dot(d, d) > kViewDistance * kViewDistance || dot(d, ahead) <= 0.0) continue;
     if (mesh != nullptr && mesh->clearance_between(eye, them, 1e-9) < 1e-9) continue;
-    seen.push_back(&walkers[j].plan);
+    seen.push_back(j);
   }
-  for (const AgentPlan* other : walkers[i].noticed)
-    if (present_at(*other, now.t) && std::find(seen.begin(), seen.end(), other) == seen.end())
-      seen.push_back(other);
+  for (const auto& known : {walkers[i].noticed, walkers[i].yielding_to})
+    for (const std::size_t j : known)
+      if (now.present[j] && std::find(seen.begin(), seen.end(), j) == seen.end()) seen.push_back(j);
   return seen;
 }
 
 /// Cuts the attempt's steps back to the last state from which the agent
-/// comes to rest among `others`, free to set off again unless the steps
+/// comes to rest among `others`, outside `keep_out`, free to set off again unless the steps
 /// reach the goal (none left: it waits), and keeps that rest. Committed plans
 /// are checked with the agent standing after its rest, so the rest must be
 /// complete; and the next search starts there, so it must be able to set
 /// off: a rest in a door frame, facing a post, can leave every step blocked.
 void cut_to_rest(const FootstepPlanner& planner, const FootstepState& start,
-                 const MovingObstacles& others, Attempt& a) {
+                 const MovingObstacles& others, const KeepOut& keep_out, Attempt& a) {
   std::vector<FootstepState> states{start};
   for (const Footstep& step : a.steps) states.push_back(state_after(states.back(), step));
   std::size_t keep = a.steps.size();
   for (; keep > 0; --keep) {
     a.rest = planner.come_to_rest(states[keep], others);
     const bool at_goal = a.reached && keep == a.steps.size();
-    if (a.rest.complete && (at_goal || planner.free_to_set_off(a.rest.state))) break;
+    if (a.rest.complete && planner.keeps_out(a.rest.state, keep_out) &&
+        (at_goal || planner.free_to_set_off(a.rest.state)))
+      break;
   }
   if (keep == a.steps.size()) return;
   a.steps.resize(keep);
@@ -165,48 +192,100 @@ void cut_to_rest(const FootstepPlanner& planner, const FootstepState& start,
   a.reached = false;
 }
 
-/// The agent's next search: toward its local goal, among `others`.
-Attempt search(const Walker& w, const FootstepPlanner& planner, const NavMesh* mesh,
-               const MovingObstacles& others) {
+/// True while agent `w` shows a wish.
+bool wishing(const Walker& w) { return !w.wish.empty(); }
+
+/// The plans of agents `which`.
+MovingObstacles plans_of(const std::vector<Walker>& walkers, const std::vector<std::size_t>& which) {
+  MovingObstacles plans;
+  for (const std::size_t j : which) plans.push_back(&walkers[j].plan);
+  return plans;
+}
+
+/// The torso circles along `steps`, every kContactDt, until the COM is
+/// kWishReach from where it set off; grown by kWishPad, the room to pass.
+KeepOut swept_torso(const std::vector<Footstep>& steps, const CharacterParams& character) {
+  KeepOut circles;
+  for (const Footstep& step : steps) {
+    for (long k = first_contact_instant(step.start_time);
+         static_cast<double>(k) * kContactDt <= step.end_time; ++k) {
+      const Vec2 com = com_at(step, static_cast<double>(k) * kContactDt).position;
+      if (distance(com, steps.front().com_start) > kWishReach) return circles;
+      for (Circle circle : torso_circles(com, step.phi, character)) {
+        circle.radius += kWishPad;
+        circles.push_back(circle);
+      }
+    }
+  }
+  return circles;
+}
+
+/// Agent i's next search: toward its local goal, among the plans of the
+/// agents it sees (`seen`), resting out of the wishes of those it yields to.
+/// When it stands blocked after a search that gained nothing, also its
+/// wish: the same search among only those it sees that go first.
+Attempt search(const std::vector<Walker>& walkers, std::size_t i, const FootstepPlanner& planner,
+               const NavMesh* mesh, const std::vector<std::size_t>& seen) {
+  const Walker& w = walkers[i];
   const Vec2 goal = w.spec->goals[w.goal];
   const Way way = way_toward(mesh, planner.character(), w.state.com, goal);
   const LocalGoal target = local_goal(planner, mesh, way);
   // One that leaves at this goal needs no room to rest there.
-  const SearchResult result =
-      planner.plan(w.state, target.point, others, leaves_now(w, target.is_goal));
+  const bool leaves = leaves_now(w, target.is_goal);
+  KeepOut keep_out;
+  for (const std::size_t j : w.yielding_to)
+    keep_out.insert(keep_out.end(), walkers[j].wish.begin(), walkers[j].wish.end());
+  const MovingObstacles others = plans_of(walkers, seen);
+  const SearchResult result = planner.plan(w.state, target.point, others, leaves, keep_out);
   Attempt a;
   a.steps = result.footsteps;
   a.end = result.footsteps.empty() ? w.state : result.end_state;
   a.reached = result.status == Status::kSuccess && target.is_goal;
-  if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, others, a);
+  if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, others, keep_out, a);
   a.way_left = a.reached ? 0.0 : way_toward(mesh, planner.character(), a.end.com, goal).length;
+  a.way_from = way.length;
   a.nodes_generated = result.nodes_generated;
   a.nodes_expanded = result.nodes_expanded;
   a.searched = true;
+  const double min_progress = planner.params().min_progress;
+  if (w.blocked > 0 && w.state.standing() && !a.reached && a.way_left > way.length - min_progress) {
+    // Out of the wishes it yields to too: a wish may be the way out of
+    // another's, which those behind it make room for first.
+    std::vector<std::size_t> first;
+    for (const std::size_t j : seen)
+      if (goes_first(walkers, j, i)) first.push_back(j);
+    const SearchResult wish =
+        planner.plan(w.state, target.point, plans_of(walkers, first), leaves, keep_out);
+    const Vec2 from = w.state.com, to = wish.end_state.com;
+    const bool gains = distance(to, target.point) < distance(from, target.point) - min_progress;
+    const bool leaves_a_wish = !planner.keeps_out(w.state, keep_out) && distance(to, from) > min_progress;
+    if (gains || leaves_a_wish) a.wish = swept_torso(wish.footsteps, planner.character());
+  }
   return a;
 }
 
-/// The plans of every other agent within kCheckDistance of agent `i` at the
-/// snapshot's time, seen or not.
-MovingObstacles near(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now) {
-  MovingObstacles out;
+/// Every other agent within kCheckDistance of agent `i` at the snapshot's
+/// time, seen or not.
+std::vector<std::size_t> near(const std::vector<Walker>& walkers, std::size_t i,
+                              const Snapshot& now) {
+  std::vector<std::size_t> out;
   for (std::size_t j = 0; j < walkers.size(); ++j) {
     if (j != i && now.present[j] && distance(now.com[j], now.com[i]) <= kCheckDistance)
-      out.push_back(&walkers[j].plan);
+      out.push_back(j);
   }
   return out;
 }
 
-/// The first of `others` that `trial`, from time `from` on, touches (null if
-/// none) under the
-/// five-circle model that measures a plan (torso circles and planted feet;
+/// The index in `others` of the first that `trial`, from time `from` on,
+/// touches (-1 if none) under the five-circle model that measures a plan (torso circles and planted feet;
 /// after its last step a plan stands where it ends). Checked every kContactDt,
 /// the circles grown by half of both agents' travel in between.
-const AgentPlan* touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
-                         const MovingObstacles& others) {
+int touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
+            const MovingObstacles& others) {
   const CharacterParams& c = planner.character();
   const double my_top_speed = top_com_speed(trial, from);
-  for (const AgentPlan* other : others) {
+  for (std::size_t j = 0; j < others.size(); ++j) {
+    const AgentPlan* other = others[j];
     const double end = std::max(trial.end_time(), other->end_time()) + kContactDt;
     // While the pair is far apart, instants they cannot close the distance
     // in are skipped (most of those checked are never near).
@@ -230,10 +309,10 @@ const AgentPlan* touches(const AgentPlan& trial, double from, const FootstepPlan
       for (const Circle& theirs : collision_circles(*other, c, t))
         for (const Circle& circle : mine) gap.add(circle, theirs, pad);
       if (k == first && standing_still(length(me.velocity), length(them.velocity))) start_gap = gap.outright;
-      if (touching(gap, start_gap)) return other;
+      if (touching(gap, start_gap)) return static_cast<int>(j);
     }
   }
-  return nullptr;
+  return -1;
 }
 
 /// Lets the agent's provisional rest happen (it is no longer provisional),
@@ -279,12 +358,16 @@ bool stuck(const std::vector<Walker>& walkers, std::size_t i) {
   return true;
 }
 
-/// Adds the attempt's steps and a provisional rest after them to the
-/// walker's plan, in place of its old rest, if the plan then keeps clear of
-/// `others`, before and after they end; otherwise the old rest happens and the agent waits there. Then
-/// goals reached and progress.
-void commit(Walker& w, const Attempt& a, const FootstepPlanner& planner, double t,
-            const MovingObstacles& others) {
+/// The state agent `w` stands in after its plan.
+const FootstepState& rest_of(const Walker& w) { return w.resting > 0 ? w.rested : w.state; }
+
+/// Adds the attempt's steps and a provisional rest after them to agent i's
+/// plan, in place of its old rest, if the plan then keeps clear of the plans
+/// of agents `near`, before and after they end; otherwise the old rest
+/// happens and the agent waits there. Then goals reached and progress.
+void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a,
+            const FootstepPlanner& planner, double t, const std::vector<std::size_t>& near) {
+  Walker& w = walkers[i];
   if (a.searched) {
     ++w.plan.searches;
     w.plan.nodes_generated += a.nodes_generated;
@@ -311,9 +394,19 @@ void commit(Walker& w, const Attempt& a, const FootstepPlanner& planner, double 
     // foot (feet_at): that step's circles change with the new steps too.
     from = kept > 0 ? trial.footsteps[kept - 1].start_time : a.steps.front().start_time;
   }
-  const AgentPlan* touched = a.steps.empty() ? nullptr : touches(trial, from, planner, others);
-  if (touched != nullptr) w.noticed.push_back(touched);
-  if (a.steps.empty() || touched != nullptr) {
+  int touched = -1;
+  if (!a.steps.empty()) {
+    const MovingObstacles others = plans_of(walkers, near);
+    touched = touches(trial, from, planner, others);
+    // A new place to rest needs room among everyone, seen or not.
+    if (touched < 0 && !leaving && distance(rested.com, rest_of(w).com) > kSamePlace &&
+        !planner.stands_clear(rested, others)) {
+      for (std::size_t j = 0; j < near.size() && touched < 0; ++j)
+        if (!planner.stands_clear(rested, {others[j]})) touched = static_cast<int>(j);
+    }
+  }
+  if (touched >= 0) w.noticed.push_back(near[touched]);
+  if (a.steps.empty() || touched >= 0) {
     rest_until(w, planner, t);
     w.retry_at = t + kRetryAfter * (1 << std::min(w.failures++, kMaxBackoff));
     if (!(a.reached && a.steps.empty())) {  // at the goal already, or waiting
@@ -342,6 +435,27 @@ void commit(Walker& w, const Attempt& a, const FootstepPlanner& planner, double 
   w.first_way = 0.0;
   w.best_way = std::numeric_limits<double>::infinity();
   w.improved_at = w.state.time;
+}
+
+/// Shows agent i's wish, if its attempt found one and it is still blocked,
+/// to the agents `near` that go after it and rest in it: they keep out of it,
+/// searching again at the next tick. Otherwise withdraws it.
+void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a,
+               const FootstepPlanner& planner, double t, const std::vector<std::size_t>& near) {
+  Walker& w = walkers[i];
+  if (w.done || w.blocked == 0 || a.wish.empty()) {
+    w.wish.clear();
+    return;
+  }
+  w.wish = std::move(a.wish);
+  for (const std::size_t j : near) {
+    Walker& other = walkers[j];
+    if (other.done || goes_first(walkers, j, i) || planner.keeps_out(rest_of(other), w.wish))
+      continue;
+    if (std::find(other.yielding_to.begin(), other.yielding_to.end(), i) == other.yielding_to.end())
+      other.yielding_to.push_back(i);
+    other.retry_at = std::min(other.retry_at, t);
+  }
 }
 
 /// How far the walker is: its goals reached, and the way to the current one.
@@ -402,13 +516,26 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       return walkers[due[a]].last_expanded > walkers[due[b]].last_expanded;
     });
     workers.run(due.size(), [&](std::size_t job) {
-      const std::size_t k = order[job];
-      attempts[k] = search(walkers[due[k]], planner, mesh, seen_by(walkers, due[k], at_tick, mesh));
+      const std::size_t i = due[order[job]];
+      attempts[order[job]] = search(walkers, i, planner, mesh, seen_by(walkers, i, at_tick, mesh));
     });
     for (std::size_t k = 0; k < due.size(); ++k) {
-      Walker& w = walkers[due[k]];
-      commit(w, attempts[k], planner, t, near(walkers, due[k], at_tick));
-      if (!w.done && stuck(walkers, due[k])) {
+      const std::size_t i = due[k];
+      Walker& w = walkers[i];
+      const std::vector<std::size_t> close = near(walkers, i, at_tick);
+      // Those it yielded to and that no longer wish are let go.
+      w.yielding_to.erase(std::remove_if(w.yielding_to.begin(), w.yielding_to.end(),
+                                         [&](std::size_t r) { return !wishing(walkers[r]); }),
+                          w.yielding_to.end());
+      const Attempt& a = attempts[k];
+      commit(walkers, i, a, planner, t, close);
+      if (a.searched) {
+        w.way = a.way_from;
+        const bool gained = a.reached || a.way_left <= a.way_from - planner.params().min_progress;
+        w.blocked = w.failures == 0 && gained ? 0 : w.blocked + 1;
+      }
+      show_wish(walkers, i, attempts[k], planner, t, close);
+      if (!w.done && stuck(walkers, i)) {
         w.plan.reason = "stuck";
         w.done = true;
       }

@@ -25,6 +25,9 @@ constexpr double kCellHeading = 4.0 * kPi / 180.0;
 constexpr double kCellSpeed = 0.1;
 constexpr double kDuplicateTurn = 1e-3;  // [rad] goal-directed turn equal to a tabled one
 constexpr double kPivotTurn = 0.25 * kPi;  // [rad] the smaller pivot the search tries
+// A rest keeps this much room round its torso disc from others standing
+// still: packed tighter, a jam leaves no one room to pivot or step back. [m]
+constexpr double kRestRoom = 0.1;
 // Agents whose COMs are further apart cannot touch: every circle lies within
 // a stride and a foot of its COM. [m]
 constexpr double kNearAgent = 3.0;
@@ -222,11 +225,12 @@ bool FootstepPlanner::collides(const FootstepState& state) const {
 }
 
 bool FootstepPlanner::collides(const Footstep& step, const MovingObstacles& others) const {
-  return collides(step, sampled(others, character_, step.start_time));
+  return collides(step, sampled(others, character_, step.start_time), false);
 }
 
-bool FootstepPlanner::collides(const Footstep& step, detail::SampledAgents& others) const {
-  return hits_obstacles(step) || touches_agents(step, others);
+bool FootstepPlanner::collides(const Footstep& step, detail::SampledAgents& others,
+                               bool from_standing) const {
+  return hits_obstacles(step) || touches_agents(step, others, from_standing);
 }
 
 bool FootstepPlanner::hits_obstacles(const Footstep& step) const {
@@ -254,7 +258,8 @@ bool FootstepPlanner::hits_obstacles(const Footstep& step) const {
   return false;
 }
 
-bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents& others) const {
+bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents& others,
+                                     bool from_standing) const {
   // The contact instants while the step is under way; the one at its end
   // belongs to the next step.
   const long first = first_contact_instant(step.start_time);
@@ -274,6 +279,10 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
   }
   if (close.empty()) return false;
   const Circle foot{step.foot_position, character_.foot_radius};
+  // A step from standing that starts on an instant starts where the
+  // character stood: it stood still there, whatever speed the step sets off at.
+  const bool stood_at_first =
+      from_standing && std::fabs(static_cast<double>(first) * kContactDt - step.start_time) < 1e-9;
   // Per close agent, the gap at the step's first instant (see touching()).
   thread_local std::vector<double> start_gap;
   start_gap.assign(close.size(), std::numeric_limits<double>::infinity());
@@ -298,7 +307,8 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
         if (distance(foot.center, theirs.center) <= foot.radius + theirs.radius + pad) return true;
         for (const Circle& circle : torso) gap.add(circle, theirs, pad);
       }
-      if (k == first && standing_still(speed, them.speed)) start_gap[c] = gap.outright;
+      if (k == first && standing_still(stood_at_first ? 0.0 : speed, them.speed))
+        start_gap[c] = gap.outright;
       if (touching(gap, start_gap[c])) return true;
     }
   }
@@ -329,13 +339,18 @@ Rest FootstepPlanner::come_to_rest(const FootstepState& state,
 }
 
 bool FootstepPlanner::stands_clear(const FootstepState& state,
+                                   const MovingObstacles& others) const {
+  return stands_clear(state, sampled(others, character_, state.time));
+}
+
+bool FootstepPlanner::stands_clear(const FootstepState& state,
                                    detail::SampledAgents& others) const {
   // Room to turn on the spot, as room_to_turn() asks of static obstacles:
   // two agents resting face to face a few centimetres apart could never
   // step again, every turn swinging a shoulder into the other.
   std::vector<Circle> mine{{state.com, 0.5 * character_.torso_width}};
   for (const Vec2& foot : state.feet) mine.push_back({foot, character_.foot_radius});
-  double extent = 0.0;
+  double extent = mine.front().radius + kRestRoom;
   for (const Circle& circle : mine)
     extent = std::max(extent, distance(circle.center, state.com) + circle.radius);
   const long first = first_contact_instant(state.time);
@@ -354,9 +369,15 @@ bool FootstepPlanner::stands_clear(const FootstepState& state,
       const detail::AgentShape& shape = others.shape(j, k);
       const double pad = 0.5 * them.speed * kContactDt;
       if (k != first && distance(them.com, state.com) - extent - shape.extent - pad > 0.0) continue;
+      // Room kept from those standing still (the torso disc only).
+      const double room = standing_still(0.0, them.speed) ? kRestRoom : 0.0;
       Gap gap;
       for (int i = 0; i < shape.count; ++i)
-        for (const Circle& circle : mine) gap.add(circle, shape.circles[i], pad);
+        for (std::size_t m = 0; m < mine.size(); ++m) {
+          Circle circle = mine[m];
+          if (m == 0) circle.radius += room;
+          gap.add(circle, shape.circles[i], pad);
+        }
       if (k == first && standing_still(0.0, them.speed)) start_gap = gap.outright;
       if (touching(gap, start_gap)) return false;
     }
@@ -364,8 +385,27 @@ bool FootstepPlanner::stands_clear(const FootstepState& state,
   return true;
 }
 
+bool FootstepPlanner::rests_well(const FootstepState& state, detail::SampledAgents& others,
+                                 const KeepOut& keep_out, bool sets_off) const {
+  const Rest rest = come_to_rest(state, others);
+  return rest.complete && keeps_out(rest.state, keep_out) &&
+         (!sets_off || free_to_set_off(rest.state));
+}
+
 bool FootstepPlanner::room_to_turn(Vec2 com) const {
   return !obstacles_.overlaps({com, 0.5 * character_.torso_width});
+}
+
+bool FootstepPlanner::keeps_out(const FootstepState& rested, const KeepOut& keep_out) const {
+  if (keep_out.empty()) return true;
+  std::vector<Circle> mine{{rested.feet[0], character_.foot_radius},
+                           {rested.feet[1], character_.foot_radius}};
+  for (const Circle& circle : torso_circles(rested.com, rested.facing, character_))
+    mine.push_back(circle);
+  for (const Circle& circle : mine)
+    for (const Circle& disc : keep_out)
+      if (distance(circle.center, disc.center) < circle.radius + disc.radius) return false;
+  return true;
 }
 
 StepResult FootstepPlanner::stop_step(const FootstepState& state, double duration,
@@ -377,7 +417,8 @@ StepResult FootstepPlanner::stop_step(const FootstepState& state, double duratio
                                       detail::SampledAgents& others) const {
   StepResult stop = create_footstep(
       state, {StepKind::kStop, other(state.last_foot), state.facing, 0.0, duration}, character_);
-  if (stop.valid() && collides(stop.step, others)) stop.validity = StepValidity::kCollides;
+  if (stop.valid() && collides(stop.step, others, state.standing()))
+    stop.validity = StepValidity::kCollides;
   return stop;
 }
 
@@ -506,7 +547,8 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
 }
 
 SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
-                                   const MovingObstacles& others, bool leaves) const {
+                                   const MovingObstacles& others, bool leaves,
+                                   const KeepOut& keep_out) const {
   if (!in_world(start.com) || !is_finite(start.com_velocity) || !std::isfinite(start.facing) ||
       !in_world(start.feet[0]) || !in_world(start.feet[1]) || !std::isfinite(start.time)) {
     throw std::invalid_argument("start: the state must be finite and within 1e9 m of the origin");
@@ -542,13 +584,14 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     const int current = search.pop();
     // Collisions are checked lazily, when a node is taken off the open list:
     // most generated nodes are never expanded.
-    if (current != 0 && collides(step_to(search, current).step, search.others)) continue;
+    if (current != 0 && collides(step_to(search, current).step, search.others,
+                                 search.nodes[search.nodes[current].parent].state.standing()))
+      continue;
     ++result.nodes_expanded;
     // At the goal, and able to come to rest there among the others (whose
     // rests may already stand on it), unless it leaves there.
     if (distance(search.nodes[current].state.com, goal) <= params_.goal_tolerance &&
-        (current == 0 || leaves ||
-         come_to_rest(search.nodes[current].state, search.others).complete)) {
+        (current == 0 || leaves || rests_well(search.nodes[current].state, search.others, keep_out, false))) {
       goal_node = current;
       break;
     }
@@ -568,13 +611,14 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     result.status = Status::kPartial;
     std::stable_sort(closed.begin(), closed.end(),
                      [&](int a, int b) { return nodes[a].h < nodes[b].h; });
+    // A standing character goes only where it gets nearer, unless it stands
+    // where it must not stay (another waits to pass there).
+    const bool must_move = start.standing() && !keeps_out(start, keep_out);
     for (const int candidate : closed) {
-      if (!start.standing() || nodes[candidate].h < nodes[0].h) {
-        const Rest rest = come_to_rest(nodes[candidate].state, search.others);
-        if (rest.complete && free_to_set_off(rest.state)) {
-          end = candidate;
-          break;
-        }
+      if ((!start.standing() || must_move || nodes[candidate].h < nodes[0].h) &&
+          rests_well(nodes[candidate].state, search.others, keep_out, true)) {
+        end = candidate;
+        break;
       }
     }
     // Nothing better than the start: a standing character waits.

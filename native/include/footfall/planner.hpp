@@ -23,6 +23,10 @@ class SampledAgents;
 /// (section 4). They are taken to share the planner's character.
 using MovingObstacles = std::vector<const AgentPlan*>;
 
+/// Discs that a search's rests keep out of: the way another agent waits to
+/// take (the crowd's yielding). The steps may cross them.
+using KeepOut = std::vector<Circle>;
+
 /// Stop steps that bring a character to rest, and where they leave it.
 struct Rest {
   std::vector<Footstep> steps;
@@ -33,12 +37,14 @@ struct Rest {
 /// Result of one footstep search.
 struct SearchResult {
   /// kSuccess: the goal was reached, where the character can come to rest
-  /// among `others` (unless it leaves there). kPartial: the horizon was reached first
-  /// and `footsteps` lead to the closed node with the best heuristic among
-  /// those the character can come to rest from, free to set off again where
-  /// it rests (free_to_set_off; a single wait step when no node beats
-  /// a standing start). kNoPath: not even that is possible. kInvalidStart: the start
-  /// collides. kInvalidGoal: the goal lies inside an obstacle.
+  /// among `others`, outside the keep-out discs (unless it leaves there).
+  /// kPartial: the horizon was reached first and `footsteps` lead to the
+  /// closed node with the best heuristic among those the character can come
+  /// to rest from, outside the keep-out discs and free to set off again where
+  /// it rests (free_to_set_off). A standing start takes only a node nearer the
+  /// goal, unless it stands in a keep-out disc; with none, a single wait step.
+  /// kNoPath: not even that is possible. kInvalidStart: the start collides.
+  /// kInvalidGoal: the goal lies inside an obstacle.
   Status status = Status::kPartial;
   std::vector<Footstep> footsteps;  ///< The planned steps, in order.
   FootstepState end_state;          ///< State after the last step.
@@ -65,8 +71,9 @@ class FootstepPlanner {
   /// choose_foot_orientations once more over the whole chain. A character
   /// that `leaves` at the goal (gone after its last step) needs no room to
   /// come to rest there: in a crowd packed round a shared exit there is none.
+  /// Its rests keep out of `keep_out`.
   SearchResult plan(const FootstepState& start, Vec2 goal, const MovingObstacles& others = {},
-                    bool leaves = false) const;
+                    bool leaves = false, const KeepOut& keep_out = {}) const;
 
   /// Heuristic of equation 6: the cost of one normal step times the number of
   /// normal steps to the goal (the distance less the goal tolerance). [J]
@@ -91,9 +98,18 @@ class FootstepPlanner {
   /// complete only if the character, standing there, keeps room to turn on
   /// the spot among `others` while their plans last.
   Rest come_to_rest(const FootstepState& state, const MovingObstacles& others = {}) const;
+  /// True if the character, standing at `state` from its time on, keeps
+  /// clear of `others` while their plans last (after them, they stand too),
+  /// with room to turn: a disc half the torso width round its COM, grown by
+  /// 0.1 m against those standing still. A rest complete among `others`
+  /// (come_to_rest) stands clear of them.
+  bool stands_clear(const FootstepState& state, const MovingObstacles& others) const;
   /// True if a character standing with its COM at `com` could turn on the
   /// spot: no static obstacle within half the torso width.
   bool room_to_turn(Vec2 com) const;
+  /// True if a character standing at `rested` keeps out of every disc of
+  /// `keep_out`: none of its five circles overlaps one.
+  bool keeps_out(const FootstepState& rested, const KeepOut& keep_out) const;
   /// True if a character standing at `rested` has room to turn and can set
   /// off: one of the tabled walking steps or pivots from there is clear of
   /// the static obstacles. A search that ends short of its goal ends where
@@ -126,16 +142,19 @@ class FootstepPlanner {
   template <class Visit>
   bool tabled_walks(const FootstepState& state, Foot foot, Visit&& visit) const;
   // The checks against other agents, reading `others` sampled once per search.
-  bool collides(const Footstep& step, detail::SampledAgents& others) const;
+  // `from_standing`: the step sets off from a standing state.
+  bool collides(const Footstep& step, detail::SampledAgents& others, bool from_standing) const;
   bool hits_obstacles(const Footstep& step) const;
-  bool touches_agents(const Footstep& step, detail::SampledAgents& others) const;
+  bool touches_agents(const Footstep& step, detail::SampledAgents& others,
+                      bool from_standing) const;
   Rest come_to_rest(const FootstepState& state, detail::SampledAgents& others) const;
-  // True if the character, standing at `state` from its time on, keeps clear
-  // of `others` with room to turn (a disc half the torso width around its
-  // COM) while their plans last (after them, they stand too).
   bool stands_clear(const FootstepState& state, detail::SampledAgents& others) const;
   StepResult stop_step(const FootstepState& state, double duration,
                        detail::SampledAgents& others) const;
+  // True if the character comes to rest from `state` among `others`, outside
+  // `keep_out`, and (when `sets_off`) free to set off from there.
+  bool rests_well(const FootstepState& state, detail::SampledAgents& others,
+                  const KeepOut& keep_out, bool sets_off) const;
   StepResult step_to(const Search& search, int index) const;
 
   CharacterParams character_;
