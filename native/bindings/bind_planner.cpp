@@ -38,7 +38,12 @@ void bind_planner(py::module_& m) {
       .def(py::init<const CharacterParams&, const PlannerParams&, const ObstacleMap&>(),
            py::arg("character"), py::arg("planner"), py::arg("obstacles"),
            py::keep_alive<1, 4>())  // the planner refers to the obstacle map
-      .def("plan", &FootstepPlanner::plan, py::arg("start"), py::arg("goal"),
+      .def("plan",
+           [](const FootstepPlanner& planner, const FootstepState& start, Vec2 goal,
+              const MovingObstacles& others, bool leaves, const KeepOut& keep_out) {
+             return planner.plan(start, goal, others, {leaves, keep_out});
+           },
+           py::arg("start"), py::arg("goal"),
            py::arg("others") = MovingObstacles{}, py::arg("leaves") = false,
            py::arg("keep_out") = KeepOut{}, py::call_guard<py::gil_scoped_release>(),
            "Best-first search; `others`: agent plans to keep clear of as moving obstacles; "

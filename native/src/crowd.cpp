@@ -41,6 +41,12 @@ constexpr double kProgressInterval = 0.2;  ///< Between progress reports. [s]
 /// A new plan is checked against the agents this near now; none farther can
 /// reach it within a plan's few seconds. [m]
 constexpr double kCheckDistance = 40.0;
+/// Nodes a blocked agent's search expands at most (after two searches in a
+/// row that gained nothing).
+constexpr int kBlockedHorizon = 100;
+constexpr double kForever = std::numeric_limits<double>::infinity();
+/// A blocked agent searches again only if something within this changed. [m]
+constexpr double kFreezeRadius = 5.0;
 /// Rests closer than this are the same place. [m]
 constexpr double kSamePlace = 0.01;
 /// Agents farther apart than this cannot touch. [m]
@@ -56,6 +62,8 @@ constexpr double kRetryAfter = 0.1;
 constexpr int kMaxBackoff = 3;
 /// How far along its wish a blocked agent asks others to make room. [m]
 constexpr double kWishReach = 2.5;
+/// About as far as an agent's circles reach from its COM. [m]
+constexpr double kBodyLength = 1.0;
 /// Room to pass that the others leave beside a wish (more than a search's
 /// padding between samples). [m]
 constexpr double kWishPad = 0.05;
@@ -83,14 +91,19 @@ struct Walker {
   double retry_at = 0.0;  ///< No search before this time. [s]
   int failures = 0;        ///< Searches in a row that gave nothing to commit.
   int blocked = 0;         ///< Searches in a row that committed no progress.
+  double searched_at = -kForever;  ///< Tick of its last search. [s]
+  double committed_at = -kForever;  ///< Tick its plan last changed by a commit. [s]
+  /// Tick it was last asked to make room, or noticed an agent. [s]
+  double news_at = -kForever;
   int last_expanded = 0;   ///< Nodes its last search expanded: a guess at the next one's cost.
   double first_way = 0.0;  ///< Way to the current goal when it was first measured. [m]
   double best_way = std::numeric_limits<double>::infinity();  ///< Shortest way left so far. [m]
   double improved_at = 0.0;  ///< Plan time when best_way last shortened by min_progress. [s]
-  /// Agents a plan of this one's was refused for touching since its last
-  /// commit: seen or not, its searches avoid them (it has bumped into them).
-  /// Without them, an agent that does not see who is in its way finds the
-  /// same refused plan again at every retry.
+  /// Agents a plan of this one's was refused for touching (or for resting
+  /// too close to), while they stay within kNearAgent: seen or not, its
+  /// searches avoid them (it has bumped into them). Without them, an agent
+  /// that does not see who is in its way finds the same refused plan again
+  /// at every retry.
   std::vector<std::size_t> noticed;
   /// Way left from `state`, at its last search: who goes first. [m]
   double way = std::numeric_limits<double>::infinity();
@@ -222,10 +235,11 @@ KeepOut swept_torso(const std::vector<Footstep>& steps, const CharacterParams& c
 
 /// Agent i's next search: toward its local goal, among the plans of the
 /// agents it sees (`seen`), resting out of the wishes of those it yields to.
-/// When it stands blocked after a search that gained nothing, also its
-/// wish: the same search among only those it sees that go first.
+/// When it stands blocked after a search that gained nothing, with one that
+/// goes after it near, also its wish: the same search among only those it
+/// sees that go first.
 Attempt search(const std::vector<Walker>& walkers, std::size_t i, const FootstepPlanner& planner,
-               const NavMesh* mesh, const std::vector<std::size_t>& seen) {
+               const NavMesh* mesh, const std::vector<std::size_t>& seen, const Snapshot& now) {
   const Walker& w = walkers[i];
   const Vec2 goal = w.spec->goals[w.goal];
   const Way way = way_toward(mesh, planner.character(), w.state.com, goal);
@@ -236,7 +250,10 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   for (const std::size_t j : w.yielding_to)
     keep_out.insert(keep_out.end(), walkers[j].wish.begin(), walkers[j].wish.end());
   const MovingObstacles others = plans_of(walkers, seen);
-  const SearchResult result = planner.plan(w.state, target.point, others, leaves, keep_out);
+  // A blocked agent looks less far ahead: in a jam the full horizon finds
+  // no more than waiting, at the most cost.
+  const SearchOptions options{leaves, keep_out, w.blocked >= 2 ? kBlockedHorizon : 0};
+  const SearchResult result = planner.plan(w.state, target.point, others, options);
   Attempt a;
   a.steps = result.footsteps;
   a.end = result.footsteps.empty() ? w.state : result.end_state;
@@ -248,14 +265,22 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   a.nodes_expanded = result.nodes_expanded;
   a.searched = true;
   const double min_progress = planner.params().min_progress;
-  if (w.blocked > 0 && w.state.standing() && !a.reached && a.way_left > way.length - min_progress) {
+  // Those it sees that go first; a wish is worth a search only if one that
+  // goes after it stands near enough to be in its way.
+  std::vector<std::size_t> first;
+  bool asks_someone = false;
+  for (const std::size_t j : seen) {
+    if (goes_first(walkers, j, i))
+      first.push_back(j);
+    else
+      asks_someone = asks_someone || distance(now.com[j], now.com[i]) <= kWishReach + kBodyLength;
+  }
+  if (asks_someone && w.blocked > 0 && w.state.standing() && !a.reached &&
+      a.way_left > way.length - min_progress) {
     // Out of the wishes it yields to too: a wish may be the way out of
     // another's, which those behind it make room for first.
-    std::vector<std::size_t> first;
-    for (const std::size_t j : seen)
-      if (goes_first(walkers, j, i)) first.push_back(j);
     const SearchResult wish =
-        planner.plan(w.state, target.point, plans_of(walkers, first), leaves, keep_out);
+        planner.plan(w.state, target.point, plans_of(walkers, first), options);
     const Vec2 from = w.state.com, to = wish.end_state.com;
     const bool gains = distance(to, target.point) < distance(from, target.point) - min_progress;
     const bool leaves_a_wish = !planner.keeps_out(w.state, keep_out) && distance(to, from) > min_progress;
@@ -358,6 +383,38 @@ bool stuck(const std::vector<Walker>& walkers, std::size_t i) {
   return true;
 }
 
+/// True if `step` neither moves the COM nor turns the torso from `facing`.
+bool still(const Footstep& step, double facing) {
+  return step.kind == StepKind::kStop && step.phi == facing &&
+         length(step.com_velocity_start) == 0.0 && length(step.com_velocity_end) == 0.0;
+}
+
+/// True if `plan` stands still from time `from` on.
+bool still_from(const AgentPlan& plan, double from) {
+  const double facing = facing_at(plan, from);
+  for (auto step = plan.footsteps.rbegin(); step != plan.footsteps.rend() && step->end_time > from;
+       ++step) {
+    if (!still(*step, facing)) return false;
+  }
+  return true;
+}
+
+/// True if a search by agent i now would see what its last one saw, which
+/// gained nothing: no one asked it to make room nor was noticed since, and
+/// everyone within kFreezeRadius (or gone from there) has neither committed
+/// since nor moved from then on. In a jam most agents wait behind others
+/// that wait; their searches, each to the horizon, would cost the most.
+bool nothing_new(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now) {
+  const Walker& w = walkers[i];
+  if (w.blocked == 0 || w.news_at >= w.searched_at) return false;
+  for (std::size_t j = 0; j < walkers.size(); ++j) {
+    if (j == i || distance(now.com[j], now.com[i]) > kFreezeRadius) continue;
+    if (walkers[j].committed_at >= w.searched_at || !still_from(walkers[j].plan, w.searched_at))
+      return false;
+  }
+  return true;
+}
+
 /// The state agent `w` stands in after its plan.
 const FootstepState& rest_of(const Walker& w) { return w.resting > 0 ? w.rested : w.state; }
 
@@ -405,7 +462,10 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a,
         if (!planner.stands_clear(rested, {others[j]})) touched = static_cast<int>(j);
     }
   }
-  if (touched >= 0) w.noticed.push_back(near[touched]);
+  if (touched >= 0) {
+    w.noticed.push_back(near[touched]);
+    w.news_at = t;
+  }
   if (a.steps.empty() || touched >= 0) {
     rest_until(w, planner, t);
     w.retry_at = t + kRetryAfter * (1 << std::min(w.failures++, kMaxBackoff));
@@ -414,8 +474,19 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a,
       return;
     }
   } else {
+    // Waiting on where it stands is no news to the others.
+    if (!std::all_of(steps.begin(), steps.end(),
+                     [&](const Footstep& step) { return still(step, w.state.facing); }))
+      w.committed_at = t;
     w.failures = 0;
-    w.noticed.clear();
+    // Those noticed stay in mind while they are near.
+    const Vec2 here = com_at(w.plan, t).position;
+    w.noticed.erase(std::remove_if(w.noticed.begin(), w.noticed.end(),
+                                   [&](std::size_t j) {
+                                     return distance(com_at(walkers[j].plan, t).position, here) >
+                                            kNearAgent;
+                                   }),
+                    w.noticed.end());
     w.plan.footsteps = std::move(trial.footsteps);
     w.resting = steps.size() - a.steps.size();
     w.state = a.end;
@@ -452,9 +523,11 @@ void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a,
     Walker& other = walkers[j];
     if (other.done || goes_first(walkers, j, i) || planner.keeps_out(rest_of(other), w.wish))
       continue;
-    if (std::find(other.yielding_to.begin(), other.yielding_to.end(), i) == other.yielding_to.end())
-      other.yielding_to.push_back(i);
+    if (std::find(other.yielding_to.begin(), other.yielding_to.end(), i) != other.yielding_to.end())
+      continue;  // asked before
+    other.yielding_to.push_back(i);
     other.retry_at = std::min(other.retry_at, t);
+    other.news_at = t;
   }
 }
 
@@ -515,9 +588,11 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
       return walkers[due[a]].last_expanded > walkers[due[b]].last_expanded;
     });
+    std::vector<char> idle(due.size());
+    for (std::size_t k = 0; k < due.size(); ++k) idle[k] = nothing_new(walkers, due[k], at_tick);
     workers.run(due.size(), [&](std::size_t job) {
-      const std::size_t i = due[order[job]];
-      attempts[order[job]] = search(walkers, i, planner, mesh, seen_by(walkers, i, at_tick, mesh));
+      const std::size_t k = order[job], i = due[k];
+      if (!idle[k]) attempts[k] = search(walkers, i, planner, mesh, seen_by(walkers, i, at_tick, mesh), at_tick);
     });
     for (std::size_t k = 0; k < due.size(); ++k) {
       const std::size_t i = due[k];
@@ -530,6 +605,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       const Attempt& a = attempts[k];
       commit(walkers, i, a, planner, t, close);
       if (a.searched) {
+        w.searched_at = t;
         w.way = a.way_from;
         const bool gained = a.reached || a.way_left <= a.way_from - planner.params().min_progress;
         w.blocked = w.failures == 0 && gained ? 0 : w.blocked + 1;

@@ -547,8 +547,11 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
 }
 
 SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
-                                   const MovingObstacles& others, bool leaves,
-                                   const KeepOut& keep_out) const {
+                                   const MovingObstacles& others,
+                                   const SearchOptions& options) const {
+  if (options.horizon < 0) throw std::invalid_argument("horizon: must be >= 0");
+  const int horizon = options.horizon > 0 ? options.horizon : params_.max_expansions;
+  const KeepOut& keep_out = options.keep_out;
   if (!in_world(start.com) || !is_finite(start.com_velocity) || !std::isfinite(start.facing) ||
       !in_world(start.feet[0]) || !in_world(start.feet[1]) || !std::isfinite(start.time)) {
     throw std::invalid_argument("start: the state must be finite and within 1e9 m of the origin");
@@ -580,7 +583,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
 
   int goal_node = -1;
   std::vector<int> closed;  // expanded nodes, the root excluded
-  while (!search.open.empty() && result.nodes_expanded < params_.max_expansions) {
+  while (!search.open.empty() && result.nodes_expanded < horizon) {
     const int current = search.pop();
     // Collisions are checked lazily, when a node is taken off the open list:
     // most generated nodes are never expanded.
@@ -591,7 +594,8 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     // At the goal, and able to come to rest there among the others (whose
     // rests may already stand on it), unless it leaves there.
     if (distance(search.nodes[current].state.com, goal) <= params_.goal_tolerance &&
-        (current == 0 || leaves || rests_well(search.nodes[current].state, search.others, keep_out, false))) {
+        (current == 0 || options.leaves ||
+         rests_well(search.nodes[current].state, search.others, keep_out, false))) {
       goal_node = current;
       break;
     }

@@ -27,6 +27,17 @@ using MovingObstacles = std::vector<const AgentPlan*>;
 /// take (the crowd's yielding). The steps may cross them.
 using KeepOut = std::vector<Circle>;
 
+/// What one search is asked besides reaching its goal.
+struct SearchOptions {
+  /// The character is gone at the goal (after its last step), so needs no
+  /// room to come to rest there: in a crowd packed round a shared exit there
+  /// is none.
+  bool leaves = false;
+  KeepOut keep_out;  ///< Discs its rests keep out of.
+  /// Nodes expanded at most; 0: the planner's max_expansions. [>= 0]
+  int horizon = 0;
+};
+
 /// Stop steps that bring a character to rest, and where they leave it.
 struct Rest {
   std::vector<Footstep> steps;
@@ -68,12 +79,9 @@ class FootstepPlanner {
   /// Throws std::invalid_argument for a non-finite or far-away start or goal.
   /// The foot orientations of the result are chosen by the post-process over
   /// these steps alone; a caller that chains searches runs
-  /// choose_foot_orientations once more over the whole chain. A character
-  /// that `leaves` at the goal (gone after its last step) needs no room to
-  /// come to rest there: in a crowd packed round a shared exit there is none.
-  /// Its rests keep out of `keep_out`.
+  /// choose_foot_orientations once more over the whole chain.
   SearchResult plan(const FootstepState& start, Vec2 goal, const MovingObstacles& others = {},
-                    bool leaves = false, const KeepOut& keep_out = {}) const;
+                    const SearchOptions& options = {}) const;
 
   /// Heuristic of equation 6: the cost of one normal step times the number of
   /// normal steps to the goal (the distance less the goal tolerance). [J]
