@@ -235,16 +235,20 @@ bool FootstepPlanner::collides(const Footstep& step, detail::SampledAgents& othe
 
 bool FootstepPlanner::hits_obstacles(const Footstep& step) const {
   if (obstacles_.overlaps({step.foot_position, character_.foot_radius})) return true;
-  const double spacing = params_.collision_sample_spacing;
-  const double pad = 0.5 * spacing;
-  thread_local std::vector<int> near;
-  near.clear();
-  obstacles_.gather(sweep_bound(step, character_, pad), near);
-  if (near.empty()) return false;
   // Samples no further apart along the COM path than `spacing`: the path is
   // never longer than speed * time between samples, where the COM speed of a
   // walking step is at most its speed at either end.
   const double top_speed = std::max(length(step.com_velocity_start), length(step.com_velocity_end));
+  const double spacing = params_.collision_sample_spacing;
+  // The circles are grown by half the spacing, the COM's travel to the
+  // nearest sample. A step that does not move the COM (a wait, or a pivot,
+  // whose shoulders swing within the room to turn its rest kept) needs none:
+  // grown, a pivot by a wall it stands 0.3 m from would never be clear.
+  const double pad = top_speed > 0.0 ? 0.5 * spacing : 0.0;
+  thread_local std::vector<int> near;
+  near.clear();
+  obstacles_.gather(sweep_bound(step, character_, pad), near);
+  if (near.empty()) return false;
   const int samples =
       std::max(1, static_cast<int>(std::ceil(top_speed * step.duration() / spacing)));
   const double dt = step.duration() / samples;

@@ -209,6 +209,34 @@ TEST(Planner, StandingCharacterWithNowhereToGoWaits) {
   EXPECT_EQ(result.footsteps[0].kind, StepKind::kStop);
 }
 
+// At the end of a corridor 0.9 m wide, against its end wall, the goal
+// beyond it: nothing gets (much) nearer, so the character stays, unless it
+// stands in a keep-out disc (the way another agent waits to take): then it
+// goes back out of it to rest.
+TEST(Planner, AStandingCharacterLeavesAKeepOutDisc) {
+  const CharacterParams character;
+  const std::vector<Obstacle> pocket = {box_obstacle({0.6, 0}, {0.2, 3.0}),
+                                        box_obstacle({-1.0, 0.55}, {3.0, 0.2}),
+                                        box_obstacle({-1.0, -0.55}, {3.0, 0.2})};
+  const ObstacleMap map(pocket);
+  const FootstepPlanner planner(character, PlannerParams{}, map);
+  const FootstepState start = standing_state({0.15, 0}, 0, character);  // 0.35 m from the wall
+  SearchOptions options;
+  options.keep_out = {{{0.15, 0.0}, 0.5}};
+  EXPECT_FALSE(planner.keeps_out(start, options.keep_out));
+  // Without the disc it stays at the wall (or gets a shade nearer).
+  const SearchResult stays = planner.plan(start, {5, 0});
+  EXPECT_GE(stays.end_state.com.x, start.com.x);
+  EXPECT_FALSE(planner.keeps_out(stays.end_state, options.keep_out));
+  const SearchResult leaves = planner.plan(start, {5, 0}, {}, options);
+  EXPECT_EQ(leaves.status, Status::kPartial);
+  ASSERT_FALSE(leaves.footsteps.empty());
+  const Rest rest = planner.come_to_rest(leaves.end_state);
+  ASSERT_TRUE(rest.complete);
+  EXPECT_TRUE(planner.keeps_out(rest.state, options.keep_out));
+  for (const Footstep& step : leaves.footsteps) EXPECT_FALSE(planner.collides(step));
+}
+
 TEST(Planner, ReportsInvalidStartAndGoal) {
   const CharacterParams character;
   const ObstacleMap map({box_obstacle({3, 0}, {1, 1})});

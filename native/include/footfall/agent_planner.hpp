@@ -78,7 +78,9 @@ inline bool present_at(const AgentPlan& plan, double t) { return !plan.leaves ||
 /// Agents plan among the plans of the agents they see (within 30 m, in front
 /// of the torso, with a clear line of sight), which they keep clear of as
 /// moving obstacles, and replan 1 s before their plan runs out (0.1 s after a
-/// search that gave nothing to commit); a 20 Hz tick decides who replans when. Waiting is a valid answer. A reached last goal
+/// search that gave nothing to commit); a 20 Hz tick decides who replans when. Waiting is a valid
+/// answer; a blocked agent asks those with more way left that stand in its
+/// way to step out of it (yielding, docs/footstep-model.md). A reached last goal
 /// ends in a stop step, or for an agent that leaves at it, in the step that
 /// reaches it; an agent whose way has not shortened by min_progress
 /// for 15 s is "stuck"; the walk also ends at max_time ("time limit") or on
