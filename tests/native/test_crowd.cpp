@@ -143,6 +143,13 @@ TEST(Crowd, AgentsFaceToFaceTurnOnTheSpotAndPart) {
   }
 }
 
+// Twenty agents leave a room by one door 1.2 m wide: every one gets out.
+// Before yielding (one blocked asks those behind it in its way to step out
+// of it) and room at rest, three of them jammed in the door for good.
+TEST(Crowd, AnEgressThroughOneDoorClears) {
+  plan_clear_of_each_other(egress_scenario(20, 3));
+}
+
 // The table-1 workloads come from seeded generators: valid scenes, the same
 // for the same seed, every agent where the generator says.
 TEST(Crowd, TableOneWorkloadsAreValidSeededScenes) {
