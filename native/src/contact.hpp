@@ -17,6 +17,10 @@ namespace footfall {
 /// with the others. [s]
 constexpr double kContactDt = 0.05;
 
+/// A rest keeps this much room round its torso disc from others standing
+/// still: packed tighter, a jam leaves no one room to pivot or step back. [m]
+constexpr double kRestRoom = 0.1;
+
 /// The first instant of the contact grid at or after time t (within 1 ns).
 inline long first_contact_instant(double t) {
   return static_cast<long>(std::ceil(t / kContactDt - 1e-9));

@@ -108,8 +108,8 @@ struct Walker {
   /// Way left from `state`, at its last search: who goes first. [m]
   double way = std::numeric_limits<double>::infinity();
   /// While blocked, its wish: the first kWishReach of the way it would take
-  /// if the agents that go after it made room, as the torso circles it
-  /// sweeps (empty: none). Those standing there are asked to keep out.
+  /// if the agents that go after it made room, as the circles it sweeps
+  /// (wish_discs; empty: none). Those resting there are asked to keep out.
   KeepOut wish;
   /// Agents whose wishes this one was asked to keep out of.
   std::vector<std::size_t> yielding_to;
@@ -215,22 +215,27 @@ MovingObstacles plans_of(const std::vector<Walker>& walkers, const std::vector<s
   return plans;
 }
 
-/// The torso circles along `steps`, every kContactDt, until the COM is
-/// kWishReach from where it set off; grown by kWishPad, the room to pass.
-KeepOut swept_torso(const std::vector<Footstep>& steps, const CharacterParams& character) {
-  KeepOut circles;
+/// What a wish along `steps` keeps others out of, until its COM is
+/// kWishReach from where it set off: the torso circles every kContactDt and
+/// the planted feet, grown by kWishPad (room to pass); and where the steps
+/// end, if within reach, room to rest.
+KeepOut wish_discs(const std::vector<Footstep>& steps, const CharacterParams& character) {
+  KeepOut discs;
+  const Vec2 from = steps.front().com_start;
   for (const Footstep& step : steps) {
+    discs.push_back({step.foot_position, character.foot_radius + kWishPad});
     for (long k = first_contact_instant(step.start_time);
          static_cast<double>(k) * kContactDt <= step.end_time; ++k) {
       const Vec2 com = com_at(step, static_cast<double>(k) * kContactDt).position;
-      if (distance(com, steps.front().com_start) > kWishReach) return circles;
+      if (distance(com, from) > kWishReach) return discs;
       for (Circle circle : torso_circles(com, step.phi, character)) {
         circle.radius += kWishPad;
-        circles.push_back(circle);
+        discs.push_back(circle);
       }
     }
   }
-  return circles;
+  discs.push_back({steps.back().com_end, 0.5 * character.torso_width + kRestRoom});
+  return discs;
 }
 
 /// Agent i's next search: toward its local goal, among the plans of the
@@ -284,7 +289,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
     const Vec2 from = w.state.com, to = wish.end_state.com;
     const bool gains = distance(to, target.point) < distance(from, target.point) - min_progress;
     const bool leaves_a_wish = !planner.keeps_out(w.state, keep_out) && distance(to, from) > min_progress;
-    if (gains || leaves_a_wish) a.wish = swept_torso(wish.footsteps, planner.character());
+    if (gains || leaves_a_wish) a.wish = wish_discs(wish.footsteps, planner.character());
   }
   return a;
 }

@@ -25,9 +25,6 @@ constexpr double kCellHeading = 4.0 * kPi / 180.0;
 constexpr double kCellSpeed = 0.1;
 constexpr double kDuplicateTurn = 1e-3;  // [rad] goal-directed turn equal to a tabled one
 constexpr double kPivotTurn = 0.25 * kPi;  // [rad] the smaller pivot the search tries
-// A rest keeps this much room round its torso disc from others standing
-// still: packed tighter, a jam leaves no one room to pivot or step back. [m]
-constexpr double kRestRoom = 0.1;
 // Agents whose COMs are further apart cannot touch: every circle lies within
 // a stride and a foot of its COM. [m]
 constexpr double kNearAgent = 3.0;
@@ -390,10 +387,9 @@ bool FootstepPlanner::stands_clear(const FootstepState& state,
 }
 
 bool FootstepPlanner::rests_well(const FootstepState& state, detail::SampledAgents& others,
-                                 const KeepOut& keep_out, bool sets_off) const {
+                                 const KeepOut& keep_out) const {
   const Rest rest = come_to_rest(state, others);
-  return rest.complete && keeps_out(rest.state, keep_out) &&
-         (!sets_off || free_to_set_off(rest.state));
+  return rest.complete && keeps_out(rest.state, keep_out) && free_to_set_off(rest.state);
 }
 
 bool FootstepPlanner::room_to_turn(Vec2 com) const {
@@ -596,10 +592,11 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
       continue;
     ++result.nodes_expanded;
     // At the goal, and able to come to rest there among the others (whose
-    // rests may already stand on it), unless it leaves there.
+    // rests may already stand on it), free to set off again (a local goal is
+    // where the next search starts), unless it leaves there.
     if (distance(search.nodes[current].state.com, goal) <= params_.goal_tolerance &&
         (current == 0 || options.leaves ||
-         rests_well(search.nodes[current].state, search.others, keep_out, false))) {
+         rests_well(search.nodes[current].state, search.others, keep_out))) {
       goal_node = current;
       break;
     }
@@ -624,7 +621,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     const bool must_move = start.standing() && !keeps_out(start, keep_out);
     for (const int candidate : closed) {
       if ((!start.standing() || must_move || nodes[candidate].h < nodes[0].h) &&
-          rests_well(nodes[candidate].state, search.others, keep_out, true)) {
+          rests_well(nodes[candidate].state, search.others, keep_out)) {
         end = candidate;
         break;
       }

@@ -48,7 +48,8 @@ struct Rest {
 /// Result of one footstep search.
 struct SearchResult {
   /// kSuccess: the goal was reached, where the character can come to rest
-  /// among `others`, outside the keep-out discs (unless it leaves there).
+  /// among `others`, outside the keep-out discs, free to set off again
+  /// (unless it leaves there).
   /// kPartial: the horizon was reached first and `footsteps` lead to the
   /// closed node with the best heuristic among those the character can come
   /// to rest from, outside the keep-out discs and free to set off again where
@@ -160,9 +161,9 @@ class FootstepPlanner {
   StepResult stop_step(const FootstepState& state, double duration,
                        detail::SampledAgents& others) const;
   // True if the character comes to rest from `state` among `others`, outside
-  // `keep_out`, and (when `sets_off`) free to set off from there.
+  // `keep_out`, free to set off from there.
   bool rests_well(const FootstepState& state, detail::SampledAgents& others,
-                  const KeepOut& keep_out, bool sets_off) const;
+                  const KeepOut& keep_out) const;
   StepResult step_to(const Search& search, int index) const;
 
   CharacterParams character_;
