@@ -49,8 +49,8 @@ constexpr double kForever = std::numeric_limits<double>::infinity();
 constexpr double kFreezeRadius = 5.0;
 /// Rests closer than this are the same place. [m]
 constexpr double kSamePlace = 0.01;
-/// Agents farther apart than this cannot touch. [m]
-constexpr double kNearAgent = 3.0;
+/// Noticed agents are kept in mind while they are this near. [m]
+constexpr double kNoticeDistance = 3.0;
 /// Longest single wait step. [s]
 constexpr double kMaxWait = 5.0;
 /// An agent whose search found nothing it could commit tries again this much
@@ -100,7 +100,7 @@ struct Walker {
   double best_way = std::numeric_limits<double>::infinity();  ///< Shortest way left so far. [m]
   double improved_at = 0.0;  ///< Plan time when best_way last shortened by min_progress. [s]
   /// Agents a plan of this one's was refused for touching (or for resting
-  /// too close to), while they stay within kNearAgent: seen or not, its
+  /// too close to), while they stay within kNoticeDistance: seen or not, its
   /// searches avoid them (it has bumped into them). Without them, an agent
   /// that does not see who is in its way finds the same refused plan again
   /// at every retry.
@@ -314,12 +314,15 @@ int touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
             const MovingObstacles& others) {
   const CharacterParams& c = planner.character();
   const double my_top_speed = top_com_speed(trial, from);
+  const double my_reach = circle_reach(trial, c, from);
   for (std::size_t j = 0; j < others.size(); ++j) {
     const AgentPlan* other = others[j];
     const double end = std::max(trial.end_time(), other->end_time()) + kContactDt;
     // While the pair is far apart, instants they cannot close the distance
     // in are skipped (most of those checked are never near).
     const double closing = (my_top_speed + top_com_speed(*other, from)) * kContactDt;
+    // Farther apart than this, no circles of the pair come within the padding.
+    const double near = my_reach + circle_reach(*other, c, from) + 0.5 * closing;
     // The gap where the trial starts (see touching()).
     double start_gap = std::numeric_limits<double>::infinity();
     const long first = first_contact_instant(from);
@@ -327,7 +330,7 @@ int touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
       const double t = static_cast<double>(k) * kContactDt;
       if (t > end) break;
       const ComSample me = com_at(trial, t), them = com_at(*other, t);
-      const double apart = distance(me.position, them.position) - kNearAgent;
+      const double apart = distance(me.position, them.position) - near;
       next = k + 1;
       if (apart > 0.0) {
         if (closing > 0.0) next = k + std::max(1L, static_cast<long>(apart / closing));
@@ -489,7 +492,7 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a,
     w.noticed.erase(std::remove_if(w.noticed.begin(), w.noticed.end(),
                                    [&](std::size_t j) {
                                      return distance(com_at(walkers[j].plan, t).position, here) >
-                                            kNearAgent;
+                                            kNoticeDistance;
                                    }),
                     w.noticed.end());
     w.plan.footsteps = std::move(trial.footsteps);

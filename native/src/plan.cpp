@@ -1,6 +1,7 @@
 #include "footfall/plan.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace footfall {
@@ -50,6 +51,37 @@ double top_com_speed(const AgentPlan& plan, double from) {
   for (auto step = plan.footsteps.begin() + step_index(plan, from); step != plan.footsteps.end(); ++step)
     speed = std::max({speed, length(step->com_velocity_start), length(step->com_velocity_end)});
   return speed;
+}
+
+double circle_reach(const AgentPlan& plan, const CharacterParams& character, double from) {
+  double reach = 0.0;
+  for (const Circle& circle : torso_circles({0.0, 0.0}, 0.0, character))
+    reach = std::max(reach, length(circle.center) + circle.radius);
+  const auto& steps = plan.footsteps;
+  // Where each foot was last planted before the step under way.
+  std::array<Vec2, 2> last = plan.start.feet;
+  const int first = steps.empty() ? 0 : step_index(plan, from);
+  std::array<bool, 2> found{false, false};
+  for (int i = first - 1; i >= 0 && !(found[0] && found[1]); --i) {
+    const int f = static_cast<int>(steps[i].foot);
+    if (!found[f]) last[f] = steps[i].foot_position;
+    found[f] = true;
+  }
+  if (steps.empty() || from < steps.front().start_time) {  // standing at the start first
+    for (const Vec2& foot : last)
+      reach = std::max(reach, distance(plan.start.com, foot) + character.foot_radius);
+  }
+  for (auto step = steps.begin() + first; step != steps.end(); ++step) {
+    // The COM stays within the sway of the chord, and a point's distance
+    // to a chord is greatest at one of its ends.
+    const double sway = std::fabs(step->alpha) * step->duration() * step->duration() / 4.0;
+    for (const Vec2& foot : {step->foot_position, last[static_cast<int>(other(step->foot))]}) {
+      const double far = std::max(distance(step->com_start, foot), distance(step->com_end, foot));
+      reach = std::max(reach, far + sway + character.foot_radius);
+    }
+    last[static_cast<int>(step->foot)] = step->foot_position;
+  }
+  return reach;
 }
 
 double facing_at(const AgentPlan& plan, double t) {

@@ -25,9 +25,6 @@ constexpr double kCellHeading = 4.0 * kPi / 180.0;
 constexpr double kCellSpeed = 0.1;
 constexpr double kDuplicateTurn = 1e-3;  // [rad] goal-directed turn equal to a tabled one
 constexpr double kPivotTurn = 0.25 * kPi;  // [rad] the smaller pivot the search tries
-// Agents whose COMs are further apart cannot touch: every circle lies within
-// a stride and a foot of its COM. [m]
-constexpr double kNearAgent = 3.0;
 
 std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, Foot last_foot) {
   // Clamped before the conversion, so that far-away coordinates stay defined.
@@ -268,18 +265,22 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
   if (others.size() == 0 || last < first) return false;
   // Agents that cannot come near the step at one of its instants are left out
   // before sampling: between the middle instant and the step's ends, a COM
-  // moves at most at the top speed of its plan.
+  // moves at most at the top speed of its plan, and its circles reach no
+  // farther from it than its plan's circle_reach.
   const long middle = first + (last - first) / 2;
   const double span = static_cast<double>(last - middle) * kContactDt;
   const Circle sweep = sweep_bound(step, character_, 0.0);
+  const Circle foot{step.foot_position, character_.foot_radius};
+  const double my_reach = std::max(sweep.radius, distance(foot.center, sweep.center) + foot.radius);
+  const double my_top_speed = std::max(length(step.com_velocity_start), length(step.com_velocity_end));
   thread_local std::vector<std::size_t> close;
   close.clear();
   for (std::size_t j = 0; j < others.size(); ++j) {
-    const double reach = sweep.radius + kNearAgent + others.top_speed(j) * span;
+    const double pad = 0.5 * (my_top_speed + others.top_speed(j)) * kContactDt;
+    const double reach = my_reach + others.reach(j) + pad + others.top_speed(j) * span;
     if (distance(others.at(j, middle).com, sweep.center) <= reach) close.push_back(j);
   }
   if (close.empty()) return false;
-  const Circle foot{step.foot_position, character_.foot_radius};
   // A step from standing that starts on an instant starts where the
   // character stood: it stood still there, whatever speed the step sets off at.
   const bool stood_at_first =
@@ -294,10 +295,11 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
     const double extent = std::max(torso_extent_, distance(foot.center, me.position) + foot.radius);
     for (std::size_t c = 0; c < close.size(); ++c) {
       const detail::AgentWhere& them = others.at(close[c], k);
-      if (!them.present || distance(me.position, them.com) > kNearAgent) continue;
-      const detail::AgentShape& shape = others.shape(close[c], k);
+      if (!them.present) continue;
       // Both move between instants: the circles are grown by half the travel.
       const double pad = 0.5 * (speed + them.speed) * kContactDt;
+      if (distance(me.position, them.com) > extent + others.reach(close[c]) + pad) continue;
+      const detail::AgentShape& shape = others.shape(close[c], k);
       // Too far apart for any pair of circles to come within the padding; at
       // the first instant the gap is still wanted for the exception below.
       const double apart = distance(me.position, them.com) - extent - shape.extent - pad;
@@ -360,13 +362,13 @@ bool FootstepPlanner::stands_clear(const FootstepState& state,
     // on is the last that can differ.
     const long last = std::max(first, first_contact_instant(others.plan(j).end_time()));
     const double span = static_cast<double>(last - first) * kContactDt;
-    if (distance(others.at(j, first).com, state.com) > kNearAgent + others.top_speed(j) * span)
-      continue;
+    const double near = extent + others.reach(j) + 0.5 * others.top_speed(j) * kContactDt;
+    if (distance(others.at(j, first).com, state.com) > near + others.top_speed(j) * span) continue;
     double start_gap = std::numeric_limits<double>::infinity();  // see touching()
     for (long k = first; k <= last; ++k) {
       const detail::AgentWhere& them = others.at(j, k);
       if (!them.present) break;  // gone for good
-      if (distance(them.com, state.com) > kNearAgent) continue;
+      if (distance(them.com, state.com) > near) continue;
       const detail::AgentShape& shape = others.shape(j, k);
       const double pad = 0.5 * them.speed * kContactDt;
       if (k != first && distance(them.com, state.com) - extent - shape.extent - pad > 0.0) continue;

@@ -21,7 +21,8 @@ void SampledAgents::reset(const MovingObstacles& others, const CharacterParams& 
   }
   if (top_speed_.size() < others.size()) {
     top_speed_.resize(others.size());
-    top_speed_stamp_.resize(others.size(), 0);
+    reach_.resize(others.size());
+    bounds_stamp_.resize(others.size(), 0);
   }
   first_ = first_contact_instant(from);  // the rows held keep their memory, not their samples
 }
@@ -33,7 +34,7 @@ void SampledAgents::grow(long k) {
     shape_.insert(shape_.begin(), added, AgentShape{});
     rows_ += first_ - k;
     first_ = k;
-    std::fill(top_speed_stamp_.begin(), top_speed_stamp_.end(), 0);  // bounds from first_ on
+    std::fill(bounds_stamp_.begin(), bounds_stamp_.end(), 0);  // bounds from first_ on
   } else {
     rows_ = k - first_ + 1;
     where_.resize(static_cast<std::size_t>(rows_) * stride_);
@@ -66,9 +67,11 @@ void SampledAgents::fill(std::size_t j, long k, AgentShape& shape) const {
   shape.stamp = stamp_;
 }
 
-void SampledAgents::fill_top_speed(std::size_t j) {
-  top_speed_[j] = top_com_speed(*(*others_)[j], static_cast<double>(first_) * kContactDt);
-  top_speed_stamp_[j] = stamp_;
+void SampledAgents::fill_bounds(std::size_t j) {
+  const double from = static_cast<double>(first_) * kContactDt;
+  top_speed_[j] = top_com_speed(*(*others_)[j], from);
+  reach_[j] = circle_reach(*(*others_)[j], *character_, from);
+  bounds_stamp_[j] = stamp_;
 }
 
 }  // namespace footfall::detail

@@ -50,8 +50,13 @@ class SampledAgents {
   }
   /// top_com_speed of agent j's plan from the first instant on. [m/s]
   double top_speed(std::size_t j) {
-    if (top_speed_stamp_[j] != stamp_) fill_top_speed(j);
+    if (bounds_stamp_[j] != stamp_) fill_bounds(j);
     return top_speed_[j];
+  }
+  /// circle_reach of agent j's plan from the first instant on. [m]
+  double reach(std::size_t j) {
+    if (bounds_stamp_[j] != stamp_) fill_bounds(j);
+    return reach_[j];
   }
 
  private:
@@ -62,7 +67,7 @@ class SampledAgents {
   void grow(long k);
   void fill(std::size_t j, long k, AgentWhere& where) const;
   void fill(std::size_t j, long k, AgentShape& shape) const;
-  void fill_top_speed(std::size_t j);
+  void fill_bounds(std::size_t j);
 
   const MovingObstacles* others_ = nullptr;
   const CharacterParams* character_ = nullptr;
@@ -73,7 +78,8 @@ class SampledAgents {
   std::vector<AgentWhere> where_;  ///< [(k - first_) * stride_ + j]
   std::vector<AgentShape> shape_;  ///< the same
   std::vector<double> top_speed_;
-  std::vector<std::uint64_t> top_speed_stamp_;
+  std::vector<double> reach_;
+  std::vector<std::uint64_t> bounds_stamp_;
 };
 
 }  // namespace footfall::detail

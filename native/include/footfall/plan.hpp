@@ -39,6 +39,11 @@ ComSample com_at(const AgentPlan& plan, double t);
 /// are far apart. [m/s]
 double top_com_speed(const AgentPlan& plan, double from);
 
+/// How far from the COM the plan's collision circles (collision_circles)
+/// reach from time `from` on, bounded step by step: the torso's, and each
+/// planted foot's from the step's chord ends plus its sway. [m]
+double circle_reach(const AgentPlan& plan, const CharacterParams& character, double from);
+
 /// Both feet at time `t`, indexed by Foot. The foot of the current step is
 /// planted; the other swings from where it was planted to where the next step
 /// plants it, on an arc whose height grows with the stride (a foot that does
