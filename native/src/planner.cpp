@@ -246,12 +246,13 @@ bool FootstepPlanner::hits_obstacles(const Footstep& step) const {
   const int samples =
       std::max(1, static_cast<int>(std::ceil(top_speed * step.duration() / spacing)));
   const double dt = step.duration() / samples;
+  // The torso keeps its facing through the step: its circles' offsets from
+  // the COM are found once.
+  const auto torso = torso_circles({0.0, 0.0}, step.phi, character_, pad);
   for (int i = 0; i <= samples; ++i) {
     const Vec2 com = com_at(step, step.start_time + dt * i).position;
-    for (Circle circle : torso_circles(com, step.phi, character_)) {
-      circle.radius += pad;
-      if (obstacles_.first_overlap(circle, near) >= 0) return true;
-    }
+    for (const Circle& offset : torso)
+      if (obstacles_.first_overlap({com + offset.center, offset.radius}, near) >= 0) return true;
   }
   return false;
 }
@@ -288,10 +289,12 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
   // Per close agent, the gap at the step's first instant (see touching()).
   thread_local std::vector<double> start_gap;
   start_gap.assign(close.size(), std::numeric_limits<double>::infinity());
+  const auto torso_offsets = torso_circles({0.0, 0.0}, step.phi, character_);  // as above
   for (long k = first; k <= last; ++k) {
     const ComSample me = com_at(step, static_cast<double>(k) * kContactDt);
     const double speed = length(me.velocity);
-    const auto torso = torso_circles(me.position, step.phi, character_);
+    auto torso = torso_offsets;
+    for (Circle& circle : torso) circle.center = me.position + circle.center;
     const double extent = std::max(torso_extent_, distance(foot.center, me.position) + foot.radius);
     for (std::size_t c = 0; c < close.size(); ++c) {
       const detail::AgentWhere& them = others.at(close[c], k);
