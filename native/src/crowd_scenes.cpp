@@ -18,8 +18,8 @@ constexpr double kSpacing = 0.9;
 /// Draws per agent before a generator gives up.
 constexpr int kMaxAttempts = 100000;
 
-/// Where standing characters fit: clear of the obstacles and of the points
-/// kept before.
+/// Where standing characters fit: clear of the obstacles, free to set off,
+/// and away from the points kept before.
 class Room {
  public:
   explicit Room(const Scenario& scenario)
@@ -27,7 +27,9 @@ class Room {
         planner_(scenario.character, scenario.planner, map_) {}
 
   bool fits(Vec2 p, double facing) const {
-    if (planner_.collides(standing_state(p, facing, character_))) return false;
+    // Free to set off too: a character wedged between boxes could never step.
+    const FootstepState standing = standing_state(p, facing, character_);
+    if (planner_.collides(standing) || !planner_.free_to_set_off(standing)) return false;
     for (const Vec2 q : kept_)
       if (distance(p, q) < kSpacing) return false;
     return true;
