@@ -238,6 +238,25 @@ KeepOut wish_discs(const std::vector<Footstep>& steps, const CharacterParams& ch
   return discs;
 }
 
+/// Keeps only the attempt's leading pivots, if it has any: a character
+/// standing with its back to where it is going has not seen who is there
+/// (it sees only in front of its torso), so it turns first and plans the rest
+/// once it looks that way. Otherwise every plan it made walked into agents it
+/// never saw, refused one after another until it counted as stuck.
+void turn_first(const FootstepState& start, Attempt& a) {
+  FootstepState state = start;
+  std::size_t pivots = 0;
+  bool turns = false;
+  for (; pivots < a.steps.size() && a.steps[pivots].kind == StepKind::kStop; ++pivots) {
+    turns = turns || a.steps[pivots].phi != state.facing;
+    state = state_after(state, a.steps[pivots]);
+  }
+  if (!turns || pivots == a.steps.size()) return;
+  a.steps.resize(pivots);
+  a.end = state;
+  a.reached = false;
+}
+
 /// Agent i's next search: toward its local goal, among the plans of the
 /// agents it sees (`seen`), resting out of the wishes of those it yields to.
 /// When it stands blocked after a search that gained nothing, with one that
@@ -263,6 +282,8 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   a.steps = result.footsteps;
   a.end = result.footsteps.empty() ? w.state : result.end_state;
   a.reached = result.status == Status::kSuccess && target.is_goal;
+  if (w.state.standing() && dot(unit(w.state.facing), target.point - w.state.com) < 0.0)
+    turn_first(w.state, a);
   if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, others, keep_out, a);
   a.way_left = a.reached ? 0.0 : way_toward(mesh, planner.character(), a.end.com, goal).length;
   a.way_from = way.length;
@@ -408,13 +429,14 @@ bool still_from(const AgentPlan& plan, double from) {
 }
 
 /// True if a search by agent i now would see what its last one saw, which
-/// gained nothing: no one asked it to make room nor was noticed since, and
-/// everyone within kFreezeRadius (or gone from there) has neither committed
-/// since nor moved from then on. In a jam most agents wait behind others
+/// gained nothing: it committed nothing but waiting then (a pivot gains no
+/// way, but looks elsewhere), no one asked it to make room nor was noticed
+/// since, and everyone within kFreezeRadius (or gone from there) has neither
+/// committed since nor moved from then on. In a jam most agents wait behind others
 /// that wait; their searches, each to the horizon, would cost the most.
 bool nothing_new(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now) {
   const Walker& w = walkers[i];
-  if (w.blocked == 0 || w.news_at >= w.searched_at) return false;
+  if (w.blocked == 0 || w.news_at >= w.searched_at || w.committed_at >= w.searched_at) return false;
   for (std::size_t j = 0; j < walkers.size(); ++j) {
     if (j == i || distance(now.com[j], now.com[i]) > kFreezeRadius) continue;
     if (walkers[j].committed_at >= w.searched_at || !still_from(walkers[j].plan, w.searched_at))
