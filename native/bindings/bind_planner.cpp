@@ -38,17 +38,18 @@ void bind_planner(py::module_& m) {
       .def(py::init<const CharacterParams&, const PlannerParams&, const ObstacleMap&>(),
            py::arg("character"), py::arg("planner"), py::arg("obstacles"),
            py::keep_alive<1, 4>())  // the planner refers to the obstacle map
-      .def("plan",
-           [](const FootstepPlanner& planner, const FootstepState& start, Vec2 goal,
-              const MovingObstacles& others, bool leaves, const KeepOut& keep_out) {
-             return planner.plan(start, goal, others, {leaves, keep_out});
-           },
-           py::arg("start"), py::arg("goal"),
-           py::arg("others") = MovingObstacles{}, py::arg("leaves") = false,
-           py::arg("keep_out") = KeepOut{}, py::call_guard<py::gil_scoped_release>(),
-           "Best-first search; `others`: agent plans to keep clear of as moving obstacles; "
-           "`leaves`: the character is gone at the goal, so needs no room to rest there; "
-           "`keep_out`: circles its rests keep out of (a way another agent waits to take).")
+      .def(
+          "plan",
+          [](const FootstepPlanner& planner, const FootstepState& start, Vec2 goal,
+             const MovingObstacles& others, bool leaves, const KeepOut& keep_out) {
+            return planner.plan(start, goal, others, {leaves, keep_out});
+          },
+          py::arg("start"), py::arg("goal"), py::arg("others") = MovingObstacles{},
+          py::arg("leaves") = false, py::arg("keep_out") = KeepOut{},
+          py::call_guard<py::gil_scoped_release>(),
+          "Best-first search; `others`: agent plans to keep clear of as moving obstacles; "
+          "`leaves`: the character is gone at the goal, so needs no room to rest there; "
+          "`keep_out`: circles its rests keep out of (a way another agent waits to take).")
       .def("heuristic", &FootstepPlanner::heuristic, py::arg("state"), py::arg("goal"))
       .def("expected_step_cost", &FootstepPlanner::expected_step_cost)
       .def("expected_step_length", &FootstepPlanner::expected_step_length)
@@ -71,9 +72,10 @@ void bind_planner(py::module_& m) {
   m.def("reachable_orientations", &reachable_orientations, py::arg("interval"), py::arg("foot"),
         py::arg("max_foot_turn"));
 
-  py::class_<AgentSpec>(m, "AgentSpec",
-                        "An agent to plan: name, position [m], facing [rad], goals [m], and whether "
-                        "it walks through its last goal and leaves there.")
+  py::class_<AgentSpec>(
+      m, "AgentSpec",
+      "An agent to plan: name, position [m], facing [rad], goals [m], and whether "
+      "it walks through its last goal and leaves there.")
       .def(py::init<>())
       .def(py::init([](std::string name, Vec2 position, double facing, std::vector<Vec2> goals,
                        bool leave_at_goal) {

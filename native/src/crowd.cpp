@@ -10,6 +10,9 @@
 // the agent waits where its rest leaves it. Every committed plan was checked
 // against everyone's rest, so waiting is always clear.
 //
+// Yielding: a blocked agent shows the agents after it (in the order of way
+// left) that rest in its way where it would go; they rest out of it.
+//
 // Determinism: the searches of one tick read a snapshot (every plan as it
 // stood when the tick began) and may run on several threads; their results are
 // committed one agent after another in the agents' order, each checked against
@@ -21,22 +24,22 @@
 #include <limits>
 #include <stdexcept>
 
+#include "contact.hpp"
 #include "footfall/agent_planner.hpp"
 #include "footfall/plan.hpp"
-#include "contact.hpp"
 #include "local_goal.hpp"
 #include "workers.hpp"
 
 namespace footfall {
 namespace {
 
-constexpr double kTick = 0.05;          ///< The scheduling tick (20 Hz). [s]
-constexpr double kReplanLead = 1.0;     ///< An agent replans when this little of its plan is left. [s]
+constexpr double kTick = 0.05;       ///< The scheduling tick (20 Hz). [s]
+constexpr double kReplanLead = 1.0;  ///< An agent replans when this little of its plan is left. [s]
 constexpr double kViewDistance = 30.0;  ///< Agents farther away are not seen. [m]
 /// An agent whose way has not shortened by min_progress for this long, nor
 /// that of any agent within kQueueDistance, is stuck. [s]
 constexpr double kStuckAfter = 15.0;
-constexpr double kQueueDistance = 4.0;  ///< [m]
+constexpr double kQueueDistance = 4.0;     ///< [m]
 constexpr double kProgressInterval = 0.2;  ///< Between progress reports. [s]
 /// A new plan is checked against the agents this near now; none farther can
 /// reach it within a plan's few seconds. [m]
@@ -44,6 +47,7 @@ constexpr double kCheckDistance = 40.0;
 /// Nodes a blocked agent's search expands at most (after two searches in a
 /// row that gained nothing).
 constexpr int kBlockedHorizon = 100;
+/// Longer ago than any time: "never". [s]
 constexpr double kForever = std::numeric_limits<double>::infinity();
 /// A blocked agent searches again only if something within this changed. [m]
 constexpr double kFreezeRadius = 5.0;
@@ -83,15 +87,15 @@ void check_agent(const AgentSpec& agent) {
 /// One agent as the driver keeps it.
 struct Walker {
   const AgentSpec* spec = nullptr;
-  AgentPlan plan;  ///< Its steps, ending with `resting` provisional rest steps.
+  AgentPlan plan;        ///< Its steps, ending with `resting` provisional rest steps.
   FootstepState state;   ///< Where the next search starts: before the rest.
   FootstepState rested;  ///< After the rest.
   std::size_t resting = 0;
   std::size_t goal = 0;
-  double retry_at = 0.0;  ///< No search before this time. [s]
-  int failures = 0;        ///< Searches in a row that gave nothing to commit.
-  int blocked = 0;         ///< Searches in a row that committed no progress.
-  double searched_at = -kForever;  ///< Tick of its last search. [s]
+  double retry_at = 0.0;            ///< No search before this time. [s]
+  int failures = 0;                 ///< Searches in a row that gave nothing to commit.
+  int blocked = 0;                  ///< Searches in a row that committed no progress.
+  double searched_at = -kForever;   ///< Tick of its last search. [s]
   double committed_at = -kForever;  ///< Tick its plan last changed by a commit. [s]
   /// Tick it was last asked to make room, or noticed an agent. [s]
   double news_at = -kForever;
@@ -131,7 +135,7 @@ bool leaves_now(const Walker& w, bool reached) {
 struct Attempt {
   std::vector<Footstep> steps;
   FootstepState end;
-  Rest rest;  ///< After the steps, among the agents the search saw.
+  Rest rest;             ///< After the steps, among the agents the search saw.
   bool reached = false;  ///< The steps reach the current goal itself.
   double way_left = 0.0;
   double way_from = 0.0;  ///< Way left at the start. [m]
@@ -182,8 +186,9 @@ std::vector<std::size_t> seen_by(const std::vector<Walker>& walkers, std::size_t
 }
 
 /// Cuts the attempt's steps back to the last state from which the agent
-/// comes to rest among `others`, outside `keep_out`, free to set off again unless the steps
-/// reach the goal (none left: it waits), and keeps that rest. Committed plans
+/// comes to rest among `others`, outside `keep_out`, free to set off again
+/// unless the steps reach the goal (none left: it waits), and keeps that
+/// rest. Committed plans
 /// are checked with the agent standing after its rest, so the rest must be
 /// complete; and the next search starts there, so it must be able to set
 /// off: a rest in a door frame, facing a post, can leave every step blocked.
@@ -209,7 +214,8 @@ void cut_to_rest(const FootstepPlanner& planner, const FootstepState& start,
 bool wishing(const Walker& w) { return !w.wish.empty(); }
 
 /// The plans of agents `which`.
-MovingObstacles plans_of(const std::vector<Walker>& walkers, const std::vector<std::size_t>& which) {
+MovingObstacles plans_of(const std::vector<Walker>& walkers,
+                         const std::vector<std::size_t>& which) {
   MovingObstacles plans;
   for (const std::size_t j : which) plans.push_back(&walkers[j].plan);
   return plans;
@@ -309,7 +315,8 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
         planner.plan(w.state, target.point, plans_of(walkers, first), options);
     const Vec2 from = w.state.com, to = wish.end_state.com;
     const bool gains = distance(to, target.point) < distance(from, target.point) - min_progress;
-    const bool leaves_a_wish = !planner.keeps_out(w.state, keep_out) && distance(to, from) > min_progress;
+    const bool leaves_a_wish =
+        !planner.keeps_out(w.state, keep_out) && distance(to, from) > min_progress;
     if (gains || leaves_a_wish) a.wish = wish_discs(wish.footsteps, planner.character());
   }
   return a;
@@ -328,9 +335,10 @@ std::vector<std::size_t> near(const std::vector<Walker>& walkers, std::size_t i,
 }
 
 /// The index in `others` of the first that `trial`, from time `from` on,
-/// touches (-1 if none) under the five-circle model that measures a plan (torso circles and planted feet;
-/// after its last step a plan stands where it ends). Checked every kContactDt,
-/// the circles grown by half of both agents' travel in between.
+/// touches (-1 if none) under the five-circle model that measures a plan
+/// (torso circles and planted feet; after its last step a plan stands where
+/// it ends). Checked every kContactDt, the circles grown by half of both
+/// agents' travel in between.
 int touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
             const MovingObstacles& others) {
   const CharacterParams& c = planner.character();
@@ -362,7 +370,8 @@ int touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
       Gap gap;
       for (const Circle& theirs : collision_circles(*other, c, t))
         for (const Circle& circle : mine) gap.add(circle, theirs, pad);
-      if (k == first && standing_still(length(me.velocity), length(them.velocity))) start_gap = gap.outright;
+      if (k == first && standing_still(length(me.velocity), length(them.velocity)))
+        start_gap = gap.outright;
       if (touching(gap, start_gap)) return static_cast<int>(j);
     }
   }
@@ -622,7 +631,9 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     for (std::size_t k = 0; k < due.size(); ++k) idle[k] = nothing_new(walkers, due[k], at_tick);
     workers.run(due.size(), [&](std::size_t job) {
       const std::size_t k = order[job], i = due[k];
-      if (!idle[k]) attempts[k] = search(walkers, i, planner, mesh, seen_by(walkers, i, at_tick, mesh), at_tick);
+      if (!idle[k])
+        attempts[k] =
+            search(walkers, i, planner, mesh, seen_by(walkers, i, at_tick, mesh), at_tick);
     });
     for (std::size_t k = 0; k < due.size(); ++k) {
       const std::size_t i = due[k];

@@ -23,7 +23,8 @@ constexpr int kMaxAttempts = 100000;
 class Room {
  public:
   explicit Room(const Scenario& scenario)
-      : character_(scenario.character), map_(scenario.obstacles),
+      : character_(scenario.character),
+        map_(scenario.obstacles),
         planner_(scenario.character, scenario.planner, map_) {}
 
   bool fits(Vec2 p, double facing) const {

@@ -8,9 +8,9 @@ namespace footfall {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kMaxLift = 0.12;          // [m] swing height of a full stride
-constexpr double kLiftPerStride = 0.15;    // swing height per metre of stride
-constexpr double kLeadIn = 0.25;           // [s] longest swing of a foot into a first step
+constexpr double kMaxLift = 0.12;        // [m] swing height of a full stride
+constexpr double kLiftPerStride = 0.15;  // swing height per metre of stride
+constexpr double kLeadIn = 0.25;         // [s] longest swing of a foot into a first step
 
 // Index of the step under way at time t: the last one that started at or
 // before t (clamped to the first and last). Plans are never empty here.
@@ -48,7 +48,8 @@ double top_com_speed(const AgentPlan& plan, double from) {
   double speed = 0.0;
   if (plan.footsteps.empty()) return speed;
   // From the step under way at `from`: a long plan's past costs nothing.
-  for (auto step = plan.footsteps.begin() + step_index(plan, from); step != plan.footsteps.end(); ++step)
+  for (auto step = plan.footsteps.begin() + step_index(plan, from); step != plan.footsteps.end();
+       ++step)
     speed = std::max({speed, length(step->com_velocity_start), length(step->com_velocity_end)});
   return speed;
 }

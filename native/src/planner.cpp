@@ -7,8 +7,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "footfall/plan.hpp"
 #include "contact.hpp"
+#include "footfall/plan.hpp"
 #include "footstep_shape.hpp"
 #include "sampled_agents.hpp"
 
@@ -23,7 +23,7 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kCellPosition = 0.04;
 constexpr double kCellHeading = 4.0 * kPi / 180.0;
 constexpr double kCellSpeed = 0.1;
-constexpr double kDuplicateTurn = 1e-3;  // [rad] goal-directed turn equal to a tabled one
+constexpr double kDuplicateTurn = 1e-3;    // [rad] goal-directed turn equal to a tabled one
 constexpr double kPivotTurn = 0.25 * kPi;  // [rad] the smaller pivot the search tries
 
 std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, Foot last_foot) {
@@ -273,7 +273,8 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
   const Circle sweep = sweep_bound(step, character_, 0.0);
   const Circle foot{step.foot_position, character_.foot_radius};
   const double my_reach = std::max(sweep.radius, distance(foot.center, sweep.center) + foot.radius);
-  const double my_top_speed = std::max(length(step.com_velocity_start), length(step.com_velocity_end));
+  const double my_top_speed =
+      std::max(length(step.com_velocity_start), length(step.com_velocity_end));
   thread_local std::vector<std::size_t> close;
   close.clear();
   for (std::size_t j = 0; j < others.size(); ++j) {
@@ -321,7 +322,8 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
   return false;
 }
 
-Rest FootstepPlanner::come_to_rest(const FootstepState& state, const MovingObstacles& others) const {
+Rest FootstepPlanner::come_to_rest(const FootstepState& state,
+                                   const MovingObstacles& others) const {
   return come_to_rest(state, sampled(others, character_, state.time));
 }
 
@@ -476,9 +478,10 @@ bool FootstepPlanner::free_to_set_off(const FootstepState& rested) const {
   // Or a pivot toward a way out (the steps' checks pad the torso, so room to
   // turn alone does not promise one).
   for (const double turn : {kPivotTurn, -kPivotTurn, kMaxPivot, -kMaxPivot}) {
-    const StepResult pivot = create_footstep(
-        rested, {StepKind::kStop, other(rested.last_foot), rested.facing + turn, 0.0, params_.stop_duration},
-        character_);
+    const StepResult pivot = create_footstep(rested,
+                                             {StepKind::kStop, other(rested.last_foot),
+                                              rested.facing + turn, 0.0, params_.stop_duration},
+                                             character_);
     if (clear(pivot, 0.0, {})) return true;
   }
   return false;
@@ -515,11 +518,12 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   for (const Foot foot : {Foot::kLeft, Foot::kRight}) {
     if (!state.standing() && foot == state.last_foot) continue;
     const double inward = -outward_sign(foot);
-    tabled_walks(state, foot, [&](const StepResult& next, double phi, const detail::StepShape& shape) {
-      add(next, StepKind::kWalk, foot, phi, shape.turn, shape.speed, shape.duration,
-          phi + inward * shape.turn);
-      return false;
-    });
+    tabled_walks(state, foot,
+                 [&](const StepResult& next, double phi, const detail::StepShape& shape) {
+                   add(next, StepKind::kWalk, foot, phi, shape.turn, shape.speed, shape.duration,
+                       phi + inward * shape.turn);
+                   return false;
+                 });
     const OrientationInterval reach =
         reachable_orientations(state.foot_orientation[static_cast<int>(other(foot))], other(foot),
                                character_.max_foot_turn);

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "footfall/plan.hpp"
 #include "contact.hpp"
+#include "footfall/plan.hpp"
 
 namespace footfall::detail {
 

@@ -71,10 +71,10 @@ class SampledAgents {
 
   const MovingObstacles* others_ = nullptr;
   const CharacterParams* character_ = nullptr;
-  std::uint64_t stamp_ = 0;  ///< Counts resets.
-  long first_ = 0;           ///< The instant of the first row.
-  long rows_ = 0;            ///< Instants held.
-  std::size_t stride_ = 0;   ///< Agents per row (at least size()).
+  std::uint64_t stamp_ = 0;        ///< Counts resets.
+  long first_ = 0;                 ///< The instant of the first row.
+  long rows_ = 0;                  ///< Instants held.
+  std::size_t stride_ = 0;         ///< Agents per row (at least size()).
   std::vector<AgentWhere> where_;  ///< [(k - first_) * stride_ + j]
   std::vector<AgentShape> shape_;  ///< the same
   std::vector<double> top_speed_;

@@ -59,8 +59,8 @@ TEST(Crowd, SmallSteerSuiteCasesWalkClearOfEachOther) {
   for (const char* name :
        {"3-squeeze", "circle-20", "crossing-1", "crossing-2", "crossing-3", "curves",
         "doorway-one-way", "fan-out", "oncoming-1", "oncoming-2", "overtake", "plain-obstructed",
-        "plain-unobstructed", "simple-1", "simple-2", "simple-obstacle-1", "simple-wall",
-        "squeeze", "surprise-1"}) {
+        "plain-unobstructed", "simple-1", "simple-2", "simple-obstacle-1", "simple-wall", "squeeze",
+        "surprise-1"}) {
     SCOPED_TRACE(name);
     plan_clear_of_each_other(load_steersuite(kCases + "/" + name + ".xml"));
   }
@@ -146,9 +146,7 @@ TEST(Crowd, AgentsFaceToFaceTurnOnTheSpotAndPart) {
 // Twenty agents leave a room by one door 1.2 m wide: every one gets out.
 // Before yielding (one blocked asks those behind it in its way to step out
 // of it) and room at rest, three of them jammed in the door for good.
-TEST(Crowd, AnEgressThroughOneDoorClears) {
-  plan_clear_of_each_other(egress_scenario(20, 3));
-}
+TEST(Crowd, AnEgressThroughOneDoorClears) { plan_clear_of_each_other(egress_scenario(20, 3)); }
 
 // The table-1 workloads come from seeded generators: valid scenes, the same
 // for the same seed, every agent where the generator says.
@@ -162,7 +160,7 @@ TEST(Crowd, TableOneWorkloadsAreValidSeededScenes) {
   EXPECT_EQ(field.agents.size(), 500u);
   EXPECT_EQ(field.obstacles.size(), 700u);
   for (const AgentSpec& agent : egress.agents) {
-    EXPECT_LT(agent.position.x, 5.0) << agent.name;  // inside the room
+    EXPECT_LT(agent.position.x, 5.0) << agent.name;      // inside the room
     EXPECT_GT(agent.goals.back().x, 5.0) << agent.name;  // beyond its door
   }
   int walking_east = 0;
