@@ -244,10 +244,10 @@ KeepOut wish_discs(const std::vector<Footstep>& steps, const CharacterParams& ch
   return discs;
 }
 
-/// Keeps only the attempt's leading pivots, if it has any: a character
-/// standing with its back to where it is going has not seen who is there
-/// (it sees only in front of its torso), so it turns first and plans the rest
-/// once it looks that way. Otherwise every plan it made walked into agents it
+/// Keeps only the attempt's leading pivots, if it has any: a character that
+/// starts with its back to where it is going has not seen who is there (it
+/// sees only in front of its torso), so it turns first and plans the rest
+/// once it looks that way (later, having walked, it has looked around). Otherwise every plan it made walked into agents it
 /// never saw, refused one after another until it counted as stuck.
 void turn_first(const FootstepState& start, Attempt& a) {
   FootstepState state = start;
@@ -288,7 +288,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   a.steps = result.footsteps;
   a.end = result.footsteps.empty() ? w.state : result.end_state;
   a.reached = result.status == Status::kSuccess && target.is_goal;
-  if (w.state.standing() && dot(unit(w.state.facing), target.point - w.state.com) < 0.0)
+  if (w.plan.footsteps.empty() && dot(unit(w.state.facing), target.point - w.state.com) < 0.0)
     turn_first(w.state, a);
   if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, others, keep_out, a);
   a.way_left = a.reached ? 0.0 : way_toward(mesh, planner.character(), a.end.com, goal).length;
