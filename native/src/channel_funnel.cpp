@@ -118,13 +118,14 @@ std::vector<Vec2> trace(const std::vector<Corner>& corners, const std::vector<To
 /// corner ends the portal, the path crosses it on that corner's arc, which
 /// the fan test keeps in the channel; elsewhere it crosses on one tangent.
 std::optional<std::size_t> first_missed_end(const std::vector<Portal>& portals, double radius,
-                                             const std::vector<Corner>& corners,
-                                             const std::vector<Touch>& touches) {
+                                            const std::vector<Corner>& corners,
+                                            const std::vector<Touch>& touches) {
   std::size_t k = 0;  // corners[k] is the last corner at or before the portal
   for (std::size_t i = 0; i < portals.size(); ++i) {
     while (k + 2 < corners.size() && corners[k + 1].portal <= static_cast<int>(i)) ++k;
     auto is_corner = [&](const Corner& c) {
-      return (c.side > 0 && c.center == portals[i].left) || (c.side < 0 && c.center == portals[i].right);
+      return (c.side > 0 && c.center == portals[i].left) ||
+             (c.side < 0 && c.center == portals[i].right);
     };
     if (is_corner(corners[k]) || is_corner(corners[k + 1])) continue;
     for (int side : {+1, -1})
@@ -144,9 +145,9 @@ double sweep(int side, double from, double to) {
 }
 
 /// How far the arc of corner k reaches beyond the channel's fan of triangles
-/// around it (<= 0 if it stays inside). The fan runs through the portals that end at the corner, from
-/// the vertex before them to the vertex after them (the start or the goal at
-/// the channel's ends, whose directions lie inside the end triangles' fans).
+/// around it (<= 0 if it stays inside). The fan runs through the portals that end at the corner,
+/// from the vertex before them to the vertex after them (the start or the goal at the channel's
+/// ends, whose directions lie inside the end triangles' fans).
 double arc_excess(const std::vector<Corner>& corners, std::size_t k, Vec2 start, Vec2 goal,
                   const std::vector<Portal>& portals) {
   const Corner& c = corners[k];
@@ -189,8 +190,8 @@ std::optional<std::size_t> worst_wrap(const std::vector<Corner>& corners, Vec2 s
 /// True if the tangent from `a` to `b` crosses portals [first, last] as a
 /// disc's centre may: every portal end other than the two corners lies on
 /// its own side of it and at least `radius` from it.
-bool crosses_cleanly(const Corner& a, const Corner& b, const std::vector<Portal>& portals, int first,
-                     int last, double radius) {
+bool crosses_cleanly(const Corner& a, const Corner& b, const std::vector<Portal>& portals,
+                     int first, int last, double radius) {
   Vec2 from, to;
   if (!tangent(a, b, from, to)) return false;
   for (int i = std::max(first, 0); i <= last && i < static_cast<int>(portals.size()); ++i)
@@ -232,8 +233,8 @@ std::vector<Corner> shortest_corners(Vec2 start, Vec2 goal, const std::vector<Po
   std::vector<std::vector<double>> reach(count, std::vector<double>(count, kInf));
   std::vector<std::vector<int>> before(count, std::vector<int>(count, -1));
   auto link = [&](int a, int b) {
-    return !nodes[a].same(nodes[b]) &&
-           crosses_cleanly(nodes[a], nodes[b], portals, nodes[a].portal, std::min(nodes[b].portal, n - 1), radius);
+    return !nodes[a].same(nodes[b]) && crosses_cleanly(nodes[a], nodes[b], portals, nodes[a].portal,
+                                                       std::min(nodes[b].portal, n - 1), radius);
   };
   auto span = [&](int a, int b) {
     Vec2 from, to;
@@ -244,7 +245,8 @@ std::vector<Corner> shortest_corners(Vec2 start, Vec2 goal, const std::vector<Po
     if (link(0, b)) reach[b][0] = span(0, b);
   std::vector<char> links(count);
   for (int b = 1; b + 1 < count; ++b) {
-    if (std::all_of(reach[b].begin(), reach[b].end(), [&](double r) { return r == kInf; })) continue;
+    if (std::all_of(reach[b].begin(), reach[b].end(), [&](double r) { return r == kInf; }))
+      continue;
     for (int c = b + 1; c < count; ++c) links[c] = nodes[c].portal != nodes[b].portal && link(b, c);
     for (int a = 0; a < b; ++a) {
       if (reach[b][a] == kInf) continue;
@@ -259,7 +261,8 @@ std::vector<Corner> shortest_corners(Vec2 start, Vec2 goal, const std::vector<Po
     }
   }
   const int last = count - 1;
-  int b = static_cast<int>(std::min_element(reach[last].begin(), reach[last].end()) - reach[last].begin());
+  int b = static_cast<int>(std::min_element(reach[last].begin(), reach[last].end()) -
+                           reach[last].begin());
   if (reach[last][b] == kInf) return {};
   std::vector<Corner> out{nodes[last]};
   for (int c = last; b >= 0;) {
@@ -274,9 +277,11 @@ std::vector<Corner> shortest_corners(Vec2 start, Vec2 goal, const std::vector<Po
 
 }  // namespace
 
-FunnelPath around_corner(Vec2 start, Vec2 corner, int side, Vec2 goal, double radius, double tolerance) {
+FunnelPath around_corner(Vec2 start, Vec2 corner, int side, Vec2 goal, double radius,
+                         double tolerance) {
   FunnelPath result;
-  const std::vector<Corner> corners{{start, 0.0, 0, -1}, {corner, radius, side, 0}, {goal, 0.0, 0, 1}};
+  const std::vector<Corner> corners{
+      {start, 0.0, 0, -1}, {corner, radius, side, 0}, {goal, 0.0, 0, 1}};
   std::vector<Touch> touches;
   if (!touch_points(corners, touches)) return result;
   result.points = trace(corners, touches, tolerance);
@@ -323,7 +328,8 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
       } else {
         // Crossed: the left corner comes first, unless the new right one
         // stands in the way to it (with circles, either may).
-        wrap(blocks(new_right, apex, left) ? -1 : +1, blocks(new_right, apex, left) ? i : left_index);
+        wrap(blocks(new_right, apex, left) ? -1 : +1,
+             blocks(new_right, apex, left) ? i : left_index);
         continue;
       }
     }
@@ -337,7 +343,8 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
         left_index = i;
         left_dir = to_new_left;
       } else {
-        wrap(blocks(new_left, apex, right) ? +1 : -1, blocks(new_left, apex, right) ? i : right_index);
+        wrap(blocks(new_left, apex, right) ? +1 : -1,
+             blocks(new_left, apex, right) ? i : right_index);
         continue;
       }
     }
@@ -354,7 +361,8 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
       ok = false;
       break;
     }
-    if (const std::optional<std::size_t> missing = first_missed_end(portals, radius, corners, touches)) {
+    if (const std::optional<std::size_t> missing =
+            first_missed_end(portals, radius, corners, touches)) {
       const Corner end = *missing % 2 == 0 ? left_of(static_cast<int>(*missing / 2))
                                            : right_of(static_cast<int>(*missing / 2));
       const auto after = std::find_if(corners.begin(), corners.end(),

@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
-#include <utility>
 #include <unordered_set>
+#include <utility>
 
 #include "navmesh_impl.hpp"
 #include "obstacle_distance.hpp"
@@ -22,7 +22,8 @@ std::string where(const std::string& name, std::size_t vertex) {
 /// Checked vertices, without repeats in a row or a closing repeat.
 std::vector<Vec2> clean_polygon(const std::vector<Vec2>& polygon, const std::string& name) {
   if (polygon.empty())
-    throw std::invalid_argument((name.empty() ? std::string("polygon") : name) + " has no vertices");
+    throw std::invalid_argument((name.empty() ? std::string("polygon") : name) +
+                                " has no vertices");
   std::vector<Vec2> out;
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     if (!in_world(polygon[i]))
@@ -48,13 +49,15 @@ std::vector<Vec2> clip_to_rectangle(std::vector<Vec2> polygon, Vec2 lo, Vec2 hi)
   auto coord = [](Vec2 p, int axis) { return axis == 0 ? p.x : p.y; };
   for (const Side& side : sides) {
     auto inside = [&](Vec2 p) {
-      return side.keep_above ? coord(p, side.axis) >= side.bound : coord(p, side.axis) <= side.bound;
+      return side.keep_above ? coord(p, side.axis) >= side.bound
+                             : coord(p, side.axis) <= side.bound;
     };
     auto crossing = [&](Vec2 a, Vec2 b) {
       // The same point whichever way the edge runs: a wall (there and back)
       // must not come out as a sliver with two crossing points.
       if (std::tie(a.x, a.y) > std::tie(b.x, b.y)) std::swap(a, b);
-      const double t = (side.bound - coord(a, side.axis)) / (coord(b, side.axis) - coord(a, side.axis));
+      const double t =
+          (side.bound - coord(a, side.axis)) / (coord(b, side.axis) - coord(a, side.axis));
       Vec2 p = a + t * (b - a);
       (side.axis == 0 ? p.x : p.y) = side.bound;  // exactly on the side
       return p;
@@ -149,7 +152,8 @@ void NavMeshState::repair_windings(const std::vector<Vertex>& seeds) {
   };
   for (Vertex v : seeds) {
     auto faces = cdt.incident_faces(v), end = faces;
-    do collect(faces); while (++faces != end);
+    do collect(faces);
+    while (++faces != end);
   }
   for (std::size_t k = 0; k < region.size(); ++k)
     for (int i = 0; i < 3; ++i) collect(region[k]->neighbor(i));
@@ -171,7 +175,8 @@ void NavMeshState::repair_windings(const std::vector<Vertex>& seeds) {
 void NavMeshState::forget_windings(const std::vector<Vertex>& vertices) {
   for (Vertex v : vertices) {
     auto faces = cdt.incident_faces(v), end = faces;
-    do faces->info().winding = FaceInfo::kUnknown; while (++faces != end);
+    do faces->info().winding = FaceInfo::kUnknown;
+    while (++faces != end);
   }
 }
 
@@ -181,7 +186,8 @@ void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, int sign) {
   // sliver face beside one can be outside the triangulated outline while its
   // centroid is inside the caller's polygon (which flooded the whole domain).
   std::vector<Vec2> outline;
-  for (auto v = cdt.vertices_in_constraint_begin(constraint); v != cdt.vertices_in_constraint_end(constraint); ++v)
+  for (auto v = cdt.vertices_in_constraint_begin(constraint);
+       v != cdt.vertices_in_constraint_end(constraint); ++v)
     outline.push_back(to_vec((*v)->point()));
   auto on_constraint = [&](Face f, int i) {
     if (!f->is_constrained(i)) return false;
@@ -207,7 +213,8 @@ void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, int sign) {
       stack.pop_back();
       if (f->info().winding != FaceInfo::kUnknown) f->info().winding -= sign * inside;
       for (int i = 0; i < 3; ++i)
-        if (!on_constraint(f, i) && seen.insert(f->neighbor(i)).second) stack.push_back(f->neighbor(i));
+        if (!on_constraint(f, i) && seen.insert(f->neighbor(i)).second)
+          stack.push_back(f->neighbor(i));
     }
   };
   auto v = cdt.vertices_in_constraint_begin(constraint);
@@ -231,10 +238,13 @@ NavMesh::NavMesh(Vec2 min_corner, Vec2 max_corner) : impl_(std::make_unique<NavM
     throw std::invalid_argument("domain is empty: min_corner must be below max_corner on x and y");
   impl_->min_corner = min_corner;
   impl_->max_corner = max_corner;
-  const std::vector<Point> corners{to_point(min_corner), {max_corner.x, min_corner.y},
-                                   to_point(max_corner), {min_corner.x, max_corner.y}};
+  const std::vector<Point> corners{to_point(min_corner),
+                                   {max_corner.x, min_corner.y},
+                                   to_point(max_corner),
+                                   {min_corner.x, max_corner.y}};
   impl_->domain = impl_->cdt.insert_constraint(corners.begin(), corners.end(), true);
-  for (Face f : impl_->cdt.all_face_handles()) f->info().winding = impl_->cdt.is_infinite(f) ? 0 : 1;
+  for (Face f : impl_->cdt.all_face_handles())
+    f->info().winding = impl_->cdt.is_infinite(f) ? 0 : 1;
 }
 
 NavMesh::~NavMesh() = default;
@@ -304,7 +314,8 @@ void NavMesh::remove(int id) {
   // are found again through their former neighbours.
   std::vector<Vertex> orphans, seeds;
   for (Vertex v : touched)
-    (v->info().points == 0 && !m.cdt.are_there_incident_constraints(v) ? orphans : seeds).push_back(v);
+    (v->info().points == 0 && !m.cdt.are_there_incident_constraints(v) ? orphans : seeds)
+        .push_back(v);
   const std::unordered_set<Vertex> orphan_set(orphans.begin(), orphans.end());
   for (Vertex v : orphans) {
     auto around = m.cdt.incident_vertices(v), end = around;
@@ -328,7 +339,8 @@ double NavMesh::clearance(Vec2 point) const {
 
 double NavMesh::clearance_between(Vec2 a, Vec2 b, double limit) const {
   const NavMeshState& m = *impl_;
-  if (!in_world(a) || !in_world(b)) throw std::invalid_argument("clearance_between: points are not finite");
+  if (!in_world(a) || !in_world(b))
+    throw std::invalid_argument("clearance_between: points are not finite");
   if (!m.in_domain(a) || !m.in_domain(b)) return 0.0;
   const Face f = m.cdt.locate(to_point(a));
   if (!m.walkable(f)) return 0.0;
@@ -358,11 +370,16 @@ Vec2 NavMesh::max_corner() const { return impl_->max_corner; }
 
 const char* to_string(PathStatus status) {
   switch (status) {
-    case PathStatus::kFound: return "found";
-    case PathStatus::kNoPath: return "no_path";
-    case PathStatus::kStartBlocked: return "start_blocked";
-    case PathStatus::kGoalBlocked: return "goal_blocked";
-    case PathStatus::kOutside: return "outside";
+    case PathStatus::kFound:
+      return "found";
+    case PathStatus::kNoPath:
+      return "no_path";
+    case PathStatus::kStartBlocked:
+      return "start_blocked";
+    case PathStatus::kGoalBlocked:
+      return "goal_blocked";
+    case PathStatus::kOutside:
+      return "outside";
   }
   return "unknown";
 }
