@@ -3,6 +3,7 @@
 // inside the changed obstacle are shifted, faces CGAL created are re-derived
 // from their known neighbours across the edges between them.
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -122,6 +123,44 @@ std::vector<Vertex> constraint_vertices(const Cdt& cdt, Cdt::Constraint_id const
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
+}
+
+/// The edge from `a` to `b` whichever way it runs.
+std::pair<Point, Point> undirected(const Point& a, const Point& b) {
+  return a < b ? std::pair{a, b} : std::pair{b, a};
+}
+
+/// Inserts the closed `outline` as one constraint. Where the outline runs
+/// along one of its edges more than once (a wall: there and back), every pass
+/// must follow the same mesh vertices. Inserted again as a straight segment, a
+/// pass runs beside its first copy, which rounded crossing points have bent
+/// to both sides of the line; CGAL then crosses two nearly collinear segments
+/// and may snap the pass to distant vertices, so that the wall encloses ground.
+/// Such an outline gets each of its edges inserted once first (every one: an
+/// edge inserted later could bend a retraced one again), then the outline
+/// along the vertices they found (every piece already a constrained edge),
+/// and then the first copies removed.
+Cdt::Constraint_id insert_outline(Cdt& cdt, const std::vector<Point>& outline) {
+  const std::size_t n = outline.size();
+  std::map<std::pair<Point, Point>, Cdt::Constraint_id> edges;
+  bool retraced = false;
+  for (std::size_t i = 0; i < n; ++i)
+    retraced |= !edges.emplace(undirected(outline[i], outline[(i + 1) % n]), nullptr).second;
+  if (!retraced) return cdt.insert_constraint(outline.begin(), outline.end(), true);
+  for (auto& [edge, copy] : edges) copy = cdt.insert_constraint(edge.first, edge.second);
+  std::vector<Point> along;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Cdt::Constraint_id copy = edges.at(undirected(outline[i], outline[(i + 1) % n]));
+    std::vector<Point> pass;
+    for (auto v = cdt.vertices_in_constraint_begin(copy); v != cdt.vertices_in_constraint_end(copy);
+         ++v)
+      pass.push_back((*v)->point());
+    if (pass.front() != outline[i]) std::reverse(pass.begin(), pass.end());
+    along.insert(along.end(), pass.begin(), std::prev(pass.end()));  // the next pass starts there
+  }
+  const Cdt::Constraint_id constraint = cdt.insert_constraint(along.begin(), along.end(), true);
+  for (const auto& [edge, copy] : edges) cdt.remove_constraint(copy);
+  return constraint;
 }
 
 }  // namespace
@@ -267,7 +306,7 @@ int NavMesh::add_polygon(const std::vector<Vec2>& polygon, const std::string& na
   std::vector<Point> points;
   for (Vec2 p : cleaned) points.push_back(to_point(p));
   NavMeshState::Obstacle obstacle;
-  obstacle.constraint = m.cdt.insert_constraint(points.begin(), points.end(), true);
+  obstacle.constraint = insert_outline(m.cdt, points);
   const std::vector<Vertex> touched = constraint_vertices(m.cdt, obstacle.constraint);
   m.forget_windings(touched);
   m.shift_enclosed(obstacle.constraint, +1);
