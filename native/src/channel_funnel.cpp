@@ -11,6 +11,8 @@ namespace footfall {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+/// Rounding allowance for an arc reaching out of its fan. [rad]
+constexpr double kArcSlack = 1e-12;
 
 /// A point the path wraps around: obstacle on the path's left (+1), right
 /// (-1), or a bare point (start and goal, radius 0).
@@ -144,13 +146,13 @@ double sweep(int side, double from, double to) {
   return a;
 }
 
-/// How far the arc of corner k reaches beyond the channel's fan of triangles
-/// around it (<= 0 if it stays inside). The fan runs through the portals that end at the corner,
-/// from the vertex before them to the vertex after them (the start or the goal at the channel's
-/// ends, whose directions lie inside the end triangles' fans).
-double arc_excess(const std::vector<Corner>& corners, std::size_t k, Vec2 start, Vec2 goal,
+/// How far the arc of corner `c`, between the tangents from `prev` and to
+/// `next`, reaches beyond the channel's fan of triangles around it (<= 0 if
+/// it stays inside). The fan runs through the portals that end at the corner, from
+/// the vertex before them to the vertex after them (the start or the goal at
+/// the channel's ends, whose directions lie inside the end triangles' fans).
+double arc_excess(const Corner& prev, const Corner& c, const Corner& next, Vec2 start, Vec2 goal,
                   const std::vector<Portal>& portals) {
-  const Corner& c = corners[k];
   const int n = static_cast<int>(portals.size());
   auto end_of = [&](int i) { return c.side > 0 ? portals[i].left : portals[i].right; };
   int first = c.portal, last = c.portal;
@@ -159,7 +161,7 @@ double arc_excess(const std::vector<Corner>& corners, std::size_t k, Vec2 start,
   const Vec2 before = first > 0 ? end_of(first - 1) : start;
   const Vec2 after = last + 1 < n ? end_of(last + 1) : goal;
   Vec2 from, in, out, to;
-  if (!tangent(corners[k - 1], c, from, in) || !tangent(c, corners[k + 1], out, to)) return 2 * kPi;
+  if (!tangent(prev, c, from, in) || !tangent(c, next, out, to)) return 2 * kPi;
   const double lo = angle_of(before - c.center);
   double fan = sweep(c.side, lo, angle_of(after - c.center));
   if (fan == 0.0) fan = 2 * kPi;  // round the tip of a wall: in on one face, out on the other
@@ -175,10 +177,11 @@ double arc_excess(const std::vector<Corner>& corners, std::size_t k, Vec2 start,
 std::optional<std::size_t> worst_wrap(const std::vector<Corner>& corners, Vec2 start, Vec2 goal,
                                       const std::vector<Portal>& portals) {
   std::optional<std::size_t> worst;
-  double most = 1e-12;
+  double most = kArcSlack;
   for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
     if (corners[k].radius == 0.0) continue;
-    const double excess = arc_excess(corners, k, start, goal, portals);
+    const double excess =
+        arc_excess(corners[k - 1], corners[k], corners[k + 1], start, goal, portals);
     if (excess > most) {
       most = excess;
       worst = k;
@@ -216,7 +219,11 @@ double arc_length(const Corner& in, const Corner& c, const Corner& out) {
 /// The shortest path through the channel by dynamic programming over every
 /// portal end as a possible corner: exact for any channel, but cubic in its
 /// length, so only the fallback for channels the funnel's repairs cannot
-/// settle. Empty if no disc of `radius` gets through.
+/// settle. A corner's arc must stay in its fan, as the funnel's repairs
+/// demand: the link test sees only the portal ends abeam of a tangent, so in
+/// a channel that winds round an obstacle an arc swinging through the
+/// obstacle could hand over to a tangent that skips the loop with no portal
+/// end abeam. Empty if no disc of `radius` gets through.
 std::vector<Corner> shortest_corners(Vec2 start, Vec2 goal, const std::vector<Portal>& portals,
                                      double radius) {
   const int n = static_cast<int>(portals.size());
@@ -252,6 +259,9 @@ std::vector<Corner> shortest_corners(Vec2 start, Vec2 goal, const std::vector<Po
       if (reach[b][a] == kInf) continue;
       for (int c = b + 1; c < count; ++c) {
         if (!links[c]) continue;
+        if (nodes[b].radius > 0 &&
+            arc_excess(nodes[a], nodes[b], nodes[c], start, goal, portals) > kArcSlack)
+          continue;
         const double total = reach[b][a] + arc_length(nodes[a], nodes[b], nodes[c]) + span(b, c);
         if (total < reach[c][b]) {
           reach[c][b] = total;
