@@ -55,6 +55,9 @@ constexpr double kFreezeRadius = 5.0;
 constexpr double kSamePlace = 0.01;
 /// Noticed agents are kept in mind while they are this near. [m]
 constexpr double kNoticeDistance = 3.0;
+/// Searches take walking agents to stand where their plans end for this
+/// long only: they will plan on (SearchOptions::rest_grace). [s]
+constexpr double kRestGrace = 1.0;
 /// Longest single wait step. [s]
 constexpr double kMaxWait = 5.0;
 /// An agent whose search found nothing it could commit tries again this much
@@ -247,8 +250,9 @@ KeepOut wish_discs(const std::vector<Footstep>& steps, const CharacterParams& ch
 /// Keeps only the attempt's leading pivots, if it has any: a character that
 /// starts with its back to where it is going has not seen who is there (it
 /// sees only in front of its torso), so it turns first and plans the rest
-/// once it looks that way (later, having walked, it has looked around). Otherwise every plan it made walked into agents it
-/// never saw, refused one after another until it counted as stuck.
+/// once it looks that way (later, having walked, it has looked around).
+/// Otherwise every plan it made walked into agents it never saw, refused one
+/// after another until it counted as stuck.
 void turn_first(const FootstepState& start, Attempt& a) {
   FootstepState state = start;
   std::size_t pivots = 0;
@@ -282,7 +286,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   const MovingObstacles others = plans_of(walkers, seen);
   // A blocked agent looks less far ahead: in a jam the full horizon finds
   // no more than waiting, at the most cost.
-  const SearchOptions options{leaves, keep_out, w.blocked >= 2 ? kBlockedHorizon : 0};
+  const SearchOptions options{leaves, keep_out, w.blocked >= 2 ? kBlockedHorizon : 0, kRestGrace};
   const SearchResult result = planner.plan(w.state, target.point, others, options);
   Attempt a;
   a.steps = result.footsteps;

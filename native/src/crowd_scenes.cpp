@@ -84,17 +84,20 @@ Scenario egress_scenario(int agents, std::uint64_t seed) {
   return scenario;
 }
 
-Scenario two_way_hall_scenario(int agents, std::uint64_t seed) {
+Scenario two_way_hall_scenario(int agents, std::uint64_t seed, double width) {
+  if (!(width >= 2.0 && width <= 1000.0))
+    throw std::invalid_argument("width: the hall must be 2-1000 m wide");
   Scenario scenario;
-  // A hall 80 m long and 5 m wide, open at both ends; half the crowd starts
-  // in each half and leaves by the far end.
-  scenario.obstacles.push_back(box_obstacle({0.0, 2.6}, {80.0, 0.2}, 2.5));
-  scenario.obstacles.push_back(box_obstacle({0.0, -2.6}, {80.0, 0.2}, 2.5));
+  // A hall 80 m long, open at both ends; half the crowd starts in each half
+  // (0.4 m clear of the walls) and leaves by the far end.
+  const double half = 0.5 * width;
+  scenario.obstacles.push_back(box_obstacle({0.0, half + 0.1}, {80.0, 0.2}, 2.5));
+  scenario.obstacles.push_back(box_obstacle({0.0, -half - 0.1}, {80.0, 0.2}, 2.5));
   SceneRandom random(seed);
   add_agents(scenario, agents, false, [&] {
     const double end = scenario.agents.size() % 2 == 0 ? -1.0 : 1.0;
-    return std::pair{Vec2{end * random.uniform(4.0, 39.5), random.uniform(-2.1, 2.1)},
-                     Vec2{-end * 41.0, random.uniform(-2.0, 2.0)}};
+    return std::pair{Vec2{end * random.uniform(4.0, 39.5), random.uniform(0.4 - half, half - 0.4)},
+                     Vec2{-end * 41.0, random.uniform(0.5 - half, half - 0.5)}};
   });
   return scenario;
 }

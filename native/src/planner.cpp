@@ -298,8 +298,8 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
     for (Circle& circle : torso) circle.center = me.position + circle.center;
     const double extent = std::max(torso_extent_, distance(foot.center, me.position) + foot.radius);
     for (std::size_t c = 0; c < close.size(); ++c) {
+      if (!others.counts(close[c], k)) continue;
       const detail::AgentWhere& them = others.at(close[c], k);
-      if (!them.present) continue;
       // Both move between instants: the circles are grown by half the travel.
       const double pad = 0.5 * (speed + them.speed) * kContactDt;
       if (distance(me.position, them.com) > extent + others.reach(close[c]) + pad) continue;
@@ -559,6 +559,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
                                    const MovingObstacles& others,
                                    const SearchOptions& options) const {
   if (options.horizon < 0) throw std::invalid_argument("horizon: must be >= 0");
+  if (!(options.rest_grace >= 0.0)) throw std::invalid_argument("rest_grace: must be >= 0");
   const int horizon = options.horizon > 0 ? options.horizon : params_.max_expansions;
   const KeepOut& keep_out = options.keep_out;
   if (!in_world(start.com) || !is_finite(start.com_velocity) || !std::isfinite(start.facing) ||
@@ -584,6 +585,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   search.open.clear();
   search.generated = 0;
   search.others.reset(others, character_, start.time);
+  search.others.set_rest_grace(options.rest_grace);
   search.seen.clear(static_cast<size_t>(params_.max_expansions) * 8);
   const detail::Heading start_heading = detail::heading_of(start);
   search.seen.insert(state_key(start.com, start_heading.angle, start_heading.speed,
@@ -653,8 +655,29 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     std::reverse(result.footsteps.begin(), result.footsteps.end());
     result.end_state = nodes[end].state;
   }
+  if (options.rest_grace != std::numeric_limits<double>::infinity())
+    cut_before_rests(start, search.others, result);
   choose_foot_orientations(result.footsteps, start.foot_orientation, character_);
   return result;
+}
+
+// The search took walking agents' rests to end after their grace; nothing
+// returned may rely on that, so the steps stop before the first that runs
+// into one taken for good.
+void FootstepPlanner::cut_before_rests(const FootstepState& start, detail::SampledAgents& others,
+                                       SearchResult& result) const {
+  others.set_rest_grace(std::numeric_limits<double>::infinity());
+  FootstepState state = start;
+  for (std::size_t k = 0; k < result.footsteps.size(); ++k) {
+    const Footstep& step = result.footsteps[k];
+    if (touches_agents(step, others, state.standing())) {
+      result.footsteps.resize(k);
+      result.end_state = state;
+      result.status = Status::kPartial;
+      return;
+    }
+    state = state_after(state, step);
+  }
 }
 
 void choose_foot_orientations(std::vector<Footstep>& steps,

@@ -12,6 +12,7 @@ void SampledAgents::reset(const MovingObstacles& others, const CharacterParams& 
                           double from) {
   others_ = &others;
   character_ = &character;
+  rest_grace_ = std::numeric_limits<double>::infinity();
   ++stamp_;
   if (others.size() > stride_) {  // a wider row: the old samples are stale anyway
     stride_ = others.size();

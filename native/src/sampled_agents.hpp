@@ -7,8 +7,11 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
+#include "contact.hpp"
+#include "footfall/agent_planner.hpp"
 #include "footfall/planner.hpp"
 
 namespace footfall::detail {
@@ -58,6 +61,16 @@ class SampledAgents {
     if (bounds_stamp_[j] != stamp_) fill_bounds(j);
     return reach_[j];
   }
+  /// Walking others are taken to stand where their plans end for `grace`
+  /// only (infinity: for good): their rests are provisional.
+  void set_rest_grace(double grace) { rest_grace_ = grace; }
+  /// True if agent j counts at instant k: present, and not past the grace
+  /// of a walking agent's rest.
+  bool counts(std::size_t j, long k) {
+    if (!at(j, k).present) return false;
+    if (rest_grace_ == std::numeric_limits<double>::infinity() || top_speed(j) == 0.0) return true;
+    return static_cast<double>(k) * kContactDt <= plan(j).end_time() + rest_grace_;
+  }
 
  private:
   std::size_t slot(std::size_t j, long k) {
@@ -69,6 +82,7 @@ class SampledAgents {
   void fill(std::size_t j, long k, AgentShape& shape) const;
   void fill_bounds(std::size_t j);
 
+  double rest_grace_ = std::numeric_limits<double>::infinity();
   const MovingObstacles* others_ = nullptr;
   const CharacterParams* character_ = nullptr;
   std::uint64_t stamp_ = 0;        ///< Counts resets.

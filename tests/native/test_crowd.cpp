@@ -171,6 +171,7 @@ TEST(Crowd, TableOneWorkloadsAreValidSeededScenes) {
   int walking_east = 0;
   for (const AgentSpec& agent : hall.agents) {
     EXPECT_GT(std::abs(agent.goals.back().x - agent.position.x), 40.0) << agent.name;
+    EXPECT_LT(std::abs(agent.position.y), 8.0) << agent.name;  // in the 16 m hall
     walking_east += agent.goals.back().x > agent.position.x;
   }
   EXPECT_EQ(walking_east, 100);

@@ -347,6 +347,40 @@ TEST(Planner, ARestLeavesRoomToTurnAmongOtherAgents) {
   EXPECT_FALSE(planner.come_to_rest(here, {&passing}).complete);
 }
 
+// Another agent walks across the way and its plan ends where it crosses it.
+// Taken to stand there for good, its rest is walked round; taken for a
+// second only (a crowd's rests are provisional: the agent plans on), the
+// search goes straight on, and its steps are cut before the rest.
+TEST(Planner, AWalkingAgentsRestStandsForItsGraceOnly) {
+  const CharacterParams character;
+  const ObstacleMap none;
+  const FootstepPlanner planner(character, PlannerParams{}, none);
+  AgentPlan crossing;
+  crossing.name = "crossing";
+  crossing.start = standing_state({8, -1.5}, 1.5707963267949, character);
+  const SearchResult walk = planner.plan(crossing.start, {8, 0});
+  crossing.footsteps = walk.footsteps;
+  for (const Footstep& step : planner.come_to_rest(walk.end_state).steps)
+    crossing.footsteps.push_back(step);
+  const FootstepState start = standing_state({0, 0}, 0, character);
+  const auto widest = [](const SearchResult& result) {
+    double y = 0.0;
+    for (const Footstep& step : result.footsteps) y = std::max(y, std::fabs(step.com_end.y));
+    return y;
+  };
+  const SearchResult round = planner.plan(start, {12, 0}, {&crossing});
+  EXPECT_EQ(round.status, Status::kSuccess);
+  EXPECT_GT(widest(round), 0.6);
+  SearchOptions options;
+  options.rest_grace = 1.0;
+  const SearchResult straight = planner.plan(start, {12, 0}, {&crossing}, options);
+  EXPECT_EQ(straight.status, Status::kPartial);
+  ASSERT_FALSE(straight.footsteps.empty());
+  EXPECT_LT(widest(straight), 0.4);
+  EXPECT_LT(straight.end_state.com.x, 8.0);
+  for (const Footstep& step : straight.footsteps) EXPECT_FALSE(planner.collides(step, {&crossing}));
+}
+
 TEST(Plan, FeetNeverJump) {
   // The demo, and a walk with stops and restarts along the way (goal behind a wall).
   Scenario stops = one_agent({box_obstacle({3, 0}, {0.2, 3})}, {0, 0}, 0, {6, 0});

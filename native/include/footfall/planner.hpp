@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <vector>
 
 #include "footfall/footstep.hpp"
@@ -36,6 +37,12 @@ struct SearchOptions {
   KeepOut keep_out;  ///< Discs its rests keep out of.
   /// Nodes expanded at most; 0: the planner's max_expansions. [>= 0]
   int horizon = 0;
+  /// How long a walking other is taken to stand where its plan ends, after
+  /// it ends (infinity: for good). A crowd's plans end in provisional rests,
+  /// replaced as their agents plan on; taken for good, oncoming agents' rests
+  /// fill the way ahead. The steps found are then cut before the first that
+  /// runs into a rest taken for good; rests found keep clear of them anyway.
+  double rest_grace = std::numeric_limits<double>::infinity();
 };
 
 /// Stop steps that bring a character to rest, and where they leave it.
@@ -55,6 +62,8 @@ struct SearchResult {
   /// to rest from, outside the keep-out discs and free to set off again where
   /// it rests (free_to_set_off). A standing start takes only a node nearer the
   /// goal, unless it stands in a keep-out disc; with none, a single wait step.
+  /// Also kPartial: steps cut before a rest taken for good (rest_grace);
+  /// where the character can rest then is for the caller to find.
   /// kNoPath: not even that is possible. kInvalidStart: the start collides.
   /// kInvalidGoal: the goal lies inside an obstacle.
   Status status = Status::kPartial;
@@ -156,6 +165,8 @@ class FootstepPlanner {
   bool hits_obstacles(const Footstep& step) const;
   bool touches_agents(const Footstep& step, detail::SampledAgents& others,
                       bool from_standing) const;
+  void cut_before_rests(const FootstepState& start, detail::SampledAgents& others,
+                        SearchResult& result) const;
   Rest come_to_rest(const FootstepState& state, detail::SampledAgents& others) const;
   bool stands_clear(const FootstepState& state, detail::SampledAgents& others) const;
   StepResult stop_step(const FootstepState& state, double duration,

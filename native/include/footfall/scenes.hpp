@@ -32,9 +32,10 @@ std::vector<Obstacle> box_field(int count, double size, std::uint64_t seed);
 /// the 1.2 m door in its east wall to a point 7 m beyond it. Throws
 /// std::invalid_argument if the room cannot hold them (so do the others).
 Scenario egress_scenario(int agents, std::uint64_t seed);
-/// A two-way hall, 80 x 5 m and open at both ends: half the agents start in
-/// each half and leave by the far end.
-Scenario two_way_hall_scenario(int agents, std::uint64_t seed);
+/// A two-way hall 80 m long and `width` wide, open at both ends: half the
+/// agents start in each half and leave by the far end. 16 m is the width of
+/// SteerSuite's hallways (the paper's authors' own two-way hall of 200).
+Scenario two_way_hall_scenario(int agents, std::uint64_t seed, double width = 16.0);
 /// `agents` at random among `boxes` boxes in an 80 m field (box_field), each
 /// walking 10-20 m in a random direction.
 Scenario box_field_crowd_scenario(int agents, int boxes, std::uint64_t seed);
