@@ -280,7 +280,8 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
   for (std::size_t j = 0; j < others.size(); ++j) {
     const double pad = 0.5 * (my_top_speed + others.top_speed(j)) * kContactDt;
     const double reach = my_reach + others.reach(j) + pad + others.top_speed(j) * span;
-    if (distance(others.at(j, middle).com, sweep.center) <= reach) close.push_back(j);
+    const Vec2 d = others.at(j, middle).com - sweep.center;
+    if (dot(d, d) <= reach * reach) close.push_back(j);
   }
   if (close.empty()) return false;
   // A step from standing that starts on an instant starts where the
@@ -302,16 +303,20 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
       const detail::AgentWhere& them = others.at(close[c], k);
       // Both move between instants: the circles are grown by half the travel.
       const double pad = 0.5 * (speed + them.speed) * kContactDt;
-      if (distance(me.position, them.com) > extent + others.reach(close[c]) + pad) continue;
+      const Vec2 between = me.position - them.com;
+      const double near = extent + others.reach(close[c]) + pad;
+      if (dot(between, between) > near * near) continue;
       const detail::AgentShape& shape = others.shape(close[c], k);
       // Too far apart for any pair of circles to come within the padding; at
       // the first instant the gap is still wanted for the exception below.
-      const double apart = distance(me.position, them.com) - extent - shape.extent - pad;
+      const double apart = length(between) - extent - shape.extent - pad;
       if (k != first && apart > 0.0) continue;
       Gap gap;  // of the torso: the foot is put down clear of everyone, standing close or not
       for (int i = 0; i < shape.count; ++i) {
         const Circle& theirs = shape.circles[i];
-        if (distance(foot.center, theirs.center) <= foot.radius + theirs.radius + pad) return true;
+        const Vec2 to_foot = foot.center - theirs.center;
+        const double foot_touch = foot.radius + theirs.radius + pad;
+        if (dot(to_foot, to_foot) <= foot_touch * foot_touch) return true;
         for (const Circle& circle : torso) gap.add(circle, theirs, pad);
       }
       if (k == first && standing_still(stood_at_first ? 0.0 : speed, them.speed))
