@@ -44,6 +44,7 @@ void bind_params(py::module_& m) {
                             "The footstep planner (see params.hpp for units and ranges).")
       .def(py::init<>())
       .def_readwrite("max_expansions", &PlannerParams::max_expansions)
+      .def_readwrite("stall_expansions", &PlannerParams::stall_expansions)
       .def_readwrite("heuristic_weight", &PlannerParams::heuristic_weight)
       .def_readwrite("goal_tolerance", &PlannerParams::goal_tolerance)
       .def_readwrite("local_goal_distance", &PlannerParams::local_goal_distance)

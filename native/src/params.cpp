@@ -60,6 +60,7 @@ void validate(const CharacterParams& p, const std::string& path) {
 
 void validate(const PlannerParams& p, const std::string& path) {
   check_closed(p.max_expansions, path + ".max_expansions", 1, 1000000);
+  check_closed(p.stall_expansions, path + ".stall_expansions", 0, 1000000);
   check_closed(p.heuristic_weight, path + ".heuristic_weight", 1.0, 10.0);
   check_open_low(p.goal_tolerance, path + ".goal_tolerance", 0.0, 10.0);
   check_closed(p.local_goal_distance, path + ".local_goal_distance", 1.0, 1000.0);

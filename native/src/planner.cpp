@@ -598,7 +598,9 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   search.push(Node{start, 0.0, heuristic(start, goal)}, params_.heuristic_weight);
 
   int goal_node = -1;
-  std::vector<int> closed;  // expanded nodes, the root excluded
+  std::vector<int> closed;                                   // expanded nodes, the root excluded
+  double nearest = std::numeric_limits<double>::infinity();  // the lowest h expanded
+  int nearest_at = 0;
   while (!search.open.empty() && result.nodes_expanded < horizon) {
     const int current = search.pop();
     // Collisions are checked lazily, when a node is taken off the open list:
@@ -617,6 +619,15 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
       break;
     }
     if (current != 0) closed.push_back(current);
+    // Nothing nearer the goal for stall_expansions nodes: more of them would
+    // fill the same dead end (in a queue at a door, most of a search's time).
+    if (search.nodes[current].h < nearest) {
+      nearest = search.nodes[current].h;
+      nearest_at = result.nodes_expanded;
+    } else if (params_.stall_expansions > 0 &&
+               result.nodes_expanded - nearest_at >= params_.stall_expansions) {
+      break;
+    }
     expand(search, current, goal);
   }
   result.nodes_generated = search.generated;

@@ -71,11 +71,14 @@ void read_planner(const Json& json, const std::string& path, PlannerParams& para
     const std::string& key = it.key();
     const std::string field = child(path, key);
     if (read_double(kPlannerFields, key, it.value(), field, params)) continue;
-    if (key == "max_expansions") {
+    if (key == "max_expansions" || key == "stall_expansions") {
+      const long long low = key == "max_expansions" ? 1 : 0;
       const long long value = integer(it.value(), field);
-      if (value < 1 || value > 1000000)
-        fail(field, "must be in [1, 1000000], got " + std::to_string(value));
-      params.max_expansions = static_cast<int>(value);
+      if (value < low || value > 1000000)
+        fail(field,
+             "must be in [" + std::to_string(low) + ", 1000000], got " + std::to_string(value));
+      (key == "max_expansions" ? params.max_expansions : params.stall_expansions) =
+          static_cast<int>(value);
     } else if (key == "gaits") {
       params.gaits.clear();
       const Json& gaits = array(it.value(), field);

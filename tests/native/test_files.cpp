@@ -33,7 +33,7 @@ TEST(ScenarioFile, ReadsEveryPartAndItsOverrides) {
                 "leave_at_goal": true},
                {"position": [0, 3], "goals": [[0, 6]]}],
     "character": {"mass": 60, "max_speed": 2.0, "left": {"max_speed": 1.0}},
-    "planner": {"max_expansions": 200, "gaits": [{"speed": 1.0, "duration": 0.5}], "turn_angles": [0.1, 0.5]}
+    "planner": {"max_expansions": 200, "stall_expansions": 0, "gaits": [{"speed": 1.0, "duration": 0.5}], "turn_angles": [0.1, 0.5]}
   )"));
   ASSERT_EQ(s.obstacles.size(), 1u);
   EXPECT_DOUBLE_EQ(s.obstacles[0].height, 0.8);
@@ -49,6 +49,7 @@ TEST(ScenarioFile, ReadsEveryPartAndItsOverrides) {
   EXPECT_DOUBLE_EQ(s.character.left.max_speed, 1.0);  // the per-foot object wins
   EXPECT_DOUBLE_EQ(s.character.right.max_speed, 2.0);
   EXPECT_EQ(s.planner.max_expansions, 200);
+  EXPECT_EQ(s.planner.stall_expansions, 0);
   EXPECT_EQ(s.planner.gaits.size(), 1u);
   EXPECT_EQ(s.planner.turn_angles.size(), 2u);
 }
@@ -100,6 +101,8 @@ TEST(ScenarioFile, BadInputIsNamedByFileAndField) {
   EXPECT_EQ(error_of(scenario_text(R"("extra": 1)")), "scene.json: extra: unknown field");
   EXPECT_EQ(error_of(scenario_text(R"("planner": {"max_expansions": 18446744073709551615})")),
             "scene.json: planner.max_expansions: too large");
+  EXPECT_EQ(error_of(scenario_text(R"("planner": {"stall_expansions": -1})")),
+            "scene.json: planner.stall_expansions: must be in [0, 1000000], got -1");
   // A NaN before a syntax error does not move the error's reported position.
   const std::string plain = error_of("{\"a\": [1, 2,\n  1 2]}");
   const std::string with_nan = error_of("{\"a\": [NaN, 2,\n  1 2]}");

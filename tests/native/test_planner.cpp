@@ -194,6 +194,26 @@ TEST(Planner, HorizonReturnsThePathToTheMostPromisingNode) {
   EXPECT_LT(planner.heuristic(result.end_state, {10, 0}), planner.heuristic(start, {10, 0}));
 }
 
+// The goal behind a wall: the search fills the dead end before it, nothing
+// nearer the goal, and stops after stall_expansions of that; with none, it
+// goes on to the horizon. Both end at the same nearest node.
+TEST(Planner, ASearchThatComesNoNearerStops) {
+  const CharacterParams character;
+  const ObstacleMap wall({box_obstacle({2, 0}, {0.2, 6})});
+  PlannerParams params;
+  params.stall_expansions = 0;
+  const FootstepPlanner patient(character, params, wall);
+  params.stall_expansions = 100;
+  const FootstepPlanner brief(character, params, wall);
+  const FootstepState start = standing_state({0, 0}, 0, character);
+  const SearchResult full = patient.plan(start, {4, 0});
+  const SearchResult stalled = brief.plan(start, {4, 0});
+  EXPECT_EQ(full.nodes_expanded, params.max_expansions);
+  EXPECT_LT(stalled.nodes_expanded, params.max_expansions / 2);
+  EXPECT_EQ(stalled.status, Status::kPartial);
+  EXPECT_NEAR(distance(stalled.end_state.com, full.end_state.com), 0.0, 0.3);
+}
+
 TEST(Planner, StandingCharacterWithNowhereToGoWaits) {
   // Boxed in tight: no step is possible, so the best the planner offers is a wait.
   const CharacterParams character;

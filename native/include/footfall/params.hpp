@@ -58,6 +58,9 @@ struct Gait {
 /// The short-horizon best-first footstep planner (section 4).
 struct PlannerParams {
   int max_expansions = 1000;  ///< Horizon: nodes expanded per search. [1] [1, 1000000]
+  /// A search that has expanded no node nearer its goal (lower h) for this
+  /// many nodes stops there, as at the horizon; 0: never. [1] [0, 1000000]
+  int stall_expansions = 300;
   /// Weight of h in f = g + weight * h. 1 is the paper's plain A*; the
   /// default 1.5 leans the search toward the goal and expands 3-10 times
   /// fewer nodes around obstacles (equation 6's h is not admissible, so this
@@ -65,9 +68,10 @@ struct PlannerParams {
   double heuristic_weight = 1.5;
   /// The goal is reached when the COM is this close. [m] (0, 10], < local_goal_distance
   double goal_tolerance = 0.3;
-  double local_goal_distance = 10;  ///< Each search aims at most this far along the way. [m] [1, 1000]
-  double max_time = 300;            ///< Simulated time limit per agent. [s] (0, 100000]
-  double stop_duration = 0.5;       ///< Duration of a stop (or wait) step. [s] (0, 5]
+  /// Each search aims at most this far along the way. [m] [1, 1000]
+  double local_goal_distance = 10;
+  double max_time = 300;       ///< Simulated time limit per agent. [s] (0, 100000]
+  double stop_duration = 0.5;  ///< Duration of a stop (or wait) step. [s] (0, 5]
   /// Largest COM travel between two collision samples; circles are padded by
   /// half of it, so a thin obstacle is never stepped through. [m] [0.005, 0.05]
   double collision_sample_spacing = 0.05;
