@@ -28,9 +28,4 @@ struct FunnelPath {
 FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, double radius,
                   double tolerance);
 
-/// The path from `start` to `goal` that wraps `corner` at `radius` on its
-/// `side` (+1: the corner on the walker's left): two tangents and an arc.
-FunnelPath around_corner(Vec2 start, Vec2 corner, int side, Vec2 goal, double radius,
-                         double tolerance);
-
 }  // namespace footfall

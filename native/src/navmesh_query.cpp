@@ -414,13 +414,18 @@ struct ExtraCorner {
   std::size_t face;  ///< Index of the channel face where the path came near it.
   double along;      ///< How far along the path that was.
   Vec2 point;
-  bool left;  ///< On the walker's left.
+  bool left;     ///< On the walker's left.
+  Vec2 heading;  ///< The path's direction there.
 };
 
 /// The channel's portals with a portal at each extra corner, placed in the
-/// face where it was met; its other end is a vertex of that face on the
-/// other side.
-std::vector<Portal> portals_with(const Channel& channel, std::vector<ExtraCorner> extra) {
+/// face where it was met. Its other end is a vertex of that face on the
+/// other side (both ends of the portal beside it are); a channel of one face
+/// has no such vertex (start and goal lie on the same side of each of its
+/// edges), so there it is a point straight across the path `across` away,
+/// beyond the domain by more than r: the funnel never has to wrap it.
+std::vector<Portal> portals_with(const Channel& channel, std::vector<ExtraCorner> extra,
+                                 double across) {
   std::sort(extra.begin(), extra.end(), [](const ExtraCorner& a, const ExtraCorner& b) {
     return std::tie(a.face, a.along) < std::tie(b.face, b.along);
   });
@@ -429,9 +434,11 @@ std::vector<Portal> portals_with(const Channel& channel, std::vector<ExtraCorner
   std::size_t k = 0;
   for (std::size_t i = 0; i <= portals.size(); ++i) {
     for (; k < extra.size() && extra[k].face == i; ++k) {
-      const Portal& beside = portals[i > 0 ? i - 1 : 0];  // both ends are vertices of face i
-      out.push_back(extra[k].left ? Portal{extra[k].point, beside.right}
-                                  : Portal{beside.left, extra[k].point});
+      const ExtraCorner& e = extra[k];
+      const Vec2 to_left = (across / length(e.heading)) * perp(e.heading);
+      const Portal beside = portals.empty() ? Portal{e.point + to_left, e.point - to_left}
+                                            : portals[i > 0 ? i - 1 : 0];
+      out.push_back(e.left ? Portal{e.point, beside.right} : Portal{beside.left, e.point});
     }
     if (i < portals.size()) out.push_back(portals[i]);
   }
@@ -476,8 +483,10 @@ ChannelOutcome clear_path(const NavMeshState& mesh, const PathQuery& q, const Ch
                           double give_up_length, std::vector<Vec2>& points, double& clearance) {
   std::vector<ExtraCorner> extra;
   double tolerance = q.arc_tolerance;
+  const double across = distance(mesh.min_corner, mesh.max_corner) + 2 * q.radius;
   for (int pass = 0; pass <= kMaxExtraCorners; ++pass) {
-    FunnelPath path = funnel(q.from, q.to, portals_with(channel, extra), q.radius, tolerance);
+    FunnelPath path =
+        funnel(q.from, q.to, portals_with(channel, extra, across), q.radius, tolerance);
     if (!path.ok) return ChannelOutcome::kMisjudged;
     if (polyline_length(path.points) >= give_up_length)
       return extra.empty() ? ChannelOutcome::kLonger : ChannelOutcome::kMisjudged;
@@ -507,7 +516,7 @@ ChannelOutcome clear_path(const NavMeshState& mesh, const PathQuery& q, const Ch
     const Vec2* corner = std::find_if(std::begin(candidates), std::end(candidates),
                                       [&](Vec2 p) { return !known(p); });
     if (corner == std::end(candidates)) return ChannelOutcome::kMisjudged;  // no progress
-    extra.push_back({face_index(channel, *corner), pinch.along, *corner, left});
+    extra.push_back({face_index(channel, *corner), pinch.along, *corner, left, pinch.heading});
   }
   return ChannelOutcome::kMisjudged;
 }
@@ -559,23 +568,15 @@ PathResult NavMesh::find_path(const PathQuery& q) const {
   };
   std::vector<Vec2> points;
   double clearance = 0.0;
-  if (start == goal) {
-    const Pinch pinch = find_pinch(m, {q.from, q.to}, q.radius);
-    if (pinch.clearance >= q.radius - kClearanceSlack) {
-      keep({q.from, q.to}, pinch.clearance);
-      return result;  // nothing is shorter
-    }
-    // Blocked by a corner of their own triangle: the way round it may stay
-    // inside, which no channel (a triangle left and entered again) offers.
-    for (int k = 0; k < 3; ++k)
-      for (int side : {+1, -1}) {
-        const Vec2 corner = to_vec(start->vertex(k)->point());
-        FunnelPath path = around_corner(q.from, corner, side, q.to, q.radius, q.arc_tolerance);
-        if (!path.ok || polyline_length(path.points) >= best) continue;
-        const Pinch round = find_pinch(m, path.points, q.radius);
-        if (round.clearance >= q.radius - kClearanceSlack)
-          keep(std::move(path.points), round.clearance);
-      }
+  // Start and goal in one triangle: the straight line, or the way round
+  // whatever stands in it, within the triangle (its own corners and the
+  // obstacles beside it, wrapped as a channel's disturbances are). No
+  // channel offers that: a channel leaves the triangle and enters it again.
+  if (start == goal &&
+      clear_path(m, q, Channel{{start}, {}}, best, points, clearance) == ChannelOutcome::kClear) {
+    const bool straight = points.size() == 2;
+    keep(std::move(points), clearance);
+    if (straight) return result;  // nothing is shorter
   }
   Channel channel;
   double bound = 0.0;
