@@ -287,18 +287,6 @@ std::vector<Corner> shortest_corners(Vec2 start, Vec2 goal, const std::vector<Po
 
 }  // namespace
 
-FunnelPath around_corner(Vec2 start, Vec2 corner, int side, Vec2 goal, double radius,
-                         double tolerance) {
-  FunnelPath result;
-  const std::vector<Corner> corners{
-      {start, 0.0, 0, -1}, {corner, radius, side, 0}, {goal, 0.0, 0, 1}};
-  std::vector<Touch> touches;
-  if (!touch_points(corners, touches)) return result;
-  result.points = trace(corners, touches, tolerance);
-  result.ok = true;
-  return result;
-}
-
 FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, double radius,
                   double tolerance) {
   FunnelPath result;

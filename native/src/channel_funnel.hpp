@@ -16,9 +16,9 @@ struct Portal {
 
 /// What the funnel found.
 struct FunnelPath {
-  bool ok = false;  ///< False when two corners on opposite sides leave no room between them.
-  int failed_portal = -1;     ///< The portal where that happened.
-  std::vector<Vec2> points;   ///< Polyline, arcs sampled outside their circles. [m]
+  bool ok = false;         ///< False when two corners on opposite sides leave no room between them.
+  int failed_portal = -1;  ///< The portal where that happened.
+  std::vector<Vec2> points;  ///< Polyline, arcs sampled outside their circles. [m]
 };
 
 /// Shortest path from `start` to `goal` through `portals` (in order) that
@@ -27,9 +27,5 @@ struct FunnelPath {
 /// than `radius` to its corner and no vertex farther than `radius + tolerance`.
 FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, double radius,
                   double tolerance);
-
-/// The path from `start` to `goal` that wraps `corner` at `radius` on its
-/// `side` (+1: the corner on the walker's left): two tangents and an arc.
-FunnelPath around_corner(Vec2 start, Vec2 corner, int side, Vec2 goal, double radius, double tolerance);
 
 }  // namespace footfall

@@ -76,7 +76,8 @@ double via_segment(Vec2 from, Vec2 to, Vec2 lo, Vec2 hi) {
   const double sf = cross(u, from - lo), st = cross(u, to - lo);
   const Vec2 mirrored = (sf > 0) == (st > 0) && sf != 0 ? to - 2 * st * perp(u) : to;
   const double sm = cross(u, mirrored - lo);
-  const double along = sf == sm ? dot(from - lo, u) : dot(from + (sf / (sf - sm)) * (mirrored - from) - lo, u);
+  const double along =
+      sf == sm ? dot(from - lo, u) : dot(from + (sf / (sf - sm)) * (mirrored - from) - lo, u);
   const Vec2 q = lo + std::clamp(along, 0.0, len) * u;
   return distance(from, q) + distance(q, to);
 }
@@ -88,13 +89,13 @@ double via_segment(Vec2 from, Vec2 to, Vec2 lo, Vec2 hi) {
 /// length of a disc's path through the same channel.
 struct Node {
   Face face;
-  int entry;    ///< Edge of `face` the interval lies on (kNoEdge: the start).
+  int entry;  ///< Edge of `face` the interval lies on (kNoEdge: the start).
   int parent;
   Gate interval;
   bool left_end, right_end;  ///< The interval ends where its gate does: a path may turn there.
   Vec2 root;
-  double g;  ///< Relaxed length from the start to `root`.
-  double f;  ///< Lower bound on any path through this node to the goal.
+  double g;            ///< Relaxed length from the start to `root`.
+  double f;            ///< Lower bound on any path through this node to the goal.
   int same_edge = -1;  ///< The node kept before it that came in through the same edge.
 };
 
@@ -116,8 +117,10 @@ bool clip_to_side(const Gate& segment, double& t0, double& t1, Vec2 origin, Vec2
   if (s0 < 0 && s1 < 0) return false;
   if (!touch && s0 <= 0 && s1 <= 0) return false;
   const double cut = t0 + (t1 - t0) * s0 / (s0 - s1);
-  if (s0 < 0) t0 = cut;
-  else if (s1 < 0) t1 = cut;
+  if (s0 < 0)
+    t0 = cut;
+  else if (s1 < 0)
+    t1 = cut;
   return true;
 }
 
@@ -137,7 +140,8 @@ class ChannelSearch {
     faces_.reserve(1024);
     nodes_.reserve(1024);
     const double straight = distance(q_.from, q_.to);
-    nodes_.push_back({start, kNoEdge, -1, {q_.from, q_.from}, false, false, q_.from, 0.0, straight});
+    nodes_.push_back(
+        {start, kNoEdge, -1, {q_.from, q_.from}, false, false, q_.from, 0.0, straight});
     open_.push({straight, 0});
   }
 
@@ -219,8 +223,8 @@ class ChannelSearch {
 
   /// The gate of `f`'s edge `exit`, as seen walking out through it.
   Gate exit_gate(Face f, int exit) const {
-    return gate_of(to_vec(f->vertex(Cdt::cw(exit))->point()), to_vec(f->vertex(Cdt::ccw(exit))->point()),
-                   q_.radius);
+    return gate_of(to_vec(f->vertex(Cdt::cw(exit))->point()),
+                   to_vec(f->vertex(Cdt::ccw(exit))->point()), q_.radius);
   }
 
   void push_part(int index, int exit, const Gate& gate, double t0, double t1, Vec2 root, double g) {
@@ -239,7 +243,8 @@ class ChannelSearch {
     FaceSearch& there = faces_[next];
     if (!admit(there, entry, interval, root, g)) return;
     const double f = g + kAheadWeight * via_segment(root, q_.to, interval.left, interval.right);
-    nodes_.push_back({next, entry, index, interval, left_end, right_end, root, g, f, there.last_in[entry]});
+    nodes_.push_back(
+        {next, entry, index, interval, left_end, right_end, root, g, f, there.last_in[entry]});
     there.last_in[entry] = static_cast<int>(nodes_.size() - 1);
     open_.push({f, static_cast<int>(nodes_.size() - 1)});
   }
@@ -357,10 +362,10 @@ double polyline_length(const std::vector<Vec2>& points) {
 /// Where a polyline comes nearest to the obstacles.
 struct Pinch {
   double clearance = std::numeric_limits<double>::infinity();
-  NearestObstacle obstacle;  ///< The obstacle point there, and its edge.
-  Vec2 path_point;  ///< The polyline's point nearest to it.
-  Vec2 heading;     ///< The polyline's direction there.
-  double along = 0.0;       ///< Length of the polyline up to `path_point`.
+  NearestObstacle obstacle;   ///< The obstacle point there, and its edge.
+  Vec2 path_point;            ///< The polyline's point nearest to it.
+  Vec2 heading;               ///< The polyline's direction there.
+  double along = 0.0;         ///< Length of the polyline up to `path_point`.
   bool in_free_space = true;  ///< False if a point of the polyline is not walkable.
 };
 
@@ -409,13 +414,18 @@ struct ExtraCorner {
   std::size_t face;  ///< Index of the channel face where the path came near it.
   double along;      ///< How far along the path that was.
   Vec2 point;
-  bool left;         ///< On the walker's left.
+  bool left;     ///< On the walker's left.
+  Vec2 heading;  ///< The path's direction there.
 };
 
 /// The channel's portals with a portal at each extra corner, placed in the
-/// face where it was met; its other end is a vertex of that face on the
-/// other side.
-std::vector<Portal> portals_with(const Channel& channel, std::vector<ExtraCorner> extra) {
+/// face where it was met. Its other end is a vertex of that face on the
+/// other side (both ends of the portal beside it are); a channel of one face
+/// has no such vertex (start and goal lie on the same side of each of its
+/// edges), so there it is a point straight across the path `across` away,
+/// beyond the domain by more than r: the funnel never has to wrap it.
+std::vector<Portal> portals_with(const Channel& channel, std::vector<ExtraCorner> extra,
+                                 double across) {
   std::sort(extra.begin(), extra.end(), [](const ExtraCorner& a, const ExtraCorner& b) {
     return std::tie(a.face, a.along) < std::tie(b.face, b.along);
   });
@@ -424,9 +434,11 @@ std::vector<Portal> portals_with(const Channel& channel, std::vector<ExtraCorner
   std::size_t k = 0;
   for (std::size_t i = 0; i <= portals.size(); ++i) {
     for (; k < extra.size() && extra[k].face == i; ++k) {
-      const Portal& beside = portals[i > 0 ? i - 1 : 0];  // both ends are vertices of face i
-      out.push_back(extra[k].left ? Portal{extra[k].point, beside.right}
-                                  : Portal{beside.left, extra[k].point});
+      const ExtraCorner& e = extra[k];
+      const Vec2 to_left = (across / length(e.heading)) * perp(e.heading);
+      const Portal beside = portals.empty() ? Portal{e.point + to_left, e.point - to_left}
+                                            : portals[i > 0 ? i - 1 : 0];
+      out.push_back(e.left ? Portal{e.point, beside.right} : Portal{beside.left, e.point});
     }
     if (i < portals.size()) out.push_back(portals[i]);
   }
@@ -441,7 +453,8 @@ std::size_t face_index(const Channel& channel, Vec2 p) {
     const Face f = channel.faces[i];
     double gap = 0.0;
     for (int e = 0; e < 3; ++e) {
-      const Vec2 a = to_vec(f->vertex(Cdt::ccw(e))->point()), b = to_vec(f->vertex(Cdt::cw(e))->point());
+      const Vec2 a = to_vec(f->vertex(Cdt::ccw(e))->point()),
+                 b = to_vec(f->vertex(Cdt::cw(e))->point());
       if (cross(b - a, p - a) < 0) gap = std::max(gap, distance_to_segment(p, a, b));
     }
     if (gap < best_gap) {
@@ -470,8 +483,10 @@ ChannelOutcome clear_path(const NavMeshState& mesh, const PathQuery& q, const Ch
                           double give_up_length, std::vector<Vec2>& points, double& clearance) {
   std::vector<ExtraCorner> extra;
   double tolerance = q.arc_tolerance;
+  const double across = distance(mesh.min_corner, mesh.max_corner) + 2 * q.radius;
   for (int pass = 0; pass <= kMaxExtraCorners; ++pass) {
-    FunnelPath path = funnel(q.from, q.to, portals_with(channel, extra), q.radius, tolerance);
+    FunnelPath path =
+        funnel(q.from, q.to, portals_with(channel, extra, across), q.radius, tolerance);
     if (!path.ok) return ChannelOutcome::kMisjudged;
     if (polyline_length(path.points) >= give_up_length)
       return extra.empty() ? ChannelOutcome::kLonger : ChannelOutcome::kMisjudged;
@@ -494,17 +509,17 @@ ChannelOutcome clear_path(const NavMeshState& mesh, const PathQuery& q, const Ch
     const NearestObstacle& near = pinch.obstacle;
     const bool left = cross(pinch.heading, near.point - pinch.path_point) > 0;
     auto known = [&](Vec2 p) {
-      return std::any_of(extra.begin(), extra.end(), [&](const ExtraCorner& c) { return c.point == p; });
+      return std::any_of(extra.begin(), extra.end(),
+                         [&](const ExtraCorner& c) { return c.point == p; });
     };
     const Vec2 candidates[3] = {near.edge_from, near.edge_to, near.point};
     const Vec2* corner = std::find_if(std::begin(candidates), std::end(candidates),
                                       [&](Vec2 p) { return !known(p); });
     if (corner == std::end(candidates)) return ChannelOutcome::kMisjudged;  // no progress
-    extra.push_back({face_index(channel, *corner), pinch.along, *corner, left});
+    extra.push_back({face_index(channel, *corner), pinch.along, *corner, left, pinch.heading});
   }
   return ChannelOutcome::kMisjudged;
 }
-
 
 /// Hash of a channel by its faces.
 struct ChannelHash {
@@ -519,7 +534,8 @@ struct ChannelHash {
 
 PathResult NavMesh::find_path(const PathQuery& q) const {
   if (!in_world(q.from) || !in_world(q.to))
-    throw std::invalid_argument("find_path: start and goal must be finite coordinates within 1e9 m");
+    throw std::invalid_argument(
+        "find_path: start and goal must be finite coordinates within 1e9 m");
   if (!(q.radius >= 0) || !std::isfinite(q.radius))
     throw std::invalid_argument("find_path: radius must be a finite number >= 0");
   if (!(q.arc_tolerance > 0) || !std::isfinite(q.arc_tolerance))
@@ -552,22 +568,15 @@ PathResult NavMesh::find_path(const PathQuery& q) const {
   };
   std::vector<Vec2> points;
   double clearance = 0.0;
-  if (start == goal) {
-    const Pinch pinch = find_pinch(m, {q.from, q.to}, q.radius);
-    if (pinch.clearance >= q.radius - kClearanceSlack) {
-      keep({q.from, q.to}, pinch.clearance);
-      return result;  // nothing is shorter
-    }
-    // Blocked by a corner of their own triangle: the way round it may stay
-    // inside, which no channel (a triangle left and entered again) offers.
-    for (int k = 0; k < 3; ++k)
-      for (int side : {+1, -1}) {
-        const Vec2 corner = to_vec(start->vertex(k)->point());
-        FunnelPath path = around_corner(q.from, corner, side, q.to, q.radius, q.arc_tolerance);
-        if (!path.ok || polyline_length(path.points) >= best) continue;
-        const Pinch round = find_pinch(m, path.points, q.radius);
-        if (round.clearance >= q.radius - kClearanceSlack) keep(std::move(path.points), round.clearance);
-      }
+  // Start and goal in one triangle: the straight line, or the way round
+  // whatever stands in it, within the triangle (its own corners and the
+  // obstacles beside it, wrapped as a channel's disturbances are). No
+  // channel offers that: a channel leaves the triangle and enters it again.
+  if (start == goal &&
+      clear_path(m, q, Channel{{start}, {}}, best, points, clearance) == ChannelOutcome::kClear) {
+    const bool straight = points.size() == 2;
+    keep(std::move(points), clearance);
+    if (straight) return result;  // nothing is shorter
   }
   Channel channel;
   double bound = 0.0;
@@ -584,8 +593,12 @@ PathResult NavMesh::find_path(const PathQuery& q) const {
       for (const Face f : channel.faces) faces.push_back(&*f);
       if (failed.count(faces)) continue;
       switch (clear_path(m, q, channel, best, points, clearance)) {
-        case ChannelOutcome::kClear: keep(std::move(points), clearance); break;
-        case ChannelOutcome::kLonger: failed.insert(std::move(faces)); break;
+        case ChannelOutcome::kClear:
+          keep(std::move(points), clearance);
+          break;
+        case ChannelOutcome::kLonger:
+          failed.insert(std::move(faces));
+          break;
         case ChannelOutcome::kMisjudged:
           misjudged = true;
           failed.insert(std::move(faces));
