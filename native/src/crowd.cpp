@@ -633,12 +633,16 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     });
     std::vector<char> idle(due.size());
     for (std::size_t k = 0; k < due.size(); ++k) idle[k] = nothing_new(walkers, due[k], at_tick);
+    std::vector<double> seconds(due.size());
     workers.run(due.size(), [&](std::size_t job) {
       const std::size_t k = order[job], i = due[k];
-      if (!idle[k])
-        attempts[k] =
-            search(walkers, i, planner, mesh, seen_by(walkers, i, at_tick, mesh), at_tick);
+      if (idle[k]) return;
+      const auto begin = std::chrono::steady_clock::now();
+      attempts[k] = search(walkers, i, planner, mesh, seen_by(walkers, i, at_tick, mesh), at_tick);
+      seconds[k] = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     });
+    if (control.search_seconds != nullptr)
+      for (const double s : seconds) *control.search_seconds += s;
     for (std::size_t k = 0; k < due.size(); ++k) {
       const std::size_t i = due[k];
       Walker& w = walkers[i];

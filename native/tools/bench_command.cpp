@@ -117,15 +117,18 @@ void run_crowd_bench(int threads, std::ostream& out) {
   };
   out << std::left << std::setw(22) << "workload" << std::right << std::setw(8) << "agents"
       << std::setw(9) << "reached" << std::setw(10) << "searches" << std::setw(11) << "generated"
-      << std::setw(10) << "expanded" << std::setw(10) << "ms/plan" << std::setw(10) << "sim s"
-      << std::setw(10) << "wall s" << std::setw(16) << "ms/agent/tick"
+      << std::setw(10) << "expanded" << std::setw(10) << "ms/plan" << std::setw(11) << "search ms"
+      << std::setw(10) << "sim s" << std::setw(10) << "wall s" << std::setw(16) << "ms/agent/tick"
       << "\n";
   for (const CrowdWorkload& workload : workloads) {
     RunControl control;
     control.threads = threads;
+    double search_seconds = 0.0;
+    control.search_seconds = &search_seconds;
     const auto begin = std::chrono::steady_clock::now();
     const Plan plan = plan_scenario(workload.scenario, control);
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     long searches = 0;  // an integer: the fixed notation of the row before must not apply
     double generated = 0, expanded = 0, simulated = 0;
     int reached = 0;
@@ -140,15 +143,17 @@ void run_crowd_bench(int threads, std::ostream& out) {
     const auto plans = static_cast<double>(searches);
     const double ticks = std::max(1.0, simulated * 20.0);
     out << std::left << std::setw(22) << workload.name << std::right << std::setw(8)
-        << plan.agents.size() << std::setw(9) << reached << std::setw(10) << searches
-        << std::fixed << std::setprecision(1) << std::setw(11) << generated / std::max(1.0, plans)
+        << plan.agents.size() << std::setw(9) << reached << std::setw(10) << searches << std::fixed
+        << std::setprecision(1) << std::setw(11) << generated / std::max(1.0, plans)
         << std::setw(10) << expanded / std::max(1.0, plans) << std::setprecision(3) << std::setw(10)
-        << 1000.0 * wall / std::max(1.0, plans) << std::setprecision(1) << std::setw(10)
+        << 1000.0 * wall / std::max(1.0, plans) << std::setw(11)
+        << 1000.0 * search_seconds / std::max(1.0, plans) << std::setprecision(1) << std::setw(10)
         << simulated << std::setw(10) << wall << std::setprecision(4) << std::setw(16)
         << 1000.0 * wall / (agents * ticks) << "\n";
   }
   out << "(one run each on " << threads
-      << " thread(s); ms/plan and ms/agent/tick are the whole run's wall time shared out)\n";
+      << " thread(s); ms/plan and ms/agent/tick are the whole run's wall time shared out;\n"
+         " search ms is the time in searches alone: way, local goal, search, cut to a rest)\n";
 }
 
 }  // namespace footfall::tools

@@ -1,6 +1,9 @@
 // footfall — the command-line program: plan scenarios, run the demo and the
 // benchmarks. Exit codes: 0 success, 2 bad input or usage, 1 other failure.
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -10,8 +13,6 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 #include "bench_command.hpp"
 #include "footfall/metrics.hpp"
@@ -28,7 +29,8 @@ constexpr int kExitBadInput = 2;
 const char* const kUsage =
     "usage: footfall plan SCENARIO -o PLAN [--threads N]\n"
     "                                         plan every agent of a scenario (JSON, or SteerSuite\n"
-    "                                         .xml) on N threads (default 1; same plan either way)\n"
+    "                                         .xml) on N threads (default 1; same plan either "
+    "way)\n"
     "       footfall demo [-o PLAN] [--threads N]  the built-in demo (default out/demo-plan.json)\n"
     "       footfall metrics PLAN             our figures and SteerBench's, per agent, at 20 Hz\n"
     "       footfall path SCENARIO --from X,Y --to X,Y --radius R\n"
@@ -66,10 +68,10 @@ void print_table(const footfall::Plan& plan, std::ostream& out) {
       << "\n";
   for (const footfall::AgentPlan& agent : plan.agents) {
     out << std::left << std::setw(name_width) << agent.name << std::setw(status_width)
-        << status_of(agent) << std::right << std::setw(7) << agent.footsteps.size()
-        << std::setw(10) << std::fixed << std::setprecision(2) << agent.end_time()
-        << std::setw(11) << std::setprecision(1) << agent.total_cost() << std::setw(10)
-        << agent.searches << std::setw(10) << agent.nodes_expanded << "\n";
+        << status_of(agent) << std::right << std::setw(7) << agent.footsteps.size() << std::setw(10)
+        << std::fixed << std::setprecision(2) << agent.end_time() << std::setw(11)
+        << std::setprecision(1) << agent.total_cost() << std::setw(10) << agent.searches
+        << std::setw(10) << agent.nodes_expanded << "\n";
   }
 }
 
@@ -82,11 +84,12 @@ void print_metrics(const footfall::PlanMetrics& metrics, std::ostream& out) {
       << std::setw(13) << "acceleration"
       << "\n";
   for (const footfall::AgentMetrics& m : metrics.agents) {
-    out << std::left << std::setw(name_width) << m.name << std::setw(9) << (m.reached ? "yes" : "no")
-        << std::right << std::fixed << std::setprecision(2) << std::setw(9) << m.time
-        << std::setw(10) << m.path_length << std::setprecision(1) << std::setw(11) << m.effort
-        << std::setw(10) << m.overlaps << std::setw(11) << m.collision_episodes << std::setw(10)
-        << m.energy << std::setw(13) << m.acceleration << "\n";
+    out << std::left << std::setw(name_width) << m.name << std::setw(9)
+        << (m.reached ? "yes" : "no") << std::right << std::fixed << std::setprecision(2)
+        << std::setw(9) << m.time << std::setw(10) << m.path_length << std::setprecision(1)
+        << std::setw(11) << m.effort << std::setw(10) << m.overlaps << std::setw(11)
+        << m.collision_episodes << std::setw(10) << m.energy << std::setw(13) << m.acceleration
+        << "\n";
   }
   out << std::setprecision(2) << "five-circle overlaps: " << metrics.overlaps << "\n"
       << "SteerBench (" << metrics.rate << " Hz): composite01 " << metrics.composite01
@@ -105,12 +108,23 @@ int plan_and_write(const footfall::Scenario& scenario, const std::string& output
                 << std::flush;
     };
   }
+  double search_seconds = 0.0;
+  control.search_seconds = &search_seconds;
+  const auto begin = std::chrono::steady_clock::now();
   const footfall::Plan plan = footfall::plan_scenario(scenario, control);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   if (terminal) std::cerr << "\r             \r" << std::flush;
   const std::filesystem::path folder = std::filesystem::path(output).parent_path();
   if (!folder.empty()) std::filesystem::create_directories(folder);
   footfall::write_plan_file(plan, output);
   print_table(plan, std::cout);
+  long searches = 0;
+  for (const footfall::AgentPlan& agent : plan.agents) searches += agent.searches;
+  std::cout << std::setprecision(3) << "planned in " << wall << " s on " << threads
+            << " thread(s): " << searches << " searches, "
+            << 1000.0 * search_seconds / static_cast<double>(std::max(1L, searches))
+            << " ms each\n";
   std::cout << "plan written to " << output << "\n";
   return 0;
 }

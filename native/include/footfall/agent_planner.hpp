@@ -41,6 +41,10 @@ struct RunControl {
   const std::atomic<bool>* cancel = nullptr;
   /// Threads the searches of one tick run on; the plans do not depend on it. [1, 64]
   int threads = 1;
+  /// When set, the seconds spent in footstep searches (each agent's way, its
+  /// local goal, the search and the cut to a rest) are added to it, summed
+  /// over threads: the planner's own time, beside the run's wall time.
+  double* search_seconds = nullptr;
   /// True if the caller asked to stop.
   bool cancelled() const { return cancel != nullptr && cancel->load(std::memory_order_relaxed); }
 };
@@ -58,9 +62,9 @@ struct AgentPlan {
   /// The agent walked through its last goal and is gone after its last step
   /// (present_at): no one can meet it there.
   bool leaves = false;
-  int searches = 0;                 ///< Footstep searches run.
-  long long nodes_generated = 0;    ///< Summed over the searches.
-  long long nodes_expanded = 0;     ///< Summed over the searches.
+  int searches = 0;               ///< Footstep searches run.
+  long long nodes_generated = 0;  ///< Summed over the searches.
+  long long nodes_expanded = 0;   ///< Summed over the searches.
 
   /// Sum of the step costs. [J]
   double total_cost() const;
@@ -69,7 +73,9 @@ struct AgentPlan {
 };
 
 /// False once an agent that leaves has taken its last step.
-inline bool present_at(const AgentPlan& plan, double t) { return !plan.leaves || t <= plan.end_time(); }
+inline bool present_at(const AgentPlan& plan, double t) {
+  return !plan.leaves || t <= plan.end_time();
+}
 
 /// Plans `agents` together, each walking through its goals in turn. Each
 /// agent's way to its goal is its path on `mesh` (with room to walk upright,
