@@ -145,18 +145,23 @@ class ChannelSearch {
     open_.push({straight, 0});
   }
 
-  /// The next channel to the goal, in order of `bound`, the lower bound on
-  /// the length of a path through it; false when none is left.
-  bool next(Channel& channel, double& bound) {
-    while (!open_.empty()) {
+  /// The next channel to the goal, in order of the lower bound on the length
+  /// of a path through it; false when none is left whose bound is below
+  /// `limit`. A node's successors have bounds of at least its f / kAheadWeight
+  /// (the unweighted bound never falls along a channel), so once every open
+  /// node is at kAheadWeight * limit or more, no channel left can qualify: a
+  /// query whose answer is found stops there instead of searching on for a
+  /// goal's face that may have no other way in.
+  bool next(Channel& channel, double limit) {
+    while (!open_.empty() && open_.top().first < kAheadWeight * limit) {
       const int index = open_.top().second;
       open_.pop();
       // A long search may be walking all the ground around a goal no disc
       // can reach; a flood from the goal tells that at a fraction of the cost.
       if (++expanded_ == kPocketCheckAfter && goal_sealed_off(nodes_.front().face)) return false;
       if (nodes_[index].face == goal_ && nodes_[index].entry != kNoEdge) {
+        if (nodes_[index].f >= limit) return false;
         unwind(index, channel);
-        bound = nodes_[index].f;
         return true;
       }
       expand(index);
@@ -579,7 +584,6 @@ PathResult NavMesh::find_path(const PathQuery& q) const {
     if (straight) return result;  // nothing is shorter
   }
   Channel channel;
-  double bound = 0.0;
   bool misjudged = false;
   // Channels (by their faces) that gave no clear path: offered again, by the
   // retry or by another node over the same faces, they would give none again
@@ -588,7 +592,7 @@ PathResult NavMesh::find_path(const PathQuery& q) const {
   std::unordered_set<std::vector<const void*>, ChannelHash> failed;
   for (const int rivals : {0, kRivalsOnRetry}) {
     ChannelSearch search(m, q, start, goal, rivals);
-    while (search.next(channel, bound) && bound * (1 + kLengthTolerance) < best) {
+    while (search.next(channel, best / (1 + kLengthTolerance))) {
       std::vector<const void*> faces;
       for (const Face f : channel.faces) faces.push_back(&*f);
       if (failed.count(faces)) continue;
