@@ -17,7 +17,10 @@
 // stood when the tick began) and may run on several threads; their results are
 // committed one agent after another in the agents' order, each checked against
 // the plans as they then stand. So the plans do not depend on the number of
-// threads or their timing.
+// threads or their timing. The check against a plan no commit of the tick has
+// changed yet gives what it gave against the snapshot, so it is made on the
+// threads too, with the search (propose()); only plans changed earlier in the
+// tick are checked in order (refusal()).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -338,48 +341,42 @@ std::vector<std::size_t> near(const std::vector<Walker>& walkers, std::size_t i,
   return out;
 }
 
-/// The index in `others` of the first that `trial`, from time `from` on,
-/// touches (-1 if none) under the five-circle model that measures a plan
-/// (torso circles and planted feet; after its last step a plan stands where
-/// it ends). Checked every kContactDt, the circles grown by half of both
-/// agents' travel in between.
-int touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
-            const MovingObstacles& others) {
+/// True if `trial`, from time `from` on, touches `other` under the
+/// five-circle model that measures a plan (torso circles and planted feet;
+/// after its last step a plan stands where it ends). Checked every
+/// kContactDt, the circles grown by half of both agents' travel in between.
+bool touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
+             const AgentPlan& other) {
   const CharacterParams& c = planner.character();
-  const double my_top_speed = top_com_speed(trial, from);
-  const double my_reach = circle_reach(trial, c, from);
-  for (std::size_t j = 0; j < others.size(); ++j) {
-    const AgentPlan* other = others[j];
-    const double end = std::max(trial.end_time(), other->end_time()) + kContactDt;
-    // While the pair is far apart, instants they cannot close the distance
-    // in are skipped (most of those checked are never near).
-    const double closing = (my_top_speed + top_com_speed(*other, from)) * kContactDt;
-    // Farther apart than this, no circles of the pair come within the padding.
-    const double near = my_reach + circle_reach(*other, c, from) + 0.5 * closing;
-    // The gap where the trial starts (see touching()).
-    double start_gap = std::numeric_limits<double>::infinity();
-    const long first = first_contact_instant(from);
-    for (long k = first, next = first;; k = next) {
-      const double t = static_cast<double>(k) * kContactDt;
-      if (t > end) break;
-      const ComSample me = com_at(trial, t), them = com_at(*other, t);
-      const double apart = distance(me.position, them.position) - near;
-      next = k + 1;
-      if (apart > 0.0) {
-        if (closing > 0.0) next = k + std::max(1L, static_cast<long>(apart / closing));
-        continue;
-      }
-      const double pad = 0.5 * (length(me.velocity) + length(them.velocity)) * kContactDt;
-      const std::vector<Circle> mine = collision_circles(trial, c, t);
-      Gap gap;
-      for (const Circle& theirs : collision_circles(*other, c, t))
-        for (const Circle& circle : mine) gap.add(circle, theirs, pad);
-      if (k == first && standing_still(length(me.velocity), length(them.velocity)))
-        start_gap = gap.outright;
-      if (touching(gap, start_gap)) return static_cast<int>(j);
+  const double end = std::max(trial.end_time(), other.end_time()) + kContactDt;
+  // While the pair is far apart, instants they cannot close the distance
+  // in are skipped (most of those checked are never near).
+  const double closing = (top_com_speed(trial, from) + top_com_speed(other, from)) * kContactDt;
+  // Farther apart than this, no circles of the pair come within the padding.
+  const double near = circle_reach(trial, c, from) + circle_reach(other, c, from) + 0.5 * closing;
+  // The gap where the trial starts (see touching()).
+  double start_gap = std::numeric_limits<double>::infinity();
+  const long first = first_contact_instant(from);
+  for (long k = first, next = first;; k = next) {
+    const double t = static_cast<double>(k) * kContactDt;
+    if (t > end) break;
+    const ComSample me = com_at(trial, t), them = com_at(other, t);
+    const double apart = distance(me.position, them.position) - near;
+    next = k + 1;
+    if (apart > 0.0) {
+      if (closing > 0.0) next = k + std::max(1L, static_cast<long>(apart / closing));
+      continue;
     }
+    const double pad = 0.5 * (length(me.velocity) + length(them.velocity)) * kContactDt;
+    const std::vector<Circle> mine = collision_circles(trial, c, t);
+    Gap gap;
+    for (const Circle& theirs : collision_circles(other, c, t))
+      for (const Circle& circle : mine) gap.add(circle, theirs, pad);
+    if (k == first && standing_still(length(me.velocity), length(them.velocity)))
+      start_gap = gap.outright;
+    if (touching(gap, start_gap)) return true;
   }
-  return -1;
+  return false;
 }
 
 /// Lets the agent's provisional rest happen (it is no longer provisional),
@@ -461,12 +458,81 @@ bool nothing_new(const std::vector<Walker>& walkers, std::size_t i, const Snapsh
 /// The state agent `w` stands in after its plan.
 const FootstepState& rest_of(const Walker& w) { return w.resting > 0 ? w.rested : w.state; }
 
+/// An attempt as it would stand in its agent's plan, and what the commit
+/// check finds against each agent near as the tick began. Made for every
+/// due agent at once (on the workers): in the agents' order, only the plans
+/// committed before it in the same tick need checking again (refusal()).
+struct Proposal {
+  std::vector<Footstep> steps;     ///< The attempt's steps, then (unless it leaves) its rest.
+  FootstepState rested;            ///< Where they leave the agent.
+  bool leaving = false;            ///< It walks on through its last goal.
+  AgentPlan trial;                 ///< The plan with them in place of the old rest.
+  double from = 0.0;               ///< The trial differs from the plan from then on. [s]
+  bool new_place = false;          ///< It rests somewhere new: it needs room there.
+  std::vector<std::size_t> close;  ///< The agents near (near()).
+  std::vector<char> touches;       ///< Per close: the trial touches its plan.
+  std::vector<char> no_room;       ///< Per close: no room to rest beside it (new_place).
+};
+
+/// The trial that agent i's attempt makes, and its check against the plans
+/// of the agents `close` as they stand now.
+Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attempt& a,
+                 const FootstepPlanner& planner, std::vector<std::size_t> close) {
+  const Walker& w = walkers[i];
+  Proposal p;
+  p.close = std::move(close);
+  p.steps = a.steps;
+  p.rested = a.end;
+  // One that leaves at its last goal walks on through it; the others come to rest.
+  p.leaving = leaves_now(w, a.reached);
+  if (!p.leaving) {
+    p.steps.insert(p.steps.end(), a.rest.steps.begin(), a.rest.steps.end());
+    p.rested = a.rest.state;
+  }
+  if (a.steps.empty()) return p;
+  p.trial.leaves = p.leaving;
+  p.trial.start = w.plan.start;
+  const std::size_t kept = w.plan.footsteps.size() - w.resting;
+  p.trial.footsteps.assign(w.plan.footsteps.begin(), w.plan.footsteps.begin() + kept);
+  p.trial.footsteps.insert(p.trial.footsteps.end(), p.steps.begin(), p.steps.end());
+  // During the last kept step the free foot swings toward the next step's
+  // foot (feet_at): that step's circles change with the new steps too.
+  p.from = kept > 0 ? p.trial.footsteps[kept - 1].start_time : a.steps.front().start_time;
+  // A new place to rest needs room among everyone, seen or not.
+  p.new_place = !p.leaving && distance(p.rested.com, rest_of(w).com) > kSamePlace;
+  for (const std::size_t j : p.close) {
+    p.touches.push_back(touches(p.trial, p.from, planner, walkers[j].plan));
+    p.no_room.push_back(p.new_place && !planner.stands_clear(p.rested, {&walkers[j].plan}));
+  }
+  return p;
+}
+
+/// The index in p.close of the agent the trial is refused for: the first it
+/// touches, else (resting somewhere new) the first it has no room beside;
+/// -1 if none. The plans of agents `changed` this tick are checked anew.
+int refusal(const std::vector<Walker>& walkers, const Proposal& p, const std::vector<char>& changed,
+            const FootstepPlanner& planner) {
+  if (p.trial.footsteps.empty()) return -1;
+  for (std::size_t c = 0; c < p.close.size(); ++c) {
+    const AgentPlan& other = walkers[p.close[c]].plan;
+    if (changed[p.close[c]] ? touches(p.trial, p.from, planner, other) : p.touches[c])
+      return static_cast<int>(c);
+  }
+  if (!p.new_place) return -1;
+  for (std::size_t c = 0; c < p.close.size(); ++c) {
+    const AgentPlan& other = walkers[p.close[c]].plan;
+    if (changed[p.close[c]] ? !planner.stands_clear(p.rested, {&other}) : p.no_room[c])
+      return static_cast<int>(c);
+  }
+  return -1;
+}
+
 /// Adds the attempt's steps and a provisional rest after them to agent i's
-/// plan, in place of its old rest, if the plan then keeps clear of the plans
-/// of agents `near`, before and after they end; otherwise the old rest
-/// happens and the agent waits there. Then goals reached and progress.
-void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a,
-            const FootstepPlanner& planner, double t, const std::vector<std::size_t>& near) {
+/// plan, in place of its old rest, unless the proposal was refused (for
+/// p.close[refused]); then the old rest happens and the agent waits there.
+/// Then goals reached and progress.
+void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a, Proposal& p, int refused,
+            const FootstepPlanner& planner, double t) {
   Walker& w = walkers[i];
   if (a.searched) {
     ++w.plan.searches;
@@ -474,42 +540,11 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a,
     w.plan.nodes_expanded += a.nodes_expanded;
     w.last_expanded = a.nodes_expanded;
   }
-  std::vector<Footstep> steps = a.steps;
-  FootstepState rested = a.end;
-  // One that leaves at its last goal walks on through it; the others come to rest.
-  const bool leaving = leaves_now(w, a.reached);
-  if (!leaving) {
-    steps.insert(steps.end(), a.rest.steps.begin(), a.rest.steps.end());
-    rested = a.rest.state;
-  }
-  AgentPlan trial;
-  trial.leaves = leaving;
-  double from = 0.0;  // the trial differs from the plan from then on
-  if (!a.steps.empty()) {
-    trial.start = w.plan.start;
-    const std::size_t kept = w.plan.footsteps.size() - w.resting;
-    trial.footsteps.assign(w.plan.footsteps.begin(), w.plan.footsteps.begin() + kept);
-    trial.footsteps.insert(trial.footsteps.end(), steps.begin(), steps.end());
-    // During the last kept step the free foot swings toward the next step's
-    // foot (feet_at): that step's circles change with the new steps too.
-    from = kept > 0 ? trial.footsteps[kept - 1].start_time : a.steps.front().start_time;
-  }
-  int touched = -1;
-  if (!a.steps.empty()) {
-    const MovingObstacles others = plans_of(walkers, near);
-    touched = touches(trial, from, planner, others);
-    // A new place to rest needs room among everyone, seen or not.
-    if (touched < 0 && !leaving && distance(rested.com, rest_of(w).com) > kSamePlace &&
-        !planner.stands_clear(rested, others)) {
-      for (std::size_t j = 0; j < near.size() && touched < 0; ++j)
-        if (!planner.stands_clear(rested, {others[j]})) touched = static_cast<int>(j);
-    }
-  }
-  if (touched >= 0) {
-    w.noticed.push_back(near[touched]);
+  if (refused >= 0) {
+    w.noticed.push_back(p.close[refused]);
     w.news_at = t;
   }
-  if (a.steps.empty() || touched >= 0) {
+  if (a.steps.empty() || refused >= 0) {
     rest_until(w, planner, t);
     w.retry_at = t + kRetryAfter * (1 << std::min(w.failures++, kMaxBackoff));
     if (!(a.reached && a.steps.empty())) {  // at the goal already, or waiting
@@ -518,7 +553,7 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a,
     }
   } else {
     // Waiting on where it stands is no news to the others.
-    if (!std::all_of(steps.begin(), steps.end(),
+    if (!std::all_of(p.steps.begin(), p.steps.end(),
                      [&](const Footstep& step) { return still(step, w.state.facing); }))
       w.committed_at = t;
     w.failures = 0;
@@ -530,10 +565,10 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a,
                                             kNoticeDistance;
                                    }),
                     w.noticed.end());
-    w.plan.footsteps = std::move(trial.footsteps);
-    w.resting = steps.size() - a.steps.size();
+    w.plan.footsteps = std::move(p.trial.footsteps);
+    w.resting = p.steps.size() - a.steps.size();
     w.state = a.end;
-    w.rested = rested;
+    w.rested = p.rested;
   }
   if (!a.reached) {
     progress(w, a.way_left, planner);
@@ -634,32 +669,40 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     std::vector<char> idle(due.size());
     for (std::size_t k = 0; k < due.size(); ++k) idle[k] = nothing_new(walkers, due[k], at_tick);
     std::vector<double> seconds(due.size());
+    std::vector<Proposal> proposals(due.size());
     workers.run(due.size(), [&](std::size_t job) {
       const std::size_t k = order[job], i = due[k];
-      if (idle[k]) return;
-      const auto begin = std::chrono::steady_clock::now();
-      attempts[k] = search(walkers, i, planner, mesh, seen_by(walkers, i, at_tick, mesh), at_tick);
-      seconds[k] = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+      if (!idle[k]) {
+        const auto begin = std::chrono::steady_clock::now();
+        attempts[k] =
+            search(walkers, i, planner, mesh, seen_by(walkers, i, at_tick, mesh), at_tick);
+        seconds[k] =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+      }
+      proposals[k] = propose(walkers, i, attempts[k], planner, near(walkers, i, at_tick));
     });
     if (control.search_seconds != nullptr)
       for (const double s : seconds) *control.search_seconds += s;
+    // Plans changed in this tick so far (by a commit, or a wait).
+    std::vector<char> changed(walkers.size(), 0);
     for (std::size_t k = 0; k < due.size(); ++k) {
       const std::size_t i = due[k];
       Walker& w = walkers[i];
-      const std::vector<std::size_t> close = near(walkers, i, at_tick);
       // Those it yielded to and that no longer wish are let go.
       w.yielding_to.erase(std::remove_if(w.yielding_to.begin(), w.yielding_to.end(),
                                          [&](std::size_t r) { return !wishing(walkers[r]); }),
                           w.yielding_to.end());
       const Attempt& a = attempts[k];
-      commit(walkers, i, a, planner, t, close);
+      const int refused = refusal(walkers, proposals[k], changed, planner);
+      commit(walkers, i, a, proposals[k], refused, planner, t);
+      changed[i] = 1;
       if (a.searched) {
         w.searched_at = t;
         w.way = a.way_from;
         const bool gained = a.reached || a.way_left <= a.way_from - planner.params().min_progress;
         w.blocked = w.failures == 0 && gained ? 0 : w.blocked + 1;
       }
-      show_wish(walkers, i, attempts[k], planner, t, close);
+      show_wish(walkers, i, attempts[k], planner, t, proposals[k].close);
       if (!w.done && stuck(walkers, i)) {
         w.plan.reason = "stuck";
         w.done = true;
