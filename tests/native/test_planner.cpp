@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <utility>
 
 #include "footfall/plan.hpp"
@@ -316,23 +317,27 @@ double closest_approach(const AgentPlan& a, const AgentPlan& b, const CharacterP
   return closest;
 }
 
+/// Another agent's plan, named `name`: standing at `from`, facing its goal
+/// `to`, it walks there alone.
+AgentPlan walk_alone(const FootstepPlanner& planner, const std::string& name, Vec2 from, Vec2 to) {
+  AgentPlan plan;
+  plan.name = name;
+  plan.start = standing_state(from, angle_of(to - from), planner.character());
+  plan.footsteps = planner.plan(plan.start, to).footsteps;
+  return plan;
+}
+
 TEST(Planner, KeepsClearOfOtherAgentsPlans) {
   const CharacterParams character;
   const ObstacleMap none;
   const FootstepPlanner planner(character, PlannerParams{}, none);
-  AgentPlan first;
-  first.name = "first";
-  first.start = standing_state({0, 0}, 0, character);
-  first.footsteps = planner.plan(first.start, {8, 0}).footsteps;
+  const AgentPlan first = walk_alone(planner, "first", {0, 0}, {8, 0});
   // Head-on along the same line, and crossing its way at right angles.
   for (const auto& [from, to] :
        {std::pair<Vec2, Vec2>{{8, 0}, {0, 0}}, std::pair<Vec2, Vec2>{{4, -4}, {4, 4}}}) {
     SCOPED_TRACE(::testing::Message() << "from " << from.x << ", " << from.y);
-    AgentPlan second;
-    second.name = "second";
-    second.start = standing_state(from, angle_of(to - from), character);
     // Alone, it would walk right through the first.
-    second.footsteps = planner.plan(second.start, to).footsteps;
+    AgentPlan second = walk_alone(planner, "second", from, to);
     EXPECT_LT(closest_approach(first, second, character), 0.0);
     // Reading the first's plan, it keeps clear.
     const SearchResult result = planner.plan(second.start, to, {&first});
@@ -360,10 +365,7 @@ TEST(Planner, ARestLeavesRoomToTurnAmongOtherAgents) {
     EXPECT_TRUE(planner.come_to_rest(here).complete);
   }
   // One walking through the spot later in its plan takes the room too.
-  AgentPlan passing;
-  passing.name = "passing";
-  passing.start = standing_state({-4, 0}, 0, character);
-  passing.footsteps = planner.plan(passing.start, {4, 0}).footsteps;
+  const AgentPlan passing = walk_alone(planner, "passing", {-4, 0}, {4, 0});
   EXPECT_FALSE(planner.come_to_rest(here, {&passing}).complete);
 }
 
@@ -375,13 +377,10 @@ TEST(Planner, AWalkingAgentsRestStandsForItsGraceOnly) {
   const CharacterParams character;
   const ObstacleMap none;
   const FootstepPlanner planner(character, PlannerParams{}, none);
-  AgentPlan crossing;
-  crossing.name = "crossing";
-  crossing.start = standing_state({8, -1.5}, 1.5707963267949, character);
-  const SearchResult walk = planner.plan(crossing.start, {8, 0});
-  crossing.footsteps = walk.footsteps;
-  for (const Footstep& step : planner.come_to_rest(walk.end_state).steps)
-    crossing.footsteps.push_back(step);
+  AgentPlan crossing = walk_alone(planner, "crossing", {8, -1.5}, {8, 0});
+  FootstepState end = crossing.start;
+  for (const Footstep& step : crossing.footsteps) end = state_after(end, step);
+  for (const Footstep& step : planner.come_to_rest(end).steps) crossing.footsteps.push_back(step);
   const FootstepState start = standing_state({0, 0}, 0, character);
   const auto widest = [](const SearchResult& result) {
     double y = 0.0;
