@@ -1,3 +1,5 @@
+#include <limits>
+
 #include "bindings.hpp"
 #include "footfall/agent_planner.hpp"
 #include "footfall/plan.hpp"
@@ -41,15 +43,20 @@ void bind_planner(py::module_& m) {
       .def(
           "plan",
           [](const FootstepPlanner& planner, const FootstepState& start, Vec2 goal,
-             const MovingObstacles& others, bool leaves, const KeepOut& keep_out) {
-            return planner.plan(start, goal, others, {leaves, keep_out});
+             const MovingObstacles& others, bool leaves, const KeepOut& keep_out,
+             double rest_grace) {
+            return planner.plan(start, goal, others, {leaves, keep_out, 0, rest_grace});
           },
           py::arg("start"), py::arg("goal"), py::arg("others") = MovingObstacles{},
           py::arg("leaves") = false, py::arg("keep_out") = KeepOut{},
+          py::arg("rest_grace") = std::numeric_limits<double>::infinity(),
           py::call_guard<py::gil_scoped_release>(),
           "Best-first search; `others`: agent plans to keep clear of as moving obstacles; "
           "`leaves`: the character is gone at the goal, so needs no room to rest there; "
-          "`keep_out`: circles its rests keep out of (a way another agent waits to take).")
+          "`keep_out`: circles its rests keep out of (a way another agent waits to take); "
+          "`rest_grace`: seconds a walking other stands where its plan ends (its rest is "
+          "provisional); the steps are then cut before the first that runs into it. "
+          "ValueError if negative.")
       .def("heuristic", &FootstepPlanner::heuristic, py::arg("state"), py::arg("goal"))
       .def("expected_step_cost", &FootstepPlanner::expected_step_cost)
       .def("expected_step_length", &FootstepPlanner::expected_step_length)

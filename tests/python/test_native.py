@@ -170,3 +170,19 @@ def test_search_keeps_clear_of_other_plans(ff):
     # Alone it walks the line through the other; aware, it steps aside.
     assert max(abs(s.com_end[1]) for s in alone.footsteps) < 0.3
     assert max(abs(s.com_end[1]) for s in aware.footsteps) > 0.3
+
+
+def test_search_takes_a_walking_agents_rest_for_its_grace_only(ff):
+    character = ff.CharacterParams()
+    planner = ff.FootstepPlanner(character, ff.PlannerParams(), ff.ObstacleMap([]))
+    # It crosses the way and rests on it, at (8, 0).
+    crossing = ff.plan_agent(ff.AgentSpec("crossing", (8.0, -1.5), math.pi / 2, [(8.0, 0.0)]), planner)
+    start = ff.standing_state((0.0, 0.0), 0.0, character)
+    around = planner.plan(start, (12.0, 0.0), [crossing])
+    assert around.status == ff.Status.SUCCESS
+    # Its rest taken for a second only: straight on, cut before the rest.
+    straight = planner.plan(start, (12.0, 0.0), [crossing], rest_grace=1.0)
+    assert straight.status == ff.Status.PARTIAL
+    assert straight.footsteps and straight.end_state.com[0] < 8.0
+    with pytest.raises(ValueError, match="rest_grace"):
+        planner.plan(start, (12.0, 0.0), [crossing], rest_grace=-1.0)
