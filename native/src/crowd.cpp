@@ -470,7 +470,7 @@ struct Proposal {
   double from = 0.0;               ///< The trial differs from the plan from then on. [s]
   bool new_place = false;          ///< It rests somewhere new: it needs room there.
   std::vector<std::size_t> close;  ///< The agents near (near()).
-  std::vector<char> touches;       ///< Per close: the trial touches its plan.
+  std::vector<char> hits;          ///< Per close: the trial touches its plan.
   std::vector<char> no_room;       ///< Per close: no room to rest beside it (new_place).
 };
 
@@ -501,7 +501,7 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
   // A new place to rest needs room among everyone, seen or not.
   p.new_place = !p.leaving && distance(p.rested.com, rest_of(w).com) > kSamePlace;
   for (const std::size_t j : p.close) {
-    p.touches.push_back(touches(p.trial, p.from, planner, walkers[j].plan));
+    p.hits.push_back(touches(p.trial, p.from, planner, walkers[j].plan));
     p.no_room.push_back(p.new_place && !planner.stands_clear(p.rested, {&walkers[j].plan}));
   }
   return p;
@@ -515,7 +515,7 @@ int refusal(const std::vector<Walker>& walkers, const Proposal& p, const std::ve
   if (p.trial.footsteps.empty()) return -1;
   for (std::size_t c = 0; c < p.close.size(); ++c) {
     const AgentPlan& other = walkers[p.close[c]].plan;
-    if (changed[p.close[c]] ? touches(p.trial, p.from, planner, other) : p.touches[c])
+    if (changed[p.close[c]] ? touches(p.trial, p.from, planner, other) : p.hits[c])
       return static_cast<int>(c);
   }
   if (!p.new_place) return -1;
