@@ -81,7 +81,9 @@ LocalGoal local_goal(const FootstepPlanner& planner, const NavMesh* mesh, const 
     reach = std::max(kMinAhead, kSightBackOff * reach);
   if (way.length <= reach) return {way.points.back(), true};
   constexpr double kStep = 0.25;  // [m]
-  for (double along = reach; along > 0.0; along -= kStep) {
+  // Not within the goal tolerance of the agent: it would count as there
+  // already, and stand still for good (beside a box, where the way hugs it).
+  for (double along = reach; along > planner.params().goal_tolerance; along -= kStep) {
     const Vec2 point = point_along(way.points, along);
     const Vec2 ahead = point_along(way.points, along + kStep);
     const double facing = angle_of(ahead - point);

@@ -28,7 +28,9 @@ struct LocalGoal {
 
 /// The goal if the way to it is within local_goal_distance and in sight;
 /// else the farthest point of the way within that distance that is in sight,
-/// moved back along the way until the agent could stand there.
+/// moved back along the way until the agent could stand there (but not to
+/// within the goal tolerance of it: then the point in sight, standing room
+/// or not).
 LocalGoal local_goal(const FootstepPlanner& planner, const NavMesh* mesh, const Way& way);
 
 }  // namespace footfall

@@ -125,6 +125,17 @@ TEST(Planner, DemoReachesThroughTheDoorAndAroundTheBox) {
   expect_reached(agent, demo.agents[0].goals[0]);
 }
 
+// Standing just below a box's edge (in the 80 m field of 700 boxes of the
+// table-1 crowd), its goal 3.5 m on beyond the box: the way hugs the box,
+// where there is no room to stand but at 0.25 m ahead. That local goal once
+// counted as reached at once, and the agent stood there until it was stuck.
+TEST(Planner, AnAgentBesideABoxWalksOn) {
+  const Scenario scenario =
+      one_agent(box_field(700, 80.0, 7), {13.011, 6.398}, -0.962, {16.2987, 6.5567});
+  const AgentPlan agent = plan_and_check(scenario);
+  EXPECT_EQ(agent.status, AgentStatus::kReached) << agent.reason;
+}
+
 TEST(Planner, EnclosedGoalGivesAPartialPlanEndingInStops) {
   // A closed room around the goal: unreachable, though not inside an obstacle.
   const std::vector<Obstacle> room = {
