@@ -6,9 +6,10 @@
 // through them (the shortest start-portal-goal detour over each portal, kept
 // r from its ends), so the first clear funnel path whose length is at most
 // the next channel's bound is the shortest of all channels searched. The
-// narrowness tests (portal length and corner width, both at least 2r) are
+// narrowness tests (portal length and corner width, both at least 2r, and
+// some point of the portal r clear of the two faces beside it) are
 // necessary conditions: they never drop a channel a disc could pass. They are
-// not sufficient everywhere (an obstacle beside a long portal can pinch a
+// not sufficient everywhere (an obstacle further off can still pinch a
 // channel they accept), which is why every funnel path is measured against
 // the obstacles; a channel that fails is skipped and the search goes on.
 #include <algorithm>
@@ -171,9 +172,10 @@ class ChannelSearch {
 
  private:
   /// What the search knows of one face: its corners' widths (NaN until
-  /// measured), whether a disc can cross each edge at all, and, per entry edge, the last node kept
-  /// that came in through it, how many dominated ones were kept anyway, and the shortest relaxed
-  /// length to each end of its gate for a path that turns there.
+  /// measured), whether a disc can cross each edge at all, and, per entry
+  /// edge, the last node kept that came in through it, how many dominated
+  /// ones were kept anyway, and the shortest relaxed length to each end of
+  /// its gate for a path that turns there.
   enum Tested : char { kUntested, kPasses, kFails };
   struct FaceSearch {
     std::array<double, 3> corner_width{kNaN, kNaN, kNaN};

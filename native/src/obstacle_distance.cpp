@@ -85,12 +85,14 @@ bool portal_covered(Face f, int edge, double radius) {
   if (radius <= 0) return false;  // a point crosses between the ends
   const Vec2 a = to_vec(f->vertex(Cdt::ccw(edge))->point());
   const Vec2 d = to_vec(f->vertex(Cdt::cw(edge))->point()) - a;
-  const double len2 = dot(d, d);
+  const double len2 = dot(d, d), len = std::sqrt(len2);
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  // The parameters t of the points a + t d nearer than `radius` to each
-  // vertex (a chord of its circle) and to each constrained edge between its
-  // ends (a strip along its line, cut where the foot leaves the edge).
-  std::array<std::pair<double, double>, 12> near;  // 6 vertices, 6 edges
+  // The parameters t of the points a + t d nearer than `radius` to the far
+  // vertex of each face (a chord of its circle) and to each constrained
+  // side edge between its ends (a strip along its line, cut where the foot
+  // leaves the edge). The ends a and b cover t < radius / len and beyond
+  // 1 - radius / len.
+  std::array<std::pair<double, double>, 6> near;
   int count = 0;
   auto near_vertex = [&](Vec2 p) {
     const double h = cross(d, p - a) / len2, mid = dot(d, p - a) / len2;
@@ -114,19 +116,27 @@ bool portal_covered(Face f, int edge, double radius) {
     keep(dot(u, a - c), dot(u, d), 0.0, ul * ul);
     if (t0 < t1) near[count++] = {t0, t1};
   };
-  for (const Face g : {f, f->neighbor(edge)})
-    for (int i = 0; i < 3; ++i) {
-      near_vertex(to_vec(g->vertex(i)->point()));
-      if (g->is_constrained(i))
-        near_edge(to_vec(g->vertex(Cdt::ccw(i))->point()), to_vec(g->vertex(Cdt::cw(i))->point()));
-    }
-  std::sort(near.begin(), near.begin() + count);
-  double covered = 0.0;
-  for (int k = 0; k < count && covered <= 1.0; ++k) {
-    if (near[k].first >= covered) return false;  // a gap, or a point just touching
-    covered = std::max(covered, near[k].second);
+  const Face other = f->neighbor(edge);
+  for (const auto& [g, far] : {std::pair{f, edge}, std::pair{other, other->index(f)}}) {
+    near_vertex(to_vec(g->vertex(far)->point()));
+    for (const int side : {Cdt::ccw(far), Cdt::cw(far)})
+      if (g->is_constrained(side))
+        near_edge(to_vec(g->vertex(Cdt::ccw(side))->point()),
+                  to_vec(g->vertex(Cdt::cw(side))->point()));
   }
-  return covered > 1.0;
+  // Covered from a's end on, as far as the intervals overlap (one that only
+  // touches leaves a point clear).
+  double covered = radius / len;
+  const double to_b = 1.0 - radius / len;
+  for (bool grew = true; grew && covered <= to_b;) {
+    grew = false;
+    for (int k = 0; k < count; ++k)
+      if (near[k].first < covered && near[k].second > covered) {
+        covered = near[k].second;
+        grew = true;
+      }
+  }
+  return covered > to_b;
 }
 
 double corner_width(const NavMeshState& mesh, Face f, int corner, double limit) {
