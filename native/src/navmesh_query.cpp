@@ -6,9 +6,10 @@
 // through them (the shortest start-portal-goal detour over each portal, kept
 // r from its ends), so the first clear funnel path whose length is at most
 // the next channel's bound is the shortest of all channels searched. The
-// narrowness tests (portal length and corner width, both at least 2r) are
+// narrowness tests (portal length and corner width, both at least 2r, and
+// some point of the portal r clear of the two faces beside it) are
 // necessary conditions: they never drop a channel a disc could pass. They are
-// not sufficient everywhere (an obstacle beside a long portal can pinch a
+// not sufficient everywhere (an obstacle further off can still pinch a
 // channel they accept), which is why every funnel path is measured against
 // the obstacles; a channel that fails is skipped and the search goes on.
 #include <algorithm>
@@ -171,11 +172,14 @@ class ChannelSearch {
 
  private:
   /// What the search knows of one face: its corners' widths (NaN until
-  /// measured) and, per entry edge, the last node kept that came in through
-  /// it, how many dominated ones were kept anyway, and the shortest relaxed
-  /// length to each end of its gate for a path that turns there.
+  /// measured), whether a disc can cross each edge at all, and, per entry
+  /// edge, the last node kept that came in through it, how many dominated
+  /// ones were kept anyway, and the shortest relaxed length to each end of
+  /// its gate for a path that turns there.
+  enum Tested : char { kUntested, kPasses, kFails };
   struct FaceSearch {
     std::array<double, 3> corner_width{kNaN, kNaN, kNaN};
+    std::array<Tested, 3> crossing{kUntested, kUntested, kUntested};
     std::array<int, 3> last_in{-1, -1, -1};
     std::array<int, 3> rivals{0, 0, 0};
     std::array<std::array<double, 2>, 3> turn_g{{{kInf, kInf}, {kInf, kInf}, {kInf, kInf}}};
@@ -188,7 +192,7 @@ class ChannelSearch {
     FaceSearch& here = faces_[f];
     if (node.entry == kNoEdge) {  // the start's triangle: every gate is seen whole
       for (int exit = 0; exit < 3; ++exit)
-        if (passable(node, here, exit))
+        if (passable(node, here, exit) && reaches_goal(f, exit))
           push(index, exit, exit_gate(f, exit), true, true, node.root, node.g);
       return;
     }
@@ -200,7 +204,7 @@ class ChannelSearch {
         std::abs(cross(at_right - at_left, node.root - at_left)) <= 1e-12 * dot(to_left, to_left) ||
         cross(to_left, to_right) >= 0;
     for (const int exit : {Cdt::cw(node.entry), Cdt::ccw(node.entry)}) {
-      if (!passable(node, here, exit)) continue;
+      if (!passable(node, here, exit) || !reaches_goal(f, exit)) continue;
       const Gate gate = exit_gate(f, exit);
       if (sees_all) {
         push(index, exit, gate, true, true, node.root, node.g);
@@ -294,6 +298,7 @@ class ChannelSearch {
       Node at{};
       at.face = f;
       at.entry = entry;
+      at.root = q_.to;  // read only where the flood starts, at the goal
       for (int exit = 0; exit < 3; ++exit) {
         if (exit == entry || !passable(at, faces_[f], exit)) continue;
         const Face next = f->neighbor(exit);
@@ -323,12 +328,45 @@ class ChannelSearch {
     const Vec2 a = to_vec(f->vertex(Cdt::ccw(exit))->point());
     const Vec2 b = to_vec(f->vertex(Cdt::cw(exit))->point());
     if (distance(a, b) < need) return false;
-    if (node.entry == kNoEdge) return true;
-    // Each corner's width is measured once per query, however often its
-    // face is expanded (the walk behind it is the costly part).
-    double& width = here.corner_width[3 - node.entry - exit];
-    if (std::isnan(width)) width = corner_width(mesh_, f, 3 - node.entry - exit, need);
-    return width >= need;
+    if (node.entry == kNoEdge) {
+      if (!reaches(f, exit, node.root)) return false;
+    } else {
+      // Each corner's width is measured once per query, however often its
+      // face is expanded (the walk behind it is the costly part).
+      double& width = here.corner_width[3 - node.entry - exit];
+      if (std::isnan(width)) width = corner_width(mesh_, f, 3 - node.entry - exit, need);
+      if (width < need) return false;
+    }
+    // The corner tests look across one edge only; an obstacle of the face
+    // beyond the portal can still leave no point of it clear (a disturbance).
+    // Points clear by r less the measuring slack count as crossings.
+    Tested& crossing = here.crossing[exit];
+    if (crossing == kUntested)
+      crossing = portal_covered(f, exit, q_.radius - 2 * kClearanceSlack) ? kFails : kPasses;
+    return crossing == kPasses;
+  }
+
+  /// False if a disc at `p` in face `f` cannot reach edge `exit` of `f`
+  /// without leaving `f`: the corner test for a path that starts or ends
+  /// inside a face, looking across the opposite edge only between the
+  /// corner's edge and p.
+  bool reaches(Face f, int exit, Vec2 p) const {
+    const double need = 2 * q_.radius;
+    const Vec2 a = to_vec(f->vertex(Cdt::ccw(exit))->point());
+    const Vec2 b = to_vec(f->vertex(Cdt::cw(exit))->point());
+    return wedge_width(mesh_, f, Cdt::ccw(exit), b, p, need) >= need &&
+           wedge_width(mesh_, f, Cdt::cw(exit), p, a, need) >= need;
+  }
+
+  /// False if the edge `exit` of `f` leads into the goal's face, from where
+  /// the disc cannot reach the goal.
+  bool reaches_goal(Face f, int exit) {
+    const Face next = f->neighbor(exit);
+    if (next != goal_) return true;
+    const int entry = next->index(f);
+    if (goal_entry_[entry] == kUntested)
+      goal_entry_[entry] = reaches(next, entry, q_.to) ? kPasses : kFails;
+    return goal_entry_[entry] == kPasses;
   }
 
   void unwind(int index, Channel& channel) const {
@@ -350,6 +388,7 @@ class ChannelSearch {
   const PathQuery& q_;
   Face goal_;
   int rivals_;
+  std::array<Tested, 3> goal_entry_{kUntested, kUntested, kUntested};  ///< Per goal face edge.
   int expanded_ = 0;
   std::vector<Node> nodes_;
   /// (f, node): lowest bound first.

@@ -2,8 +2,11 @@
 #include "obstacle_distance.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 namespace footfall {
@@ -39,9 +42,9 @@ bool clip_to_wedge(Vec2 apex, Vec2 from, Vec2 to, Vec2& p, Vec2& q) {
 
 double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   if (segments_cross(a, b, c, d)) return 0.0;
-  return std::sqrt(
-      std::min(std::min(squared_distance_to_segment(a, c, d), squared_distance_to_segment(b, c, d)),
-               std::min(squared_distance_to_segment(c, a, b), squared_distance_to_segment(d, a, b))));
+  return std::sqrt(std::min(
+      std::min(squared_distance_to_segment(a, c, d), squared_distance_to_segment(b, c, d)),
+      std::min(squared_distance_to_segment(c, a, b), squared_distance_to_segment(d, a, b))));
 }
 
 double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, double limit,
@@ -60,7 +63,8 @@ double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, d
     for (int i = 0; i < 3; ++i) {
       const Vec2 v = to_vec(f->vertex(i)->point());
       consider(distance_to_segment(v, a, b), {v, v, v});
-      const Vec2 c = to_vec(f->vertex(Cdt::ccw(i))->point()), d = to_vec(f->vertex(Cdt::cw(i))->point());
+      const Vec2 c = to_vec(f->vertex(Cdt::ccw(i))->point()),
+                 d = to_vec(f->vertex(Cdt::cw(i))->point());
       const double gap = segment_distance(a, b, c, d);
       if (f->is_constrained(i)) {
         if (gap >= best) continue;
@@ -77,11 +81,75 @@ double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, d
   return best;
 }
 
+bool portal_covered(Face f, int edge, double radius) {
+  if (radius <= 0) return false;  // a point crosses between the ends
+  const Vec2 a = to_vec(f->vertex(Cdt::ccw(edge))->point());
+  const Vec2 d = to_vec(f->vertex(Cdt::cw(edge))->point()) - a;
+  const double len2 = dot(d, d), len = std::sqrt(len2);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  // The parameters t of the points a + t d nearer than `radius` to the far
+  // vertex of each face (a chord of its circle) and to each constrained
+  // side edge between its ends (a strip along its line, cut where the foot
+  // leaves the edge). The ends a and b cover t < radius / len and beyond
+  // 1 - radius / len.
+  std::array<std::pair<double, double>, 6> near;
+  int count = 0;
+  auto near_vertex = [&](Vec2 p) {
+    const double h = cross(d, p - a) / len2, mid = dot(d, p - a) / len2;
+    const double half2 = radius * radius / len2 - h * h;
+    if (half2 > 0) near[count++] = {mid - std::sqrt(half2), mid + std::sqrt(half2)};
+  };
+  auto near_edge = [&](Vec2 c, Vec2 e) {
+    const Vec2 u = e - c;
+    double t0 = -kInf, t1 = kInf;
+    auto keep = [&](double at_a, double slope, double lo, double hi) {  // lo < at_a + slope t < hi
+      if (slope == 0) {
+        if (!(at_a > lo && at_a < hi)) t0 = kInf;
+        return;
+      }
+      const double x = (lo - at_a) / slope, y = (hi - at_a) / slope;
+      t0 = std::max(t0, std::min(x, y));
+      t1 = std::min(t1, std::max(x, y));
+    };
+    const double ul = length(u);
+    keep(cross(u, a - c) / ul, cross(u, d) / ul, -radius, radius);
+    keep(dot(u, a - c), dot(u, d), 0.0, ul * ul);
+    if (t0 < t1) near[count++] = {t0, t1};
+  };
+  const Face other = f->neighbor(edge);
+  for (const auto& [g, far] : {std::pair{f, edge}, std::pair{other, other->index(f)}}) {
+    near_vertex(to_vec(g->vertex(far)->point()));
+    for (const int side : {Cdt::ccw(far), Cdt::cw(far)})
+      if (g->is_constrained(side))
+        near_edge(to_vec(g->vertex(Cdt::ccw(side))->point()),
+                  to_vec(g->vertex(Cdt::cw(side))->point()));
+  }
+  // Covered from a's end on, as far as the intervals overlap (one that only
+  // touches leaves a point clear).
+  double covered = radius / len;
+  const double to_b = 1.0 - radius / len;
+  for (bool grew = true; grew && covered <= to_b;) {
+    grew = false;
+    for (int k = 0; k < count; ++k)
+      if (near[k].first < covered && near[k].second > covered) {
+        covered = near[k].second;
+        grew = true;
+      }
+  }
+  return covered > to_b;
+}
+
 double corner_width(const NavMeshState& mesh, Face f, int corner, double limit) {
   const Vec2 apex = to_vec(f->vertex(corner)->point());
   const Vec2 from = to_vec(f->vertex(Cdt::ccw(corner))->point());
   const Vec2 to = to_vec(f->vertex(Cdt::cw(corner))->point());
-  double best = std::min(limit, std::min(distance(apex, from), distance(apex, to)));
+  return wedge_width(mesh, f, corner, from, to,
+                     std::min(limit, std::min(distance(apex, from), distance(apex, to))));
+}
+
+double wedge_width(const NavMeshState& mesh, Face f, int corner, Vec2 from, Vec2 to, double limit) {
+  const Vec2 apex = to_vec(f->vertex(corner)->point());
+  double best = limit;
   // Edges still to look across: (face, edge index), all beyond the opposite edge.
   std::vector<std::pair<Face, int>> stack{{f, corner}};
   std::unordered_set<Face> seen{f};

@@ -35,6 +35,22 @@ double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b,
 double corner_width(const NavMeshState& mesh, Face f, int corner,
                     double limit = std::numeric_limits<double>::infinity());
 
+/// The same width within the wedge at `corner` from the ray through `from`
+/// counter-clockwise to the ray through `to` (both inside the corner's angle),
+/// without the cap by the edges beside the corner. A disc that starts or ends
+/// at a point p in `f` reaches the edge from the corner to vertex v within `f`
+/// only if this is at least 2r between v and p: a shorter segment from the
+/// corner to an obstacle beyond would cut p off from that edge. [m]
+double wedge_width(const NavMeshState& mesh, Face f, int corner, Vec2 from, Vec2 to,
+                   double limit = std::numeric_limits<double>::infinity());
+
+/// True if every point of edge `edge` of `f` is nearer than `radius` to a
+/// vertex or a constrained edge of the two faces beside it, so that no disc
+/// of that radius can cross it. Corner widths look across one edge only, so
+/// they can pass a portal that an obstacle of the face on its other side
+/// pinches (a disturbance, in Kallmann's words).
+bool portal_covered(Face f, int edge, double radius);
+
 /// Distance between the segments [a, b] and [c, d]. [m]
 double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 
