@@ -10,6 +10,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "box_scenes.hpp"
 #include "footfall/navmesh.hpp"
 
 namespace footfall {
@@ -135,11 +136,11 @@ TEST(NavMesh, SelfIntersectingPolygonBlocksBothLobes) {
 TEST(NavMesh, ClearanceBetweenTwoPointsSeesPastAndThroughObstacles) {
   NavMesh mesh({0, 0}, {10, 10});
   mesh.add_polygon(box({4, 4}, {6, 6}));
-  EXPECT_NEAR(mesh.clearance_between({1, 7}, {9, 7}), 1.0, 1e-12);     // past the box's top
-  EXPECT_NEAR(mesh.clearance_between({1, 9.5}, {9, 9.5}), 0.5, 1e-12);  // nearer the boundary
-  EXPECT_EQ(mesh.clearance_between({1, 5}, {9, 5}), 0.0);               // through the box
-  EXPECT_EQ(mesh.clearance_between({5, 5}, {9, 5}), 0.0);               // from inside it
-  EXPECT_EQ(mesh.clearance_between({1, 5}, {11, 5}), 0.0);              // out of the domain
+  EXPECT_NEAR(mesh.clearance_between({1, 7}, {9, 7}), 1.0, 1e-12);         // past the box's top
+  EXPECT_NEAR(mesh.clearance_between({1, 9.5}, {9, 9.5}), 0.5, 1e-12);     // nearer the boundary
+  EXPECT_EQ(mesh.clearance_between({1, 5}, {9, 5}), 0.0);                  // through the box
+  EXPECT_EQ(mesh.clearance_between({5, 5}, {9, 5}), 0.0);                  // from inside it
+  EXPECT_EQ(mesh.clearance_between({1, 5}, {11, 5}), 0.0);                 // out of the domain
   EXPECT_NEAR(mesh.clearance_between({1, 7}, {9, 7}, 0.25), 0.25, 1e-12);  // up to the limit
 }
 
@@ -190,7 +191,9 @@ void check_updates_against_rebuilds(bool overlapping) {
   std::vector<PathQuery> queries;
   for (int i = 0; i < 12; ++i)
     queries.push_back({{uniform(0.5, 29.5), uniform(0.5, 29.5)},
-                       {uniform(0.5, 29.5), uniform(0.5, 29.5)}, uniform(0, 1.2), 0.01});
+                       {uniform(0.5, 29.5), uniform(0.5, 29.5)},
+                       uniform(0, 1.2),
+                       0.01});
   int compared = 0, found = 0;
   for (int step = 0; step < 120; ++step) {
     if (live.empty() || uniform(0, 1) < 0.6) {
@@ -275,12 +278,18 @@ TEST(NavMesh, AGoalWalledInAcrossAWideFieldHasNoPath) {
 // one, which flooded the room as if inside that wall.
 TEST(NavMesh, WallsMeetingOneUlpApartLeaveTheRoomFree) {
   NavMesh mesh({-10, -10}, {17, 10});
-  mesh.add_polygon({{4.9000000000000004, -5.2000000000000002}, {5.0999999999999996, -5.2000000000000002},
-                    {5.0999999999999996, -0.59999999999999964}, {4.9000000000000004, -0.59999999999999964}});
-  mesh.add_polygon({{4.9000000000000004, 0.59999999999999964}, {5.0999999999999996, 0.59999999999999964},
-                    {5.0999999999999996, 5.2000000000000002}, {4.9000000000000004, 5.2000000000000002}});
-  mesh.add_polygon({{-5.0999999999999996, -5.2000000000000002}, {-4.9000000000000004, -5.2000000000000002},
-                    {-4.9000000000000004, 5.2000000000000002}, {-5.0999999999999996, 5.2000000000000002}});
+  mesh.add_polygon({{4.9000000000000004, -5.2000000000000002},
+                    {5.0999999999999996, -5.2000000000000002},
+                    {5.0999999999999996, -0.59999999999999964},
+                    {4.9000000000000004, -0.59999999999999964}});
+  mesh.add_polygon({{4.9000000000000004, 0.59999999999999964},
+                    {5.0999999999999996, 0.59999999999999964},
+                    {5.0999999999999996, 5.2000000000000002},
+                    {4.9000000000000004, 5.2000000000000002}});
+  mesh.add_polygon({{-5.0999999999999996, -5.2000000000000002},
+                    {-4.9000000000000004, -5.2000000000000002},
+                    {-4.9000000000000004, 5.2000000000000002},
+                    {-5.0999999999999996, 5.2000000000000002}});
   mesh.add_polygon({{-5, 5}, {5, 5}, {5, 5.1999999999999993}, {-5, 5.1999999999999993}});
   mesh.add_polygon({{-5, -5.1999999999999993}, {5, -5.1999999999999993}, {5, -5}, {-5, -5}});
   EXPECT_NEAR(mesh.clearance({3.06, 1.75}), 1.84, 1e-9);
@@ -294,7 +303,8 @@ TEST(NavMesh, InsertionOrderDoesNotChangeWhatIsFree) {
       box({20.36, 24.09}, {21.29, 28.95}),  // across the top of the domain
       {{21.93, 26.42}, {18.36, 25.87}, {20.78, 22.35}, {21.59, 22.65}, {22.49, 23.64}},
       {{11.65, 5.28}, {16.76, 6.56}},  // a wall from outside the domain
-      box({18.0, 24.5}, {19.0, 25.5}), box({18.5, 25.0}, {21.0, 30.0})};
+      box({18.0, 24.5}, {19.0, 25.5}),
+      box({18.5, 25.0}, {21.0, 30.0})};
   auto free_area = [&](const std::vector<std::size_t>& order) {
     NavMesh mesh({15.77, 5.12}, {36.55, 26.84});
     for (std::size_t i : order) mesh.add_polygon(obstacles[i]);
@@ -313,8 +323,25 @@ TEST(NavMesh, InsertionOrderDoesNotChangeWhatIsFree) {
 TEST(NavMesh, UpdatesAnswerLikeARebuild) { check_updates_against_rebuilds(false); }
 // Boxes that overlap each other: every face's winding must survive the
 // intersection vertices that inserts and removals leave behind.
-TEST(NavMesh, OverlappingUpdatesAnswerLikeARebuild) {
-  check_updates_against_rebuilds(true);
+TEST(NavMesh, OverlappingUpdatesAnswerLikeARebuild) { check_updates_against_rebuilds(true); }
+
+// Four of the benchmark's queries on its 10,000 boxes at r = 3 m, once
+// answered "no path" after 300-600 ms: a portal pinched by a vertex of the
+// next triangle (5.987 m from the box edge, under the disc's 6 m) passed the
+// corner tests (each looks across the opposite edge only), and its channels,
+// shorter by the search's bound, pruned every one a disc can take (queries
+// 55, 165, 175); and leaving the start's triangle had no corner test (186).
+TEST(NavMesh, APinchedPortalDoesNotHideTheWayRound) {
+  const std::unique_ptr<NavMesh> mesh = bench::build(bench::box_scene(10000, 1000.0, 2));
+  const std::vector<PathQuery> queries = bench::queries(*mesh, 3.0, 200, 7);
+  const std::map<int, double> lengths = {{55, 780.72}, {165, 569.37}, {175, 603.61}, {186, 740.93}};
+  for (const auto& [index, length] : lengths) {
+    SCOPED_TRACE(::testing::Message() << "query " << index);
+    const PathResult path = mesh->find_path(queries[index]);
+    ASSERT_EQ(path.status, PathStatus::kFound);
+    EXPECT_NEAR(path.length, length, 0.01);
+    EXPECT_GE(path.min_clearance, 3.0 - 1e-6);
+  }
 }
 
 }  // namespace
