@@ -26,11 +26,12 @@ namespace {
 
 constexpr int kExitBadInput = 2;
 
+// The usage keeps its columns.
+// clang-format off
 const char* const kUsage =
     "usage: footfall plan SCENARIO -o PLAN [--threads N]\n"
     "                                         plan every agent of a scenario (JSON, or SteerSuite\n"
-    "                                         .xml) on N threads (default 1; same plan either "
-    "way)\n"
+    "                                         .xml) on N threads (default 1; same plan either way)\n"
     "       footfall demo [-o PLAN] [--threads N]  the built-in demo (default out/demo-plan.json)\n"
     "       footfall metrics PLAN             our figures and SteerBench's, per agent, at 20 Hz\n"
     "       footfall path SCENARIO --from X,Y --to X,Y --radius R\n"
@@ -39,6 +40,7 @@ const char* const kUsage =
     "       footfall bench --crowds [--threads N]\n"
     "                                         plan the crowd workloads of the paper's table 1\n"
     "       footfall --version | --help\n";
+// clang-format on
 
 struct UsageError : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
