@@ -275,41 +275,53 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
   const double my_reach = std::max(sweep.radius, distance(foot.center, sweep.center) + foot.radius);
   const double my_top_speed =
       std::max(length(step.com_velocity_start), length(step.com_velocity_end));
-  thread_local std::vector<std::size_t> close;
-  close.clear();
-  for (std::size_t j = 0; j < others.size(); ++j) {
+  const auto may_come_near = [&](std::size_t j) {
     const double pad = 0.5 * (my_top_speed + others.top_speed(j)) * kContactDt;
     const double reach = my_reach + others.reach(j) + pad + others.top_speed(j) * span;
     const Vec2 d = others.at(j, middle).com - sweep.center;
-    if (dot(d, d) <= reach * reach) close.push_back(j);
-  }
-  if (close.empty()) return false;
+    return dot(d, d) <= reach * reach;
+  };
+  // The character at each instant, sampled when first wanted: COM, speed,
+  // torso circles, and how far those and the foot reach from the COM.
+  struct Instant {
+    Vec2 com;
+    double speed;
+    std::array<Circle, 3> torso;
+    double extent;
+  };
+  thread_local std::vector<Instant> mine;
+  mine.clear();
+  const auto torso_offsets = torso_circles({0.0, 0.0}, step.phi, character_);  // as above
+  const auto instant = [&](long k) -> const Instant& {
+    while (first + static_cast<long>(mine.size()) <= k) {
+      const double t = static_cast<double>(first + static_cast<long>(mine.size())) * kContactDt;
+      const ComSample me = com_at(step, t);
+      Instant sample{me.position, length(me.velocity), torso_offsets,
+                     std::max(torso_extent_, distance(foot.center, me.position) + foot.radius)};
+      for (Circle& circle : sample.torso) circle.center = me.position + circle.center;
+      mine.push_back(sample);
+    }
+    return mine[static_cast<std::size_t>(k - first)];
+  };
   // A step from standing that starts on an instant starts where the
   // character stood: it stood still there, whatever speed the step sets off at.
   const bool stood_at_first =
       from_standing && std::fabs(static_cast<double>(first) * kContactDt - step.start_time) < 1e-9;
-  // Per close agent, the gap at the step's first instant (see touching()).
-  thread_local std::vector<double> start_gap;
-  start_gap.assign(close.size(), std::numeric_limits<double>::infinity());
-  const auto torso_offsets = torso_circles({0.0, 0.0}, step.phi, character_);  // as above
-  for (long k = first; k <= last; ++k) {
-    const ComSample me = com_at(step, static_cast<double>(k) * kContactDt);
-    const double speed = length(me.velocity);
-    auto torso = torso_offsets;
-    for (Circle& circle : torso) circle.center = me.position + circle.center;
-    const double extent = std::max(torso_extent_, distance(foot.center, me.position) + foot.radius);
-    for (std::size_t c = 0; c < close.size(); ++c) {
-      if (!others.counts(close[c], k)) continue;
-      const detail::AgentWhere& them = others.at(close[c], k);
+  const auto touches = [&](std::size_t j) {
+    double start_gap = std::numeric_limits<double>::infinity();  // see touching()
+    for (long k = first; k <= last; ++k) {
+      if (!others.counts(j, k)) continue;
+      const Instant& me = instant(k);
+      const detail::AgentWhere& them = others.at(j, k);
       // Both move between instants: the circles are grown by half the travel.
-      const double pad = 0.5 * (speed + them.speed) * kContactDt;
-      const Vec2 between = me.position - them.com;
-      const double near = extent + others.reach(close[c]) + pad;
+      const double pad = 0.5 * (me.speed + them.speed) * kContactDt;
+      const Vec2 between = me.com - them.com;
+      const double near = me.extent + others.reach(j) + pad;
       if (dot(between, between) > near * near) continue;
-      const detail::AgentShape& shape = others.shape(close[c], k);
+      const detail::AgentShape& shape = others.shape(j, k);
       // Too far apart for any pair of circles to come within the padding; at
       // the first instant the gap is still wanted for the exception below.
-      const double apart = length(between) - extent - shape.extent - pad;
+      const double apart = length(between) - me.extent - shape.extent - pad;
       if (k != first && apart > 0.0) continue;
       Gap gap;  // of the torso: the foot is put down clear of everyone, standing close or not
       for (int i = 0; i < shape.count; ++i) {
@@ -317,11 +329,22 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
         const Vec2 to_foot = foot.center - theirs.center;
         const double foot_touch = foot.radius + theirs.radius + pad;
         if (dot(to_foot, to_foot) <= foot_touch * foot_touch) return true;
-        for (const Circle& circle : torso) gap.add(circle, theirs, pad);
+        for (const Circle& circle : me.torso) gap.add(circle, theirs, pad);
       }
-      if (k == first && standing_still(stood_at_first ? 0.0 : speed, them.speed))
-        start_gap[c] = gap.outright;
-      if (touching(gap, start_gap[c])) return true;
+      if (k == first && standing_still(stood_at_first ? 0.0 : me.speed, them.speed))
+        start_gap = gap.outright;
+      if (touching(gap, start_gap)) return true;
+    }
+    return false;
+  };
+  // The agent that the last step checked touched first: a search's
+  // candidates, siblings and cousins, mostly run into the same one.
+  const std::size_t blocker = others.blocker();
+  if (blocker < others.size() && may_come_near(blocker) && touches(blocker)) return true;
+  for (std::size_t j = 0; j < others.size(); ++j) {
+    if (j != blocker && may_come_near(j) && touches(j)) {
+      others.set_blocker(j);
+      return true;
     }
   }
   return false;

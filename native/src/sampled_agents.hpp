@@ -61,6 +61,10 @@ class SampledAgents {
     if (bounds_stamp_[j] != stamp_) fill_bounds(j);
     return reach_[j];
   }
+  /// The agent a step checked against these samples touched last (or
+  /// size() and up: none yet), for the next check to try first.
+  std::size_t blocker() const { return blocker_; }
+  void set_blocker(std::size_t j) { blocker_ = j; }
   /// Walking others are taken to stand where their plans end for `grace`
   /// only (infinity: for good): their rests are provisional.
   void set_rest_grace(double grace) { rest_grace_ = grace; }
@@ -83,6 +87,7 @@ class SampledAgents {
   void fill_bounds(std::size_t j);
 
   double rest_grace_ = std::numeric_limits<double>::infinity();
+  std::size_t blocker_ = std::numeric_limits<std::size_t>::max();
   const MovingObstacles* others_ = nullptr;
   const CharacterParams* character_ = nullptr;
   std::uint64_t stamp_ = 0;        ///< Counts resets.
