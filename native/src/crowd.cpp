@@ -47,8 +47,8 @@ constexpr double kProgressInterval = 0.2;  ///< Between progress reports. [s]
 /// A new plan is checked against the agents this near now; none farther can
 /// reach it within a plan's few seconds. [m]
 constexpr double kCheckDistance = 40.0;
-/// Nodes a blocked agent's search expands at most (after two searches in a
-/// row that gained nothing).
+/// Nodes a blocked agent's search expands at most (after a search that
+/// gained nothing).
 constexpr int kBlockedHorizon = 100;
 /// Longer ago than any time: "never". [s]
 constexpr double kForever = std::numeric_limits<double>::infinity();
@@ -289,7 +289,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   const MovingObstacles others = plans_of(walkers, seen);
   // A blocked agent looks less far ahead: in a jam the full horizon finds
   // no more than waiting, at the most cost.
-  const SearchOptions options{leaves, keep_out, w.blocked >= 2 ? kBlockedHorizon : 0, kRestGrace};
+  const SearchOptions options{leaves, keep_out, w.blocked >= 1 ? kBlockedHorizon : 0, kRestGrace};
   const SearchResult result = planner.plan(w.state, target.point, others, options);
   Attempt a;
   a.steps = result.footsteps;
