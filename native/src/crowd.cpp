@@ -368,10 +368,12 @@ bool touches(const AgentPlan& trial, double from, const FootstepPlanner& planner
       continue;
     }
     const double pad = 0.5 * (length(me.velocity) + length(them.velocity)) * kContactDt;
-    const std::vector<Circle> mine = collision_circles(trial, c, t);
+    std::array<Circle, 5> mine, theirs;
+    const int my_count = collision_circles(trial, c, t, mine);
+    const int their_count = collision_circles(other, c, t, theirs);
     Gap gap;
-    for (const Circle& theirs : collision_circles(other, c, t))
-      for (const Circle& circle : mine) gap.add(circle, theirs, pad);
+    for (int i = 0; i < their_count; ++i)
+      for (int m = 0; m < my_count; ++m) gap.add(mine[m], theirs[i], pad);
     if (k == first && standing_still(length(me.velocity), length(them.velocity)))
       start_gap = gap.outright;
     if (touching(gap, start_gap)) return true;

@@ -152,15 +152,23 @@ std::array<FootPose, 2> feet_at(const AgentPlan& plan, double t) {
   return feet;
 }
 
+int collision_circles(const AgentPlan& plan, const CharacterParams& character, double t,
+                      std::array<Circle, 5>& out) {
+  if (!present_at(plan, t)) return 0;
+  const auto torso = torso_circles(com_at(plan, t).position, facing_at(plan, t), character);
+  int count = 0;
+  for (const Circle& circle : torso) out[count++] = circle;
+  for (const FootPose& foot : feet_at(plan, t)) {
+    if (foot.planted) out[count++] = {foot.position, character.foot_radius};
+  }
+  return count;
+}
+
 std::vector<Circle> collision_circles(const AgentPlan& plan, const CharacterParams& character,
                                       double t) {
-  if (!present_at(plan, t)) return {};
-  const auto torso = torso_circles(com_at(plan, t).position, facing_at(plan, t), character);
-  std::vector<Circle> circles(torso.begin(), torso.end());
-  for (const FootPose& foot : feet_at(plan, t)) {
-    if (foot.planted) circles.push_back({foot.position, character.foot_radius});
-  }
-  return circles;
+  std::array<Circle, 5> circles;
+  const int count = collision_circles(plan, character, t, circles);
+  return {circles.begin(), circles.begin() + count};
 }
 
 }  // namespace footfall

@@ -614,7 +614,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   search.generated = 0;
   search.others.reset(others, character_, start.time);
   search.others.set_rest_grace(options.rest_grace);
-  search.seen.clear(static_cast<size_t>(params_.max_expansions) * 8);
+  search.seen.clear(static_cast<size_t>(horizon) * 8);
   const detail::Heading start_heading = detail::heading_of(start);
   search.seen.insert(state_key(start.com, start_heading.angle, start_heading.speed,
                                start.standing(), start.last_foot));

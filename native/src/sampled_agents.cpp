@@ -57,10 +57,8 @@ void SampledAgents::fill(std::size_t j, long k, AgentWhere& where) const {
 void SampledAgents::fill(std::size_t j, long k, AgentShape& shape) const {
   const AgentPlan& plan = *(*others_)[j];
   const double t = static_cast<double>(k) * kContactDt;
-  const std::vector<Circle> circles = collision_circles(plan, *character_, t);
+  shape.count = collision_circles(plan, *character_, t, shape.circles);
   const Vec2 com = com_at(plan, t).position;
-  shape.count = static_cast<int>(std::min(circles.size(), shape.circles.size()));
-  std::copy_n(circles.begin(), shape.count, shape.circles.begin());
   shape.extent = 0.0;
   for (int i = 0; i < shape.count; ++i) {
     const Circle& c = shape.circles[i];

@@ -61,4 +61,9 @@ double facing_at(const AgentPlan& plan, double t);
 std::vector<Circle> collision_circles(const AgentPlan& plan, const CharacterParams& character,
                                       double t);
 
+/// The same circles without allocating (crowd checks ask for millions):
+/// they go to `out`, and the count is returned.
+int collision_circles(const AgentPlan& plan, const CharacterParams& character, double t,
+                      std::array<Circle, 5>& out);
+
 }  // namespace footfall
