@@ -224,7 +224,8 @@ bool FootstepPlanner::collides(const Footstep& step, const MovingObstacles& othe
 
 bool FootstepPlanner::collides(const Footstep& step, detail::SampledAgents& others,
                                bool from_standing) const {
-  return hits_obstacles(step) || touches_agents(step, others, from_standing);
+  // Agents first: in a crowd they turn down most candidate steps.
+  return touches_agents(step, others, from_standing) || hits_obstacles(step);
 }
 
 bool FootstepPlanner::hits_obstacles(const Footstep& step) const {
