@@ -19,10 +19,10 @@
 #include <queue>
 #include <stdexcept>
 #include <tuple>
-#include <unordered_map>
 #include <unordered_set>
 
 #include "channel_funnel.hpp"
+#include "face_numbers.hpp"
 #include "navmesh_impl.hpp"
 #include "obstacle_distance.hpp"
 
@@ -43,9 +43,16 @@ constexpr int kLoopCheck = 8;
 /// length.
 constexpr double kAheadWeight = 1.005;
 constexpr double kLengthTolerance = 0.003;
-/// Nodes a search expands before it checks whether the goal is sealed off,
-/// and how far that check floods.
-constexpr int kPocketCheckAfter = 2048;
+/// The flood that tells a goal sealed off in a pocket goes on every
+/// kPocketCheckEvery expansions of the search, up to one state for every
+/// kPocketFloodShare nodes expanded, and gives up after kPocketFlood states.
+/// Most pockets are small; a larger share would slow the queries that have a
+/// path to find (on the room scene a share of 1 halves the expansions of the
+/// no-path queries again, but the 2,000-box scene's queries then flood 75 %
+/// as many states as they expand).
+constexpr int kPocketCheckEvery = 16;
+constexpr int kPocketFloodShare = 8;
+constexpr int kPocketFlood = 2048;
 /// Dominated nodes kept per edge when a search is run again because a
 /// channel it offered failed for the disc.
 constexpr int kRivalsOnRetry = 4;
@@ -90,6 +97,7 @@ double via_segment(Vec2 from, Vec2 to, Vec2 lo, Vec2 hi) {
 /// length of a disc's path through the same channel.
 struct Node {
   Face face;
+  int slot;   ///< Where the search keeps what it knows of `face`.
   int entry;  ///< Edge of `face` the interval lies on (kNoEdge: the start).
   int parent;
   Gate interval;
@@ -138,12 +146,14 @@ class ChannelSearch {
  public:
   ChannelSearch(const NavMeshState& mesh, const PathQuery& q, Face start, Face goal, int rivals)
       : mesh_(mesh), q_(q), goal_(goal), rivals_(rivals) {
-    faces_.reserve(1024);
-    nodes_.reserve(1024);
+    searched_.reserve(256);
+    nodes_.reserve(256);
     const double straight = distance(q_.from, q_.to);
+    const Gate at_start{q_.from, q_.from};
     nodes_.push_back(
-        {start, kNoEdge, -1, {q_.from, q_.from}, false, false, q_.from, 0.0, straight});
+        {start, slot(start), kNoEdge, -1, at_start, false, false, q_.from, 0.0, straight});
     open_.push({straight, 0});
+    flood_.push_back({goal, kNoEdge});
   }
 
   /// The next channel to the goal, in order of the lower bound on the length
@@ -159,7 +169,7 @@ class ChannelSearch {
       open_.pop();
       // A long search may be walking all the ground around a goal no disc
       // can reach; a flood from the goal tells that at a fraction of the cost.
-      if (++expanded_ == kPocketCheckAfter && goal_sealed_off(nodes_.front().face)) return false;
+      if (++expanded_ % kPocketCheckEvery == 0 && goal_sealed_off()) return false;
       if (nodes_[index].face == goal_ && nodes_[index].entry != kNoEdge) {
         if (nodes_[index].f >= limit) return false;
         unwind(index, channel);
@@ -175,7 +185,8 @@ class ChannelSearch {
   /// measured), whether a disc can cross each edge at all, and, per entry
   /// edge, the last node kept that came in through it, how many dominated
   /// ones were kept anyway, and the shortest relaxed length to each end of
-  /// its gate for a path that turns there.
+  /// its gate for a path that turns there; and which states (face, entry
+  /// edge) the pocket check's flood has seen, one bit per entry.
   enum Tested : char { kUntested, kPasses, kFails };
   struct FaceSearch {
     std::array<double, 3> corner_width{kNaN, kNaN, kNaN};
@@ -183,16 +194,24 @@ class ChannelSearch {
     std::array<int, 3> last_in{-1, -1, -1};
     std::array<int, 3> rivals{0, 0, 0};
     std::array<std::array<double, 2>, 3> turn_g{{{kInf, kInf}, {kInf, kInf}, {kInf, kInf}}};
+    unsigned char flooded = 0;
   };
+  /// The slot of `f` in `searched_`, made on its first visit. Slots are
+  /// indices, not references: a new face can move every other.
+  int slot(Face f) {
+    const auto [number, fresh] = numbers_.insert(f);
+    if (fresh) searched_.emplace_back();
+    return number;
+  }
   enum Turn { kLeft = 0, kRight = 1 };
 
   void expand(int index) {
     const Node node = nodes_[index];
     const Face f = node.face;
-    FaceSearch& here = faces_[f];
+    const int here = node.slot;
     if (node.entry == kNoEdge) {  // the start's triangle: every gate is seen whole
       for (int exit = 0; exit < 3; ++exit)
-        if (passable(node, here, exit) && reaches_goal(f, exit))
+        if (passable(node, searched_[here], exit) && reaches_goal(f, exit))
           push(index, exit, exit_gate(f, exit), true, true, node.root, node.g);
       return;
     }
@@ -204,7 +223,7 @@ class ChannelSearch {
         std::abs(cross(at_right - at_left, node.root - at_left)) <= 1e-12 * dot(to_left, to_left) ||
         cross(to_left, to_right) >= 0;
     for (const int exit : {Cdt::cw(node.entry), Cdt::ccw(node.entry)}) {
-      if (!passable(node, here, exit) || !reaches_goal(f, exit)) continue;
+      if (!passable(node, searched_[here], exit) || !reaches_goal(f, exit)) continue;
       const Gate gate = exit_gate(f, exit);
       if (sees_all) {
         push(index, exit, gate, true, true, node.root, node.g);
@@ -221,11 +240,11 @@ class ChannelSearch {
       double h0 = 0.0, h1 = 1.0;
       const double via_left = node.g + length(to_left), via_right = node.g + length(to_right);
       if (node.left_end && clip_to_side(gate, h0, h1, node.root, to_left, +1, false) &&
-          first_to_turn(here, node.entry, kLeft, via_left))
+          first_to_turn(searched_[here], node.entry, kLeft, via_left))
         push_part(index, exit, gate, h0, h1, at_left, via_left);
       h0 = 0.0, h1 = 1.0;
       if (node.right_end && clip_to_side(gate, h0, h1, node.root, to_right, -1, false) &&
-          first_to_turn(here, node.entry, kRight, via_right))
+          first_to_turn(searched_[here], node.entry, kRight, via_right))
         push_part(index, exit, gate, h0, h1, at_right, via_right);
     }
   }
@@ -249,11 +268,12 @@ class ChannelSearch {
     // The goal's face may be the start's, when the straight line between
     // them is blocked: a channel may come back to it round a corner.
     if (next != goal_ && circles_back(index, next)) return;
-    FaceSearch& there = faces_[next];
+    const int slot_there = slot(next);
+    FaceSearch& there = searched_[slot_there];
     if (!admit(there, entry, interval, root, g)) return;
     const double f = g + kAheadWeight * via_segment(root, q_.to, interval.left, interval.right);
-    nodes_.push_back(
-        {next, entry, index, interval, left_end, right_end, root, g, f, there.last_in[entry]});
+    nodes_.push_back({next, slot_there, entry, index, interval, left_end, right_end, root, g, f,
+                      there.last_in[entry]});
     there.last_in[entry] = static_cast<int>(nodes_.size() - 1);
     open_.push({f, static_cast<int>(nodes_.size() - 1)});
   }
@@ -286,32 +306,39 @@ class ChannelSearch {
   }
 
   /// True if the goal's triangle lies in a pocket the disc cannot leave: a
-  /// flood from it over the traversals the search accepts ends, within
-  /// kPocketCheckAfter states, without meeting the start's triangle.
-  bool goal_sealed_off(Face start) {
-    std::vector<std::pair<Face, int>> stack{{goal_, kNoEdge}};
-    std::unordered_set<std::pair<Face, int>, FaceEntryHash> seen;
-    while (!stack.empty()) {
-      const auto [f, entry] = stack.back();
-      stack.pop_back();
-      if (f == start || seen.size() > static_cast<std::size_t>(kPocketCheckAfter)) return false;
+  /// flood from it over the traversals the search accepts ends without
+  /// meeting the start's triangle. The flood goes on where it stopped, as far
+  /// as the search's progress allows, so a goal in a small pocket is told
+  /// early, and a search with a path to find pays little for it.
+  bool goal_sealed_off() {
+    const auto budget =
+        static_cast<std::size_t>(std::min(expanded_ / kPocketFloodShare, kPocketFlood));
+    while (!flood_.empty()) {
+      if (flooded_ >= budget) return false;
+      const auto [f, entry] = flood_.back();
+      flood_.pop_back();
+      if (f == nodes_.front().face) {
+        flood_.clear();
+        flood_met_start_ = true;
+        break;
+      }
       Node at{};
       at.face = f;
       at.entry = entry;
       at.root = q_.to;  // read only where the flood starts, at the goal
       for (int exit = 0; exit < 3; ++exit) {
-        if (exit == entry || !passable(at, faces_[f], exit)) continue;
+        if (exit == entry || !passable(at, searched_[slot(f)], exit)) continue;
         const Face next = f->neighbor(exit);
-        if (seen.insert({next, next->index(f)}).second) stack.push_back({next, next->index(f)});
+        const int entry_there = next->index(f);
+        unsigned char& seen = searched_[slot(next)].flooded;
+        if (seen & (1u << entry_there)) continue;
+        seen |= 1u << entry_there;
+        ++flooded_;
+        flood_.push_back({next, entry_there});
       }
     }
-    return true;
+    return !flood_met_start_;
   }
-  struct FaceEntryHash {
-    std::size_t operator()(const std::pair<Face, int>& k) const {
-      return std::hash<const void*>()(&*k.first) * 3 + static_cast<std::size_t>(k.second);
-    }
-  };
 
   /// True if the channel ending at node `index` passed through `face` in its
   /// last kLoopCheck steps: a channel that circles back is never the shortest.
@@ -390,11 +417,16 @@ class ChannelSearch {
   int rivals_;
   std::array<Tested, 3> goal_entry_{kUntested, kUntested, kUntested};  ///< Per goal face edge.
   int expanded_ = 0;
+  /// The pocket check's flood: the states still to visit, and how many it has seen.
+  std::vector<std::pair<Face, int>> flood_;
+  std::size_t flooded_ = 0;
+  bool flood_met_start_ = false;
   std::vector<Node> nodes_;
   /// (f, node): lowest bound first.
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open_;
-  std::unordered_map<Face, FaceSearch> faces_;
+  FaceNumbers numbers_{256};
+  std::vector<FaceSearch> searched_;
 };
 
 double polyline_length(const std::vector<Vec2>& points) {

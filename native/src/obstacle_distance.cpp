@@ -5,9 +5,10 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <unordered_set>
 #include <utility>
 #include <vector>
+
+#include "face_numbers.hpp"
 
 namespace footfall {
 namespace {
@@ -55,7 +56,8 @@ double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, d
     best = d;
     if (nearest != nullptr) *nearest = found;
   };
-  std::unordered_set<Face> seen{start};
+  FaceNumbers seen;
+  seen.insert(start);
   std::vector<Face> stack{start};
   while (!stack.empty()) {
     const Face f = stack.back();
@@ -152,7 +154,8 @@ double wedge_width(const NavMeshState& mesh, Face f, int corner, Vec2 from, Vec2
   double best = limit;
   // Edges still to look across: (face, edge index), all beyond the opposite edge.
   std::vector<std::pair<Face, int>> stack{{f, corner}};
-  std::unordered_set<Face> seen{f};
+  FaceNumbers seen;
+  seen.insert(f);
   while (!stack.empty()) {
     const auto [g, i] = stack.back();
     stack.pop_back();
