@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <queue>
 #include <stdexcept>
@@ -32,7 +33,8 @@ namespace {
 constexpr int kNoEdge = 3;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-/// How far back a new triangle is looked for in its own channel.
+/// How far back a new triangle is looked for in its own channel (a byte
+/// each in Node::recent).
 constexpr int kLoopCheck = 8;
 /// The search offers channels in order of their lower bound with the part
 /// still ahead weighted by this factor, and stops once no channel left can
@@ -44,13 +46,15 @@ constexpr int kLoopCheck = 8;
 constexpr double kAheadWeight = 1.005;
 constexpr double kLengthTolerance = 0.003;
 /// The flood that tells a goal sealed off in a pocket goes on every
-/// kPocketCheckEvery expansions of the search, up to one state for every
-/// kPocketFloodShare nodes expanded, and gives up after kPocketFlood states.
-/// Most pockets are small; a larger share would slow the queries that have a
-/// path to find (on the room scene a share of 1 halves the expansions of the
-/// no-path queries again, but the 2,000-box scene's queries then flood 75 %
-/// as many states as they expand).
+/// kPocketCheckEvery expansions of the search, up to kPocketFloodStart states
+/// and one more for every kPocketFloodShare nodes expanded, and gives up
+/// after kPocketFlood states. Most pockets are small (on the room scene at
+/// r = 0.25 m, 5-20 states, where the search expands 50-250 nodes around the
+/// start); a larger share would slow the queries that have a path to find
+/// (on the 2,000-box scene a share of 1 floods 75 % as many states as the
+/// search expands).
 constexpr int kPocketCheckEvery = 16;
+constexpr int kPocketFloodStart = 16;
 constexpr int kPocketFloodShare = 8;
 constexpr int kPocketFlood = 2048;
 /// Dominated nodes kept per edge when a search is run again because a
@@ -106,6 +110,10 @@ struct Node {
   double g;            ///< Relaxed length from the start to `root`.
   double f;            ///< Lower bound on any path through this node to the goal.
   int same_edge = -1;  ///< The node kept before it that came in through the same edge.
+  /// The low byte of the slot of its face, then of its parent's, and so on
+  /// back kLoopCheck faces: most new faces miss them all, and need no walk
+  /// back to rule out a loop.
+  std::uint64_t recent = 0;
 };
 
 /// Triangles from start to goal and the portals between them: portal k
@@ -150,8 +158,9 @@ class ChannelSearch {
     nodes_.reserve(256);
     const double straight = distance(q_.from, q_.to);
     const Gate at_start{q_.from, q_.from};
-    nodes_.push_back(
-        {start, slot(start), kNoEdge, -1, at_start, false, false, q_.from, 0.0, straight});
+    const int start_slot = slot(start);
+    nodes_.push_back({start, start_slot, kNoEdge, -1, at_start, false, false, q_.from, 0.0,
+                      straight, -1, static_cast<std::uint8_t>(start_slot)});
     open_.push({straight, 0});
     flood_.push_back({goal, kNoEdge});
   }
@@ -267,13 +276,14 @@ class ChannelSearch {
     const int entry = next->index(from);
     // The goal's face may be the start's, when the straight line between
     // them is blocked: a channel may come back to it round a corner.
-    if (next != goal_ && circles_back(index, next)) return;
     const int slot_there = slot(next);
+    if (next != goal_ && circles_back(index, slot_there)) return;
     FaceSearch& there = searched_[slot_there];
     if (!admit(there, entry, interval, root, g)) return;
     const double f = g + kAheadWeight * via_segment(root, q_.to, interval.left, interval.right);
+    const std::uint64_t recent = nodes_[index].recent << 8 | static_cast<std::uint8_t>(slot_there);
     nodes_.push_back({next, slot_there, entry, index, interval, left_end, right_end, root, g, f,
-                      there.last_in[entry]});
+                      there.last_in[entry], recent});
     there.last_in[entry] = static_cast<int>(nodes_.size() - 1);
     open_.push({f, static_cast<int>(nodes_.size() - 1)});
   }
@@ -311,8 +321,8 @@ class ChannelSearch {
   /// as the search's progress allows, so a goal in a small pocket is told
   /// early, and a search with a path to find pays little for it.
   bool goal_sealed_off() {
-    const auto budget =
-        static_cast<std::size_t>(std::min(expanded_ / kPocketFloodShare, kPocketFlood));
+    const auto budget = static_cast<std::size_t>(
+        std::min(kPocketFloodStart + expanded_ / kPocketFloodShare, kPocketFlood));
     while (!flood_.empty()) {
       if (flooded_ >= budget) return false;
       const auto [f, entry] = flood_.back();
@@ -340,11 +350,16 @@ class ChannelSearch {
     return !flood_met_start_;
   }
 
-  /// True if the channel ending at node `index` passed through `face` in its
-  /// last kLoopCheck steps: a channel that circles back is never the shortest.
-  bool circles_back(int index, Face face) const {
+  /// True if the channel ending at node `index` passed through the face in
+  /// `face_slot` in its last kLoopCheck steps: a channel that circles back is
+  /// never the shortest.
+  bool circles_back(int index, int face_slot) const {
+    static_assert(kLoopCheck == sizeof(Node::recent));
+    constexpr std::uint64_t kOnes = 0x0101010101010101ull;
+    const std::uint64_t x = nodes_[index].recent ^ (kOnes * static_cast<std::uint8_t>(face_slot));
+    if (((x - kOnes) & ~x & (kOnes << 7)) == 0) return false;  // no byte of x is zero
     for (int i = index, k = 0; i >= 0 && k < kLoopCheck; i = nodes_[i].parent, ++k)
-      if (nodes_[i].face == face) return true;
+      if (nodes_[i].slot == face_slot) return true;
     return false;
   }
 
@@ -425,7 +440,7 @@ class ChannelSearch {
   /// (f, node): lowest bound first.
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open_;
-  FaceNumbers numbers_{256};
+  FaceNumbers numbers_{64};
   std::vector<FaceSearch> searched_;
 };
 
