@@ -99,21 +99,23 @@ double via_segment(Vec2 from, Vec2 to, Vec2 lo, Vec2 hi) {
 /// whole from `root`, the point where the shortest of them last turned.
 /// Lengths are relaxed: gates instead of the disc, so they never exceed the
 /// length of a disc's path through the same channel.
+/// Its lower bound f is kept in the open list only: a smaller node is fewer
+/// cache lines for the dominance test, which reads interval, root and g of
+/// every node kept on an edge.
 struct Node {
   Face face;
-  int slot;   ///< Where the search keeps what it knows of `face`.
-  int entry;  ///< Edge of `face` the interval lies on (kNoEdge: the start).
-  int parent;
   Gate interval;
-  bool left_end, right_end;  ///< The interval ends where its gate does: a path may turn there.
   Vec2 root;
-  double g;            ///< Relaxed length from the start to `root`.
-  double f;            ///< Lower bound on any path through this node to the goal.
-  int same_edge = -1;  ///< The node kept before it that came in through the same edge.
+  double g;  ///< Relaxed length from the start to `root`.
   /// The low byte of the slot of its face, then of its parent's, and so on
   /// back kLoopCheck faces: most new faces miss them all, and need no walk
   /// back to rule out a loop.
-  std::uint64_t recent = 0;
+  std::uint64_t recent;
+  int slot;       ///< Where the search keeps what it knows of `face`.
+  int entry;      ///< Edge of `face` the interval lies on (kNoEdge: the start).
+  int parent;     ///< -1 for the start.
+  int same_edge;  ///< The node kept before it that came in through the same edge (or -1).
+  bool left_end, right_end;  ///< The interval ends where its gate does: a path may turn there.
 };
 
 /// Triangles from start to goal and the portals between them: portal k
@@ -159,8 +161,8 @@ class ChannelSearch {
     const double straight = distance(q_.from, q_.to);
     const Gate at_start{q_.from, q_.from};
     const int start_slot = slot(start);
-    nodes_.push_back({start, start_slot, kNoEdge, -1, at_start, false, false, q_.from, 0.0,
-                      straight, -1, static_cast<std::uint8_t>(start_slot)});
+    nodes_.push_back({start, at_start, q_.from, 0.0, static_cast<std::uint8_t>(start_slot),
+                      start_slot, kNoEdge, -1, -1, false, false});
     open_.push({straight, 0});
     flood_.push_back({goal, kNoEdge});
   }
@@ -174,13 +176,13 @@ class ChannelSearch {
   /// goal's face that may have no other way in.
   bool next(Channel& channel, double limit) {
     while (!open_.empty() && open_.top().first < kAheadWeight * limit) {
-      const int index = open_.top().second;
+      const auto [bound, index] = open_.top();
       open_.pop();
       // A long search may be walking all the ground around a goal no disc
       // can reach; a flood from the goal tells that at a fraction of the cost.
       if (++expanded_ % kPocketCheckEvery == 0 && goal_sealed_off()) return false;
       if (nodes_[index].face == goal_ && nodes_[index].entry != kNoEdge) {
-        if (nodes_[index].f >= limit) return false;
+        if (bound >= limit) return false;
         unwind(index, channel);
         return true;
       }
@@ -282,8 +284,8 @@ class ChannelSearch {
     if (!admit(there, entry, interval, root, g)) return;
     const double f = g + kAheadWeight * via_segment(root, q_.to, interval.left, interval.right);
     const std::uint64_t recent = nodes_[index].recent << 8 | static_cast<std::uint8_t>(slot_there);
-    nodes_.push_back({next, slot_there, entry, index, interval, left_end, right_end, root, g, f,
-                      there.last_in[entry], recent});
+    nodes_.push_back({next, interval, root, g, recent, slot_there, entry, index,
+                      there.last_in[entry], left_end, right_end});
     there.last_in[entry] = static_cast<int>(nodes_.size() - 1);
     open_.push({f, static_cast<int>(nodes_.size() - 1)});
   }
@@ -437,10 +439,11 @@ class ChannelSearch {
   std::size_t flooded_ = 0;
   bool flood_met_start_ = false;
   std::vector<Node> nodes_;
-  /// (f, node): lowest bound first.
+  /// (f, node), f a lower bound on any path through the node to the goal:
+  /// lowest first.
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open_;
-  FaceNumbers numbers_{64};
+  FaceNumbers numbers_;
   std::vector<FaceSearch> searched_;
 };
 
