@@ -15,14 +15,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <queue>
 #include <stdexcept>
 #include <tuple>
-#include <unordered_map>
 #include <unordered_set>
 
 #include "channel_funnel.hpp"
+#include "face_numbers.hpp"
 #include "navmesh_impl.hpp"
 #include "obstacle_distance.hpp"
 
@@ -32,7 +33,8 @@ namespace {
 constexpr int kNoEdge = 3;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-/// How far back a new triangle is looked for in its own channel.
+/// How far back a new triangle is looked for in its own channel (a byte
+/// each in Node::recent).
 constexpr int kLoopCheck = 8;
 /// The search offers channels in order of their lower bound with the part
 /// still ahead weighted by this factor, and stops once no channel left can
@@ -43,9 +45,18 @@ constexpr int kLoopCheck = 8;
 /// length.
 constexpr double kAheadWeight = 1.005;
 constexpr double kLengthTolerance = 0.003;
-/// Nodes a search expands before it checks whether the goal is sealed off,
-/// and how far that check floods.
-constexpr int kPocketCheckAfter = 2048;
+/// The flood that tells a goal sealed off in a pocket goes on every
+/// kPocketCheckEvery expansions of the search, up to kPocketFloodStart states
+/// and one more for every kPocketFloodShare nodes expanded, and gives up
+/// after kPocketFlood states. Most pockets are small (on the room scene at
+/// r = 0.25 m, 5-20 states, where the search expands 50-250 nodes around the
+/// start); a larger share would slow the queries that have a path to find
+/// (on the 2,000-box scene a share of 1 floods 75 % as many states as the
+/// search expands).
+constexpr int kPocketCheckEvery = 16;
+constexpr int kPocketFloodStart = 16;
+constexpr int kPocketFloodShare = 8;
+constexpr int kPocketFlood = 2048;
 /// Dominated nodes kept per edge when a search is run again because a
 /// channel it offered failed for the disc.
 constexpr int kRivalsOnRetry = 4;
@@ -88,16 +99,23 @@ double via_segment(Vec2 from, Vec2 to, Vec2 lo, Vec2 hi) {
 /// whole from `root`, the point where the shortest of them last turned.
 /// Lengths are relaxed: gates instead of the disc, so they never exceed the
 /// length of a disc's path through the same channel.
+/// Its lower bound f is kept in the open list only: a smaller node is fewer
+/// cache lines for the dominance test, which reads interval, root and g of
+/// every node kept on an edge.
 struct Node {
   Face face;
-  int entry;  ///< Edge of `face` the interval lies on (kNoEdge: the start).
-  int parent;
   Gate interval;
-  bool left_end, right_end;  ///< The interval ends where its gate does: a path may turn there.
   Vec2 root;
-  double g;            ///< Relaxed length from the start to `root`.
-  double f;            ///< Lower bound on any path through this node to the goal.
-  int same_edge = -1;  ///< The node kept before it that came in through the same edge.
+  double g;  ///< Relaxed length from the start to `root`.
+  /// The low byte of the slot of its face, then of its parent's, and so on
+  /// back kLoopCheck faces: most new faces miss them all, and need no walk
+  /// back to rule out a loop.
+  std::uint64_t recent;
+  int slot;       ///< Where the search keeps what it knows of `face`.
+  int entry;      ///< Edge of `face` the interval lies on (kNoEdge: the start).
+  int parent;     ///< -1 for the start.
+  int same_edge;  ///< The node kept before it that came in through the same edge (or -1).
+  bool left_end, right_end;  ///< The interval ends where its gate does: a path may turn there.
 };
 
 /// Triangles from start to goal and the portals between them: portal k
@@ -138,12 +156,15 @@ class ChannelSearch {
  public:
   ChannelSearch(const NavMeshState& mesh, const PathQuery& q, Face start, Face goal, int rivals)
       : mesh_(mesh), q_(q), goal_(goal), rivals_(rivals) {
-    faces_.reserve(1024);
-    nodes_.reserve(1024);
+    searched_.reserve(256);
+    nodes_.reserve(256);
     const double straight = distance(q_.from, q_.to);
-    nodes_.push_back(
-        {start, kNoEdge, -1, {q_.from, q_.from}, false, false, q_.from, 0.0, straight});
+    const Gate at_start{q_.from, q_.from};
+    const int start_slot = slot(start);
+    nodes_.push_back({start, at_start, q_.from, 0.0, static_cast<std::uint8_t>(start_slot),
+                      start_slot, kNoEdge, -1, -1, false, false});
     open_.push({straight, 0});
+    flood_.push_back({goal, kNoEdge});
   }
 
   /// The next channel to the goal, in order of the lower bound on the length
@@ -155,13 +176,13 @@ class ChannelSearch {
   /// goal's face that may have no other way in.
   bool next(Channel& channel, double limit) {
     while (!open_.empty() && open_.top().first < kAheadWeight * limit) {
-      const int index = open_.top().second;
+      const auto [bound, index] = open_.top();
       open_.pop();
       // A long search may be walking all the ground around a goal no disc
       // can reach; a flood from the goal tells that at a fraction of the cost.
-      if (++expanded_ == kPocketCheckAfter && goal_sealed_off(nodes_.front().face)) return false;
+      if (++expanded_ % kPocketCheckEvery == 0 && goal_sealed_off()) return false;
       if (nodes_[index].face == goal_ && nodes_[index].entry != kNoEdge) {
-        if (nodes_[index].f >= limit) return false;
+        if (bound >= limit) return false;
         unwind(index, channel);
         return true;
       }
@@ -175,7 +196,8 @@ class ChannelSearch {
   /// measured), whether a disc can cross each edge at all, and, per entry
   /// edge, the last node kept that came in through it, how many dominated
   /// ones were kept anyway, and the shortest relaxed length to each end of
-  /// its gate for a path that turns there.
+  /// its gate for a path that turns there; and which states (face, entry
+  /// edge) the pocket check's flood has seen, one bit per entry.
   enum Tested : char { kUntested, kPasses, kFails };
   struct FaceSearch {
     std::array<double, 3> corner_width{kNaN, kNaN, kNaN};
@@ -183,16 +205,24 @@ class ChannelSearch {
     std::array<int, 3> last_in{-1, -1, -1};
     std::array<int, 3> rivals{0, 0, 0};
     std::array<std::array<double, 2>, 3> turn_g{{{kInf, kInf}, {kInf, kInf}, {kInf, kInf}}};
+    unsigned char flooded = 0;
   };
+  /// The slot of `f` in `searched_`, made on its first visit. Slots are
+  /// indices, not references: a new face can move every other.
+  int slot(Face f) {
+    const auto [number, fresh] = numbers_.insert(f);
+    if (fresh) searched_.emplace_back();
+    return number;
+  }
   enum Turn { kLeft = 0, kRight = 1 };
 
   void expand(int index) {
     const Node node = nodes_[index];
     const Face f = node.face;
-    FaceSearch& here = faces_[f];
+    const int here = node.slot;
     if (node.entry == kNoEdge) {  // the start's triangle: every gate is seen whole
       for (int exit = 0; exit < 3; ++exit)
-        if (passable(node, here, exit) && reaches_goal(f, exit))
+        if (passable(node, searched_[here], exit) && reaches_goal(f, exit))
           push(index, exit, exit_gate(f, exit), true, true, node.root, node.g);
       return;
     }
@@ -204,7 +234,7 @@ class ChannelSearch {
         std::abs(cross(at_right - at_left, node.root - at_left)) <= 1e-12 * dot(to_left, to_left) ||
         cross(to_left, to_right) >= 0;
     for (const int exit : {Cdt::cw(node.entry), Cdt::ccw(node.entry)}) {
-      if (!passable(node, here, exit) || !reaches_goal(f, exit)) continue;
+      if (!passable(node, searched_[here], exit) || !reaches_goal(f, exit)) continue;
       const Gate gate = exit_gate(f, exit);
       if (sees_all) {
         push(index, exit, gate, true, true, node.root, node.g);
@@ -221,11 +251,11 @@ class ChannelSearch {
       double h0 = 0.0, h1 = 1.0;
       const double via_left = node.g + length(to_left), via_right = node.g + length(to_right);
       if (node.left_end && clip_to_side(gate, h0, h1, node.root, to_left, +1, false) &&
-          first_to_turn(here, node.entry, kLeft, via_left))
+          first_to_turn(searched_[here], node.entry, kLeft, via_left))
         push_part(index, exit, gate, h0, h1, at_left, via_left);
       h0 = 0.0, h1 = 1.0;
       if (node.right_end && clip_to_side(gate, h0, h1, node.root, to_right, -1, false) &&
-          first_to_turn(here, node.entry, kRight, via_right))
+          first_to_turn(searched_[here], node.entry, kRight, via_right))
         push_part(index, exit, gate, h0, h1, at_right, via_right);
     }
   }
@@ -248,12 +278,14 @@ class ChannelSearch {
     const int entry = next->index(from);
     // The goal's face may be the start's, when the straight line between
     // them is blocked: a channel may come back to it round a corner.
-    if (next != goal_ && circles_back(index, next)) return;
-    FaceSearch& there = faces_[next];
+    const int slot_there = slot(next);
+    if (next != goal_ && circles_back(index, slot_there)) return;
+    FaceSearch& there = searched_[slot_there];
     if (!admit(there, entry, interval, root, g)) return;
     const double f = g + kAheadWeight * via_segment(root, q_.to, interval.left, interval.right);
-    nodes_.push_back(
-        {next, entry, index, interval, left_end, right_end, root, g, f, there.last_in[entry]});
+    const std::uint64_t recent = nodes_[index].recent << 8 | static_cast<std::uint8_t>(slot_there);
+    nodes_.push_back({next, interval, root, g, recent, slot_there, entry, index,
+                      there.last_in[entry], left_end, right_end});
     there.last_in[entry] = static_cast<int>(nodes_.size() - 1);
     open_.push({f, static_cast<int>(nodes_.size() - 1)});
   }
@@ -286,38 +318,50 @@ class ChannelSearch {
   }
 
   /// True if the goal's triangle lies in a pocket the disc cannot leave: a
-  /// flood from it over the traversals the search accepts ends, within
-  /// kPocketCheckAfter states, without meeting the start's triangle.
-  bool goal_sealed_off(Face start) {
-    std::vector<std::pair<Face, int>> stack{{goal_, kNoEdge}};
-    std::unordered_set<std::pair<Face, int>, FaceEntryHash> seen;
-    while (!stack.empty()) {
-      const auto [f, entry] = stack.back();
-      stack.pop_back();
-      if (f == start || seen.size() > static_cast<std::size_t>(kPocketCheckAfter)) return false;
+  /// flood from it over the traversals the search accepts ends without
+  /// meeting the start's triangle. The flood goes on where it stopped, as far
+  /// as the search's progress allows, so a goal in a small pocket is told
+  /// early, and a search with a path to find pays little for it.
+  bool goal_sealed_off() {
+    const auto budget = static_cast<std::size_t>(
+        std::min(kPocketFloodStart + expanded_ / kPocketFloodShare, kPocketFlood));
+    while (!flood_.empty()) {
+      if (flooded_ >= budget) return false;
+      const auto [f, entry] = flood_.back();
+      flood_.pop_back();
+      if (f == nodes_.front().face) {
+        flood_.clear();
+        flood_met_start_ = true;
+        break;
+      }
       Node at{};
       at.face = f;
       at.entry = entry;
       at.root = q_.to;  // read only where the flood starts, at the goal
       for (int exit = 0; exit < 3; ++exit) {
-        if (exit == entry || !passable(at, faces_[f], exit)) continue;
+        if (exit == entry || !passable(at, searched_[slot(f)], exit)) continue;
         const Face next = f->neighbor(exit);
-        if (seen.insert({next, next->index(f)}).second) stack.push_back({next, next->index(f)});
+        const int entry_there = next->index(f);
+        unsigned char& seen = searched_[slot(next)].flooded;
+        if (seen & (1u << entry_there)) continue;
+        seen |= 1u << entry_there;
+        ++flooded_;
+        flood_.push_back({next, entry_there});
       }
     }
-    return true;
+    return !flood_met_start_;
   }
-  struct FaceEntryHash {
-    std::size_t operator()(const std::pair<Face, int>& k) const {
-      return std::hash<const void*>()(&*k.first) * 3 + static_cast<std::size_t>(k.second);
-    }
-  };
 
-  /// True if the channel ending at node `index` passed through `face` in its
-  /// last kLoopCheck steps: a channel that circles back is never the shortest.
-  bool circles_back(int index, Face face) const {
+  /// True if the channel ending at node `index` passed through the face in
+  /// `face_slot` in its last kLoopCheck steps: a channel that circles back is
+  /// never the shortest.
+  bool circles_back(int index, int face_slot) const {
+    static_assert(kLoopCheck == sizeof(Node::recent));
+    constexpr std::uint64_t kOnes = 0x0101010101010101ull;
+    const std::uint64_t x = nodes_[index].recent ^ (kOnes * static_cast<std::uint8_t>(face_slot));
+    if (((x - kOnes) & ~x & (kOnes << 7)) == 0) return false;  // no byte of x is zero
     for (int i = index, k = 0; i >= 0 && k < kLoopCheck; i = nodes_[i].parent, ++k)
-      if (nodes_[i].face == face) return true;
+      if (nodes_[i].slot == face_slot) return true;
     return false;
   }
 
@@ -390,11 +434,17 @@ class ChannelSearch {
   int rivals_;
   std::array<Tested, 3> goal_entry_{kUntested, kUntested, kUntested};  ///< Per goal face edge.
   int expanded_ = 0;
+  /// The pocket check's flood: the states still to visit, and how many it has seen.
+  std::vector<std::pair<Face, int>> flood_;
+  std::size_t flooded_ = 0;
+  bool flood_met_start_ = false;
   std::vector<Node> nodes_;
-  /// (f, node): lowest bound first.
+  /// (f, node), f a lower bound on any path through the node to the goal:
+  /// lowest first.
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open_;
-  std::unordered_map<Face, FaceSearch> faces_;
+  FaceNumbers numbers_;
+  std::vector<FaceSearch> searched_;
 };
 
 double polyline_length(const std::vector<Vec2>& points) {

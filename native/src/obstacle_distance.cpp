@@ -5,9 +5,10 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <unordered_set>
 #include <utility>
 #include <vector>
+
+#include "face_numbers.hpp"
 
 namespace footfall {
 namespace {
@@ -55,14 +56,21 @@ double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, d
     best = d;
     if (nearest != nullptr) *nearest = found;
   };
-  std::unordered_set<Face> seen{start};
-  std::vector<Face> stack{start};
+  FaceNumbers seen;
+  seen.insert(start);
+  // (face, the edge the walk came in through): that edge and its ends were
+  // measured in the face before, so only the far vertex and the other two
+  // edges are new (3: the start, all new).
+  std::vector<std::pair<Face, int>> stack{{start, 3}};
   while (!stack.empty()) {
-    const Face f = stack.back();
+    const auto [f, entry] = stack.back();
     stack.pop_back();
     for (int i = 0; i < 3; ++i) {
-      const Vec2 v = to_vec(f->vertex(i)->point());
-      consider(distance_to_segment(v, a, b), {v, v, v});
+      if (entry == 3 || i == entry) {
+        const Vec2 v = to_vec(f->vertex(i)->point());
+        consider(distance_to_segment(v, a, b), {v, v, v});
+      }
+      if (i == entry) continue;
       const Vec2 c = to_vec(f->vertex(Cdt::ccw(i))->point()),
                  d = to_vec(f->vertex(Cdt::cw(i))->point());
       const double gap = segment_distance(a, b, c, d);
@@ -74,7 +82,7 @@ double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, d
         consider(gap, {distance(a, foot_a) <= distance(b, foot_b) ? foot_a : foot_b, c, d});
       } else if (gap < best && !mesh.cdt.is_infinite(f->neighbor(i)) &&
                  seen.insert(f->neighbor(i)).second) {
-        stack.push_back(f->neighbor(i));
+        stack.push_back({f->neighbor(i), f->neighbor(i)->index(f)});
       }
     }
   }
@@ -152,7 +160,8 @@ double wedge_width(const NavMeshState& mesh, Face f, int corner, Vec2 from, Vec2
   double best = limit;
   // Edges still to look across: (face, edge index), all beyond the opposite edge.
   std::vector<std::pair<Face, int>> stack{{f, corner}};
-  std::unordered_set<Face> seen{f};
+  FaceNumbers seen;
+  seen.insert(f);
   while (!stack.empty()) {
     const auto [g, i] = stack.back();
     stack.pop_back();
