@@ -130,8 +130,9 @@ void bind_planner(py::module_& m) {
         py::arg("t"));
   m.def("feet_at", &feet_at, py::arg("plan"), py::arg("t"), "Both feet at time t, [left, right].");
   m.def("facing_at", &facing_at, py::arg("plan"), py::arg("t"));
-  m.def("collision_circles", &collision_circles, py::arg("plan"), py::arg("character"),
-        py::arg("t"));
+  m.def("collision_circles",
+        py::overload_cast<const AgentPlan&, const CharacterParams&, double>(&collision_circles),
+        py::arg("plan"), py::arg("character"), py::arg("t"));
 }
 
 }  // namespace footfall::bindings
