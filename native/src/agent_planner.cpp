@@ -14,6 +14,4 @@ double AgentPlan::total_cost() const {
   return sum;
 }
 
-double AgentPlan::end_time() const { return footsteps.empty() ? 0.0 : footsteps.back().end_time; }
-
 }  // namespace footfall

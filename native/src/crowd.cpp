@@ -341,26 +341,35 @@ std::vector<std::size_t> near(const std::vector<Walker>& walkers, std::size_t i,
   return out;
 }
 
-/// True if `trial`, from time `from` on, touches `other` under the
+/// An agent's plan with new steps in place of its old rest, to be checked
+/// against the others before it is committed.
+struct Trial {
+  AgentPlan plan;
+  double from = 0.0;       ///< It differs from the agent's plan from then on. [s]
+  double top_speed = 0.0;  ///< top_com_speed of the plan from `from` on. [m/s]
+  double reach = 0.0;      ///< circle_reach of the plan from `from` on. [m]
+};
+
+/// True if the trial, from its time `from` on, touches `other` under the
 /// five-circle model that measures a plan (torso circles and planted feet;
 /// after its last step a plan stands where it ends). Checked every
 /// kContactDt, the circles grown by half of both agents' travel in between.
-bool touches(const AgentPlan& trial, double from, const FootstepPlanner& planner,
-             const AgentPlan& other) {
+bool touches(const Trial& trial, const FootstepPlanner& planner, const AgentPlan& other) {
   const CharacterParams& c = planner.character();
-  const double end = std::max(trial.end_time(), other.end_time()) + kContactDt;
+  const double from = trial.from;
+  const double end = std::max(trial.plan.end_time(), other.end_time()) + kContactDt;
   // While the pair is far apart, instants they cannot close the distance
   // in are skipped (most of those checked are never near).
-  const double closing = (top_com_speed(trial, from) + top_com_speed(other, from)) * kContactDt;
+  const double closing = (trial.top_speed + top_com_speed(other, from)) * kContactDt;
   // Farther apart than this, no circles of the pair come within the padding.
-  const double near = circle_reach(trial, c, from) + circle_reach(other, c, from) + 0.5 * closing;
+  const double near = trial.reach + circle_reach(other, c, from) + 0.5 * closing;
   // The gap where the trial starts (see touching()).
   double start_gap = std::numeric_limits<double>::infinity();
   const long first = first_contact_instant(from);
   for (long k = first, next = first;; k = next) {
     const double t = static_cast<double>(k) * kContactDt;
     if (t > end) break;
-    const ComSample me = com_at(trial, t), them = com_at(other, t);
+    const ComSample me = com_at(trial.plan, t), them = com_at(other, t);
     const double apart = distance(me.position, them.position) - near;
     next = k + 1;
     if (apart > 0.0) {
@@ -369,7 +378,7 @@ bool touches(const AgentPlan& trial, double from, const FootstepPlanner& planner
     }
     const double pad = 0.5 * (length(me.velocity) + length(them.velocity)) * kContactDt;
     std::array<Circle, 5> mine, theirs;
-    const int my_count = collision_circles(trial, c, t, mine);
+    const int my_count = collision_circles(trial.plan, c, t, mine);
     const int their_count = collision_circles(other, c, t, theirs);
     Gap gap;
     for (int i = 0; i < their_count; ++i)
@@ -468,8 +477,7 @@ struct Proposal {
   std::vector<Footstep> steps;     ///< The attempt's steps, then (unless it leaves) its rest.
   FootstepState rested;            ///< Where they leave the agent.
   bool leaving = false;            ///< It walks on through its last goal.
-  AgentPlan trial;                 ///< The plan with them in place of the old rest.
-  double from = 0.0;               ///< The trial differs from the plan from then on. [s]
+  Trial trial;                     ///< The plan with them in place of the old rest.
   bool new_place = false;          ///< It rests somewhere new: it needs room there.
   std::vector<std::size_t> close;  ///< The agents near (near()).
   std::vector<char> hits;          ///< Per close: the trial touches its plan.
@@ -492,18 +500,21 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
     p.rested = a.rest.state;
   }
   if (a.steps.empty()) return p;
-  p.trial.leaves = p.leaving;
-  p.trial.start = w.plan.start;
+  AgentPlan& plan = p.trial.plan;
+  plan.leaves = p.leaving;
+  plan.start = w.plan.start;
   const std::size_t kept = w.plan.footsteps.size() - w.resting;
-  p.trial.footsteps.assign(w.plan.footsteps.begin(), w.plan.footsteps.begin() + kept);
-  p.trial.footsteps.insert(p.trial.footsteps.end(), p.steps.begin(), p.steps.end());
+  plan.footsteps.assign(w.plan.footsteps.begin(), w.plan.footsteps.begin() + kept);
+  plan.footsteps.insert(plan.footsteps.end(), p.steps.begin(), p.steps.end());
   // During the last kept step the free foot swings toward the next step's
   // foot (feet_at): that step's circles change with the new steps too.
-  p.from = kept > 0 ? p.trial.footsteps[kept - 1].start_time : a.steps.front().start_time;
+  p.trial.from = kept > 0 ? plan.footsteps[kept - 1].start_time : a.steps.front().start_time;
+  p.trial.top_speed = top_com_speed(plan, p.trial.from);
+  p.trial.reach = circle_reach(plan, planner.character(), p.trial.from);
   // A new place to rest needs room among everyone, seen or not.
   p.new_place = !p.leaving && distance(p.rested.com, rest_of(w).com) > kSamePlace;
   for (const std::size_t j : p.close) {
-    p.hits.push_back(touches(p.trial, p.from, planner, walkers[j].plan));
+    p.hits.push_back(touches(p.trial, planner, walkers[j].plan));
     p.no_room.push_back(p.new_place && !planner.stands_clear(p.rested, {&walkers[j].plan}));
   }
   return p;
@@ -514,10 +525,10 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
 /// -1 if none. The plans of agents `changed` this tick are checked anew.
 int refusal(const std::vector<Walker>& walkers, const Proposal& p, const std::vector<char>& changed,
             const FootstepPlanner& planner) {
-  if (p.trial.footsteps.empty()) return -1;
+  if (p.trial.plan.footsteps.empty()) return -1;
   for (std::size_t c = 0; c < p.close.size(); ++c) {
     const AgentPlan& other = walkers[p.close[c]].plan;
-    if (changed[p.close[c]] ? touches(p.trial, p.from, planner, other) : p.hits[c])
+    if (changed[p.close[c]] ? touches(p.trial, planner, other) : p.hits[c])
       return static_cast<int>(c);
   }
   if (!p.new_place) return -1;
@@ -567,7 +578,7 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a, Propo
                                             kNoticeDistance;
                                    }),
                     w.noticed.end());
-    w.plan.footsteps = std::move(p.trial.footsteps);
+    w.plan.footsteps = std::move(p.trial.plan.footsteps);
     w.resting = p.steps.size() - a.steps.size();
     w.state = a.end;
     w.rested = p.rested;

@@ -68,8 +68,9 @@ struct AgentPlan {
 
   /// Sum of the step costs. [J]
   double total_cost() const;
-  /// Time at the end of the last step. [s]
-  double end_time() const;
+  /// Time at the end of the last step. [s] (Inline: crowd checks ask it
+  /// at every sample.)
+  double end_time() const { return footsteps.empty() ? 0.0 : footsteps.back().end_time; }
 };
 
 /// False once an agent that leaves has taken its last step.
