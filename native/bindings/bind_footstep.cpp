@@ -8,7 +8,10 @@ namespace footfall::bindings {
 
 void bind_footstep(py::module_& m) {
   py::enum_<Foot>(m, "Foot").value("LEFT", Foot::kLeft).value("RIGHT", Foot::kRight);
-  py::enum_<StepKind>(m, "StepKind").value("WALK", StepKind::kWalk).value("STOP", StepKind::kStop);
+  py::enum_<StepKind>(m, "StepKind")
+      .value("WALK", StepKind::kWalk)
+      .value("STOP", StepKind::kStop)
+      .value("SIDE_STEP", StepKind::kSideStep);
   py::enum_<Behavior>(m, "Behavior")
       .value("WALK", Behavior::kWalk)
       .value("ARMS_IN", Behavior::kArmsIn)
@@ -24,6 +27,7 @@ void bind_footstep(py::module_& m) {
   py::enum_<StepValidity>(m, "StepValidity")
       .value("VALID", StepValidity::kValid)
       .value("WRONG_FOOT", StepValidity::kWrongFoot)
+      .value("NOT_STANDING", StepValidity::kNotStanding)
       .value("DURATION_OUT_OF_RANGE", StepValidity::kDurationOutOfRange)
       .value("SPEED_OUT_OF_RANGE", StepValidity::kSpeedOutOfRange)
       .value("LENGTH_OUT_OF_RANGE", StepValidity::kLengthOutOfRange)

@@ -63,21 +63,13 @@ StepResult create_walk(const FootstepState& state, const FootstepAction& action,
   return detail::walk_step(state, foot, heading, shape, wrap_angle(action.phi), reach, character);
 }
 
-// The stop action: the COM decelerates uniformly to rest, and the stepping foot
-// lands beside the point of rest, at the stance offset, turned to the facing.
-// From standing, the facing may change (a pivot): a walk sets off along the
-// facing, so without pivots a character standing face to face with a wall or
-// another could never step away.
-StepResult create_stop(const FootstepState& state, const FootstepAction& action,
-                       const CharacterParams& character) {
-  const Foot foot = other(state.last_foot);
-  const double T = action.duration;
-  if (!(T > 0.0)) return invalid(StepValidity::kDurationOutOfRange);
-  if (!std::isfinite(action.phi)) return invalid(StepValidity::kNotFinite);
-  const double facing = state.standing() ? wrap_angle(action.phi) : state.facing;
-  if (std::fabs(wrap_angle(facing - state.facing)) > kMaxPivot + 1e-12)
-    return invalid(StepValidity::kOrientationEmpty);
-  const Vec2 rest = state.com + (0.5 * T) * state.com_velocity;
+// A step that plants `foot` beside the point where the COM, setting off at
+// `velocity`, comes to rest after decelerating uniformly for `T`, at the stance
+// offset across `facing` and turned to it as far as the other foot allows.
+// Its cost is dE1 and the energy of removing the momentum.
+StepResult rest_step(const FootstepState& state, Foot foot, Vec2 velocity, double facing, double T,
+                     StepKind kind, const CharacterParams& character) {
+  const Vec2 rest = state.com + (0.5 * T) * velocity;
   const double s = outward_sign(foot);
   const OrientationInterval reach = reachable_orientations(
       state.foot_orientation[static_cast<int>(other(foot))], other(foot), character.max_foot_turn);
@@ -86,7 +78,7 @@ StepResult create_stop(const FootstepState& state, const FootstepAction& action,
   StepResult result;
   Footstep& step = result.step;
   step.foot = foot;
-  step.kind = StepKind::kStop;
+  step.kind = kind;
   step.start_time = state.time;
   step.end_time = state.time + T;
   step.foot_position = rest + (s * character.foot_offset) * perp(unit(facing));
@@ -94,20 +86,72 @@ StepResult create_stop(const FootstepState& state, const FootstepAction& action,
   step.foot_orientation = orientation;
   step.com_start = state.com;
   step.com_end = rest;
-  step.com_velocity_start = state.com_velocity;
+  step.com_velocity_start = velocity;
   step.com_velocity_end = {0.0, 0.0};
   step.phi = facing;
   const double tan_theta = distance(rest, state.com) / character.com_height;
   step.cost.fixed_rate = character.energy_rate * T;
-  step.cost.speed_change = speed_change_cost(character.mass, 0.0, length(state.com_velocity),
-                                             cos_double_angle(tan_theta));
+  step.cost.speed_change =
+      speed_change_cost(character.mass, 0.0, length(velocity), cos_double_angle(tan_theta));
 
   result.state = state_after(state, step);
-  // The planted foot must stay within reach of the fixed stop orientation.
+  // The planted foot must stay within reach of the fixed orientation.
   OrientationInterval& stance = result.state.foot_orientation[static_cast<int>(other(foot))];
   intersect(stance,
             reachable_orientations(step.orientation_interval, foot, character.max_foot_turn),
             other(foot), &stance);
+  return result;
+}
+
+// The stop action: the COM decelerates uniformly to rest, and the stepping foot
+// lands beside the point of rest, at the stance offset, turned to the facing.
+// From standing, the facing may change (a pivot): a walk sets off along the
+// facing, so without pivots a character standing face to face with a wall or
+// another could never step away.
+StepResult create_stop(const FootstepState& state, const FootstepAction& action,
+                       const CharacterParams& character) {
+  const double T = action.duration;
+  if (!(T > 0.0)) return invalid(StepValidity::kDurationOutOfRange);
+  if (!std::isfinite(action.phi)) return invalid(StepValidity::kNotFinite);
+  const double facing = state.standing() ? wrap_angle(action.phi) : state.facing;
+  if (std::fabs(wrap_angle(facing - state.facing)) > kMaxPivot + 1e-12)
+    return invalid(StepValidity::kOrientationEmpty);
+  return rest_step(state, other(state.last_foot), state.com_velocity, facing, T, StepKind::kStop,
+                   character);
+}
+
+// The side step: from standing, the COM sets off toward phi, across the facing
+// on the stepping foot's side (give or take kMaxSideStepSkew), at the action's
+// speed (the velocity jump of every step from standing) and comes to rest as
+// in a stop, the torso keeping its facing. A walk carries the shoulders
+// across its way, so without it a character could never pass a gap narrower
+// than its shoulders (the way on the navigation mesh may lead through one).
+StepResult create_side_step(const FootstepState& state, const FootstepAction& action,
+                            const CharacterParams& character) {
+  if (!state.standing()) return invalid(StepValidity::kNotStanding);
+  // The trailing foot stepped last, so it stands beside the COM (or the feet
+  // would drift apart over side steps one way).
+  if (action.foot == state.last_foot) return invalid(StepValidity::kWrongFoot);
+  const FootLimits& limits = limits_of(character, action.foot);
+  const double T = action.duration;
+  if (T < limits.min_step_duration || T > limits.max_step_duration)
+    return invalid(StepValidity::kDurationOutOfRange);
+  if (action.speed < limits.min_speed || action.speed > limits.max_speed)
+    return invalid(StepValidity::kSpeedOutOfRange);
+  const double travel = 0.5 * action.speed * T;
+  if (travel < limits.min_step_length || travel > limits.max_step_length)
+    return invalid(StepValidity::kLengthOutOfRange);
+  const double across = state.facing + outward_sign(action.foot) * 0.5 * kPi;
+  if (std::fabs(wrap_angle(action.phi - across)) > kMaxSideStepSkew + 1e-12)
+    return invalid(StepValidity::kOrientationEmpty);
+  const Vec2 velocity = action.speed * unit(action.phi);
+  StepResult result =
+      rest_step(state, action.foot, velocity, state.facing, T, StepKind::kSideStep, character);
+  Footstep& step = result.step;
+  step.behavior = Behavior::kSideStep;
+  step.speed = action.speed;
+  // Setting off from rest pays the whole kinetic energy, as a walk does.
+  step.cost.speed_change += speed_change_cost(character.mass, action.speed, 0.0, 1.0);
   return result;
 }
 
@@ -207,7 +251,17 @@ StepResult walk_step(const FootstepState& state, Foot foot, const Heading& headi
 
 const char* to_string(Foot foot) { return foot == Foot::kLeft ? "left" : "right"; }
 
-const char* to_string(StepKind kind) { return kind == StepKind::kWalk ? "walk" : "stop"; }
+const char* to_string(StepKind kind) {
+  switch (kind) {
+    case StepKind::kWalk:
+      return "walk";
+    case StepKind::kStop:
+      return "stop";
+    case StepKind::kSideStep:
+      return "side_step";
+  }
+  return "walk";
+}
 
 const char* to_string(Behavior behavior) {
   switch (behavior) {
@@ -226,7 +280,9 @@ const char* to_string(StepValidity validity) {
     case StepValidity::kValid:
       return "valid";
     case StepValidity::kWrongFoot:
-      return "a walking character must alternate feet";
+      return "a walking or side-stepping character must alternate feet";
+    case StepValidity::kNotStanding:
+      return "a side step sets off from standing";
     case StepValidity::kDurationOutOfRange:
       return "step duration out of range";
     case StepValidity::kSpeedOutOfRange:
@@ -302,8 +358,15 @@ StepResult create_footstep(const FootstepState& state, const FootstepAction& act
       !std::isfinite(action.duration) || !is_finite(state.com) || !is_finite(state.com_velocity)) {
     return invalid(StepValidity::kNotFinite);
   }
-  return action.kind == StepKind::kStop ? create_stop(state, action, character)
-                                        : create_walk(state, action, character);
+  switch (action.kind) {
+    case StepKind::kStop:
+      return create_stop(state, action, character);
+    case StepKind::kSideStep:
+      return create_side_step(state, action, character);
+    case StepKind::kWalk:
+      break;
+  }
+  return create_walk(state, action, character);
 }
 
 double arc_length(double vx0, double alpha, double duration) {

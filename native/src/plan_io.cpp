@@ -85,7 +85,8 @@ Footstep read_footstep(const Json& json, const std::string& path) {
   Footstep step;
   step.foot = read_enum(field("foot"), child(path, "foot"), {Foot::kLeft, Foot::kRight});
   if (json.contains("kind"))
-    step.kind = read_enum(json["kind"], child(path, "kind"), {StepKind::kWalk, StepKind::kStop});
+    step.kind = read_enum(json["kind"], child(path, "kind"),
+                          {StepKind::kWalk, StepKind::kStop, StepKind::kSideStep});
   step.start_time = number(field("start_time"), child(path, "start_time"));
   step.end_time = number(field("end_time"), child(path, "end_time"));
   if (!(step.end_time > step.start_time)) fail(child(path, "end_time"), "must be after start_time");
@@ -126,8 +127,9 @@ Footstep read_footstep(const Json& json, const std::string& path) {
 }
 
 AgentPlan read_agent(const Json& json, const std::string& path, const CharacterParams& character) {
-  expect_object(json, path,
-                {"name", "status", "leaves", "reason", "stopped_at", "start", "footsteps", "stats"});
+  expect_object(
+      json, path,
+      {"name", "status", "leaves", "reason", "stopped_at", "start", "footsteps", "stats"});
   AgentPlan agent;
   agent.name = string(require(json, path, "name"), child(path, "name"));
   agent.status = read_enum(require(json, path, "status"), child(path, "status"),

@@ -25,6 +25,8 @@ constexpr double kCellHeading = 4.0 * kPi / 180.0;
 constexpr double kCellSpeed = 0.1;
 constexpr double kDuplicateTurn = 1e-3;    // [rad] goal-directed turn equal to a tabled one
 constexpr double kPivotTurn = 0.25 * kPi;  // [rad] the smaller pivot the search tries
+// [m/s] the side steps' speed: with the stop duration (0.5 s), 0.25 m across.
+constexpr double kSideStepSpeed = 1.0;
 
 std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, Foot last_foot) {
   // Clamped before the conversion, so that far-away coordinates stay defined.
@@ -463,13 +465,20 @@ StepResult FootstepPlanner::stop_step(const FootstepState& state,
   return stop_step(state, params_.stop_duration, others);
 }
 
+StepResult FootstepPlanner::side_step(const FootstepState& standing, double way) const {
+  return create_footstep(
+      standing,
+      {StepKind::kSideStep, other(standing.last_foot), way, kSideStepSpeed, params_.stop_duration},
+      character_);
+}
+
 // The step that led to node `index`, rebuilt from its parent exactly as it was
 // generated.
 StepResult FootstepPlanner::step_to(const Search& search, int index) const {
   const Node& node = search.nodes[index];
   const FootstepState& parent = search.nodes[node.parent].state;
-  if (node.kind == StepKind::kStop) {
-    return create_footstep(parent, {StepKind::kStop, node.foot, node.phi, 0.0, node.duration},
+  if (node.kind != StepKind::kWalk) {
+    return create_footstep(parent, {node.kind, node.foot, node.phi, node.speed, node.duration},
                            character_);
   }
   const OrientationInterval reach =
@@ -504,8 +513,10 @@ bool FootstepPlanner::free_to_set_off(const FootstepState& rested) const {
   };
   if (tabled_walks(rested, Foot::kLeft, clear) || tabled_walks(rested, Foot::kRight, clear))
     return true;
-  // Or a pivot toward a way out (the steps' checks pad the torso, so room to
-  // turn alone does not promise one).
+  // Or a side step, or a pivot toward a way out (the steps' checks pad the
+  // torso, so room to turn alone does not promise one).
+  const double across = rested.facing + outward_sign(other(rested.last_foot)) * 0.5 * kPi;
+  if (clear(side_step(rested, across), 0.0, {})) return true;
   for (const double turn : {kPivotTurn, -kPivotTurn, kMaxPivot, -kMaxPivot}) {
     const StepResult pivot = create_footstep(rested,
                                              {StepKind::kStop, other(rested.last_foot),
@@ -526,7 +537,7 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
                        double speed, double duration, double heading_after) {
     if (!next.valid()) return;
     if (!search.seen.insert(
-            state_key(next.state.com, heading_after, speed, kind == StepKind::kStop, foot))) {
+            state_key(next.state.com, heading_after, speed, next.state.standing(), foot))) {
       return;
     }
     Node node{next.state,
@@ -582,6 +593,19 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
                         character_),
         StepKind::kStop, stop_foot, phi, 0.0, 0.0, params_.stop_duration, phi);
   }
+  // And the side steps (the foot that stepped last trails): straight across,
+  // and toward the goal if it lies within the skew a side step allows (as the
+  // goal-directed phi of a walk: a crowd's way through a gap narrower than the
+  // shoulders leads to a local goal in sight beyond it).
+  if (!state.standing()) return;
+  const auto add_side_step = [&](double way) {
+    add(side_step(state, way), StepKind::kSideStep, stop_foot, way, 0.0, kSideStepSpeed,
+        params_.stop_duration, state.facing);
+  };
+  const double across = wrap_angle(state.facing + outward_sign(stop_foot) * 0.5 * kPi);
+  add_side_step(across);
+  const double skew = std::fabs(wrap_angle(goal_angle - across));
+  if (skew > kDuplicateTurn && skew <= kMaxSideStepSkew) add_side_step(goal_angle);
 }
 
 SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,

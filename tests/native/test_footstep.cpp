@@ -276,13 +276,68 @@ TEST(Footstep, APivotTurnsAStandingCharacterOnTheSpot) {
     EXPECT_NEAR(distance(pivot.step.foot_position, standing.com), character.foot_offset, 1e-12);
     EXPECT_NEAR(dot(pivot.step.foot_position - standing.com, unit(turn)), 0.0, 1e-12);
     // The pair rule holds: the foot turns no further than the other allows.
-    EXPECT_LE(std::fabs(wrap_angle(pivot.step.foot_orientation - 0.0)), character.max_foot_turn + 1e-12);
+    EXPECT_LE(std::fabs(wrap_angle(pivot.step.foot_orientation - 0.0)),
+              character.max_foot_turn + 1e-12);
     // Only the fixed rate is paid: nothing speeds up.
     EXPECT_DOUBLE_EQ(pivot.step.cost.speed_change, 0.0);
   }
   // More than a quarter turn at once is refused.
   EXPECT_EQ(create_footstep(standing, {StepKind::kStop, foot, 2.0, 0.0, 0.5}, character).validity,
             StepValidity::kOrientationEmpty);
+}
+
+// A walk carries the shoulders across its way; a side step moves the COM
+// across the facing, the torso keeping it, so that a gap narrower than the
+// shoulders can be passed side-on.
+TEST(Footstep, ASideStepMovesAStandingCharacterAcrossItsFacing) {
+  const CharacterParams character;
+  const FootstepState standing = standing_state({1.0, 2.0}, 0.5, character);
+  const Foot foot = other(standing.last_foot);
+  const double across = 0.5 + outward_sign(foot) * kPi / 2;
+  for (const double skew : {0.0, 0.3, -0.3}) {
+    SCOPED_TRACE(skew);
+    const StepResult side =
+        create_footstep(standing, {StepKind::kSideStep, foot, across + skew, 1.0, 0.5}, character);
+    ASSERT_TRUE(side.valid()) << to_string(side.validity);
+    EXPECT_EQ(side.step.behavior, Behavior::kSideStep);
+    // Decelerating from 1 m/s to rest over 0.5 s: 0.25 m toward phi.
+    EXPECT_NEAR(distance(side.step.com_end, standing.com + 0.25 * unit(across + skew)), 0.0, 1e-12);
+    EXPECT_TRUE(side.state.standing());
+    EXPECT_DOUBLE_EQ(side.state.facing, 0.5);
+    EXPECT_DOUBLE_EQ(side.step.phi, 0.5);  // the torso keeps its facing
+    // The stepping foot lands beside the point of rest, across the facing.
+    EXPECT_NEAR(
+        distance(side.step.foot_position, side.step.com_end + character.foot_offset * unit(across)),
+        0.0, 1e-12);
+    // It pays for setting off and for stopping.
+    const double theta = std::atan(0.25 / character.com_height);
+    EXPECT_NEAR(side.step.cost.speed_change,
+                0.5 * character.mass * (1.0 + std::pow(std::cos(2 * theta), 2)), 1e-9);
+    // A stop from there brings the trailing foot beside the COM.
+    const StepResult close =
+        create_footstep(side.state, {StepKind::kStop, other(foot), 0.5, 0.0, 0.5}, character);
+    ASSERT_TRUE(close.valid());
+    EXPECT_NEAR(distance(close.state.feet[0], close.state.feet[1]), 2 * character.foot_offset,
+                1e-12);
+  }
+  const auto validity = [&](const FootstepState& state, const FootstepAction& action) {
+    return create_footstep(state, action, character).validity;
+  };
+  // Too far forward or back of across.
+  EXPECT_EQ(validity(standing, {StepKind::kSideStep, foot, across + 0.5, 1.0, 0.5}),
+            StepValidity::kOrientationEmpty);
+  // The foot that stepped last trails: the feet never drift apart.
+  EXPECT_EQ(validity(standing, {StepKind::kSideStep, standing.last_foot, across, 1.0, 0.5}),
+            StepValidity::kWrongFoot);
+  // The foot's limits hold.
+  EXPECT_EQ(validity(standing, {StepKind::kSideStep, foot, across, 3.0, 0.5}),
+            StepValidity::kSpeedOutOfRange);
+  EXPECT_EQ(validity(standing, {StepKind::kSideStep, foot, across, 0.3, 0.5}),
+            StepValidity::kLengthOutOfRange);
+  // Only from standing.
+  EXPECT_EQ(validity(walking_state(0.0, 1.2, standing.last_foot),
+                     {StepKind::kSideStep, foot, across, 1.0, 0.5}),
+            StepValidity::kNotStanding);
 }
 
 TEST(Footstep, TorsoCirclesSpanTheTorsoWidth) {

@@ -19,7 +19,7 @@ class Step:
     start: float
     end: float
     foot: str  # "left" or "right"
-    kind: str  # "walk" or "stop"
+    kind: str  # "walk", "stop" or "side_step"
     behavior: str  # "walk", "arms_in", "side_step"
 
 

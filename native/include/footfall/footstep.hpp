@@ -30,16 +30,22 @@ const char* to_string(Foot foot);
 enum class StepKind {
   kWalk,  ///< A parabolic step (equation 1).
   kStop,  ///< The special stop action: the COM comes to rest, the feet side by side.
+  /// From standing, the COM moves across the facing to the stepping foot's
+  /// side and comes to rest there; the torso keeps its facing.
+  kSideStep,
 };
 
 /// Largest turn of one pivot: a stop from standing that turns the character
 /// on the spot (FootstepAction::phi). [rad]
 constexpr double kMaxPivot = 1.5707963267948966;
-/// "walk" or "stop".
+/// Largest angle between a side step's way (FootstepAction::phi) and straight
+/// across the facing: a side step may lean a little forward or back. [rad]
+constexpr double kMaxSideStepSkew = 0.39269908169872414;
+/// "walk", "stop" or "side_step".
 const char* to_string(StepKind kind);
 
-/// The behaviour a step belongs to; the planner of this model emits kWalk, the
-/// behavioural path planner annotates the others.
+/// The behaviour a step belongs to; the planner of this model emits kWalk, and
+/// kSideStep for its side steps.
 enum class Behavior { kWalk, kArmsIn, kSideStep };
 /// "walk", "arms_in" or "side_step".
 const char* to_string(Behavior behavior);
@@ -89,13 +95,17 @@ FootstepState standing_state(Vec2 position, double facing, const CharacterParams
 /// A footstep action (section 3.1): parabola orientation, desired speed, duration.
 struct FootstepAction {
   StepKind kind = StepKind::kWalk;  ///< Walk or the special stop.
-  Foot foot = Foot::kLeft;  ///< Stepping foot: the other one than the last, unless standing.
+  /// Stepping foot: the other one than the last, unless standing (a side
+  /// step, too, takes the other one; it moves to this foot's side).
+  Foot foot = Foot::kLeft;
   /// Parabola orientation. For a stop from standing, the facing after it (a
   /// pivot, at most kMaxPivot from the facing before); a stop from walking
-  /// keeps the facing, whatever phi says. [rad]
+  /// keeps the facing, whatever phi says. For a side step, the way the COM
+  /// goes, at most kMaxSideStepSkew from straight across the facing to the
+  /// stepping foot's side; the facing stays. [rad]
   double phi = 0;
-  double speed = 1.3;       ///< Desired COM speed at the start of the step. [m/s]
-  double duration = 0.5;    ///< Step duration T. [s]
+  double speed = 1.3;     ///< Desired COM speed at the start of the step (a stop: none). [m/s]
+  double duration = 0.5;  ///< Step duration T. [s]
 };
 
 /// The three energy terms of the step cost (section 3.3).
@@ -133,7 +143,8 @@ struct Footstep {
 /// Why createFootstep refused an action.
 enum class StepValidity {
   kValid,
-  kWrongFoot,           ///< A walking character must alternate feet.
+  kWrongFoot,           ///< A walking or side-stepping character must alternate feet.
+  kNotStanding,         ///< A side step sets off from standing only.
   kDurationOutOfRange,  ///< T outside the foot's duration limits.
   kSpeedOutOfRange,     ///< Desired speed outside the foot's speed limits.
   kLengthOutOfRange,    ///< COM travel outside the foot's step-length limits.
@@ -154,9 +165,10 @@ struct StepResult {
   bool valid() const { return validity == StepValidity::kValid; }
 };
 
-/// createFootstep(s, a) of section 3.1, or the stop action. The pendulum angle
-/// theta of dE2 is the leg's angle from vertical at heel strike,
-/// atan(half the COM chord / COM height); for a stop, atan(COM travel / height).
+/// createFootstep(s, a) of section 3.1, the stop action or the side step. The
+/// pendulum angle theta of dE2 is the leg's angle from vertical at heel
+/// strike, atan(half the COM chord / COM height); for a stop or a side step,
+/// atan(COM travel / height).
 StepResult create_footstep(const FootstepState& state, const FootstepAction& action,
                            const CharacterParams& character);
 

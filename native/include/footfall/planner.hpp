@@ -129,13 +129,13 @@ class FootstepPlanner {
   /// `keep_out`: none of its five circles overlaps one.
   bool keeps_out(const FootstepState& rested, const KeepOut& keep_out) const;
   /// True if a character standing at `rested` has room to turn and can set
-  /// off: one of the tabled walking steps or pivots from there is clear of
-  /// the static obstacles. A search that ends short of its goal ends where
-  /// its rest leaves the character free to set off, so that the next search
-  /// from there is not trapped. Room to turn alone is not enough: a walk sets
-  /// off along the facing, and the steps' checks pad the torso, so a
-  /// character facing a wall just over half its width away could otherwise
-  /// take no step at all.
+  /// off: one of the tabled walking steps, the side step straight across or
+  /// a pivot from there is clear of the static obstacles. A search that ends
+  /// short of its goal ends where its rest leaves the character free to set
+  /// off, so that the next search from there is not trapped. Room to turn
+  /// alone is not enough: a walk sets off along the facing, and the steps'
+  /// checks pad the torso, so a character facing a wall just over half its
+  /// width away could otherwise take no step at all.
   bool free_to_set_off(const FootstepState& rested) const;
   /// The stop step from `state` lasting `duration`, with validity kCollides if
   /// it runs into an obstacle.
@@ -176,6 +176,9 @@ class FootstepPlanner {
   bool rests_well(const FootstepState& state, detail::SampledAgents& others,
                   const KeepOut& keep_out) const;
   StepResult step_to(const Search& search, int index) const;
+  // A side step the search tries from standing, toward `way`: by the foot
+  // that did not step last, at kSideStepSpeed, for the stop duration.
+  StepResult side_step(const FootstepState& standing, double way) const;
 
   CharacterParams character_;
   PlannerParams params_;
