@@ -48,8 +48,9 @@ constexpr double kProgressInterval = 0.2;  ///< Between progress reports. [s]
 /// reach it within a plan's few seconds. [m]
 constexpr double kCheckDistance = 40.0;
 /// Nodes a blocked agent's search expands at most (after a search that
-/// gained nothing).
+/// gained nothing), when one it sees stands within kJamDistance.
 constexpr int kBlockedHorizon = 100;
+constexpr double kJamDistance = 3.0;  ///< [m]
 /// Longer ago than any time: "never". [s]
 constexpr double kForever = std::numeric_limits<double>::infinity();
 /// A blocked agent searches again only if something within this changed. [m]
@@ -287,9 +288,14 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   for (const std::size_t j : w.yielding_to)
     keep_out.insert(keep_out.end(), walkers[j].wish.begin(), walkers[j].wish.end());
   const MovingObstacles others = plans_of(walkers, seen);
-  // A blocked agent looks less far ahead: in a jam the full horizon finds
-  // no more than waiting, at the most cost.
-  const SearchOptions options{leaves, keep_out, w.blocked >= 1 ? kBlockedHorizon : 0, kRestGrace};
+  // A blocked agent in a jam looks less far ahead: there the full horizon
+  // finds no more than waiting, at the most cost. One held up by obstacles
+  // alone needs it all (a side-on way through a narrow gap is long).
+  bool jammed = false;
+  for (const std::size_t j : seen)
+    jammed = jammed || distance(now.com[j], w.state.com) <= kJamDistance;
+  const SearchOptions options{leaves, keep_out, w.blocked >= 1 && jammed ? kBlockedHorizon : 0,
+                              kRestGrace};
   const SearchResult result = planner.plan(w.state, target.point, others, options);
   Attempt a;
   a.steps = result.footsteps;

@@ -60,7 +60,7 @@ struct PlannerParams {
   int max_expansions = 1000;  ///< Horizon: nodes expanded per search. [1] [1, 1000000]
   /// A search that has expanded no node nearer its goal (lower h) for this
   /// many nodes stops there, as at the horizon; 0: never. [1] [0, 1000000]
-  int stall_expansions = 100;
+  int stall_expansions = 300;
   /// Weight of h in f = g + weight * h. 1 is the paper's plain A*; the
   /// default 1.5 leans the search toward the goal and expands 3-10 times
   /// fewer nodes around obstacles (equation 6's h is not admissible, so this
