@@ -344,7 +344,7 @@ class ChannelSearch {
         const int entry_there = next->index(f);
         unsigned char& seen = searched_[slot(next)].flooded;
         if (seen & (1u << entry_there)) continue;
-        seen |= 1u << entry_there;
+        seen = static_cast<unsigned char>(seen | (1u << entry_there));
         ++flooded_;
         flood_.push_back({next, entry_there});
       }
