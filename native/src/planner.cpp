@@ -340,8 +340,8 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
     }
     return false;
   };
-  // The agent that the last step checked touched first: a search's
-  // candidates, siblings and cousins, mostly run into the same one.
+  // The agent that turned down the last step checked is tried first: a
+  // search's candidates, siblings and cousins, mostly run into the same one.
   const std::size_t blocker = others.blocker();
   if (blocker < others.size() && may_come_near(blocker) && touches(blocker)) return true;
   for (std::size_t j = 0; j < others.size(); ++j) {
