@@ -7,9 +7,9 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
-#include <unordered_set>
 #include <utility>
 
+#include "face_numbers.hpp"
 #include "navmesh_impl.hpp"
 #include "obstacle_distance.hpp"
 
@@ -140,14 +140,16 @@ std::pair<Point, Point> undirected(const Point& a, const Point& b) {
 /// edge inserted later could bend a retraced one again), then the outline
 /// along the vertices they found (every piece already a constrained edge),
 /// and then the first copies removed.
-Cdt::Constraint_id insert_outline(Cdt& cdt, const std::vector<Point>& outline) {
+Cdt::Constraint_id insert_outline(Cdt& cdt, const LocateHints& hints,
+                                  const std::vector<Point>& outline) {
   const std::size_t n = outline.size();
   std::map<std::pair<Point, Point>, Cdt::Constraint_id> edges;
   bool retraced = false;
   for (std::size_t i = 0; i < n; ++i)
     retraced |= !edges.emplace(undirected(outline[i], outline[(i + 1) % n]), nullptr).second;
-  if (!retraced) return cdt.insert_constraint(outline.begin(), outline.end(), true);
-  for (auto& [edge, copy] : edges) copy = cdt.insert_constraint(edge.first, edge.second);
+  if (!retraced) return cdt.insert_polyline(outline, true, hints.near(outline.front()));
+  for (auto& [edge, copy] : edges)
+    copy = cdt.insert_polyline({edge.first, edge.second}, false, hints.near(edge.first));
   std::vector<Point> along;
   for (std::size_t i = 0; i < n; ++i) {
     const Cdt::Constraint_id copy = edges.at(undirected(outline[i], outline[(i + 1) % n]));
@@ -158,7 +160,7 @@ Cdt::Constraint_id insert_outline(Cdt& cdt, const std::vector<Point>& outline) {
     if (pass.front() != outline[i]) std::reverse(pass.begin(), pass.end());
     along.insert(along.end(), pass.begin(), std::prev(pass.end()));  // the next pass starts there
   }
-  const Cdt::Constraint_id constraint = cdt.insert_constraint(along.begin(), along.end(), true);
+  const Cdt::Constraint_id constraint = cdt.insert_polyline(along, true, hints.near(along.front()));
   for (const auto& [edge, copy] : edges) cdt.remove_constraint(copy);
   return constraint;
 }
@@ -169,7 +171,10 @@ int NavMeshState::winding_step(Face f, int i) const {
   if (!f->is_constrained(i)) return 0;
   const Vertex va = f->vertex(Cdt::ccw(i)), vb = f->vertex(Cdt::cw(i));
   int step = 0;
-  for (auto context = cdt.contexts_begin(va, vb); context != cdt.contexts_end(va, vb); ++context) {
+  // Each look-up of an edge's contexts is a search of a map over every
+  // constrained edge of the mesh, comparing points: one, not one per context.
+  const auto end = cdt.contexts_end(va, vb);
+  for (auto context = cdt.contexts_begin(va, vb); context != end; ++context) {
     const int weight = context->id() == domain ? 1 : -1;
     // f lies left of va -> vb: crossing to the right leaves a constraint that runs va -> vb.
     step += *context->current() == va ? -weight : weight;
@@ -225,20 +230,30 @@ void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, int sign) {
   // sliver face beside one can be outside the triangulated outline while its
   // centroid is inside the caller's polygon (which flooded the whole domain).
   std::vector<Vec2> outline;
-  for (auto v = cdt.vertices_in_constraint_begin(constraint);
-       v != cdt.vertices_in_constraint_end(constraint); ++v)
-    outline.push_back(to_vec((*v)->point()));
-  auto on_constraint = [&](Face f, int i) {
-    if (!f->is_constrained(i)) return false;
-    const Vertex va = f->vertex(Cdt::ccw(i)), vb = f->vertex(Cdt::cw(i));
-    for (auto c = cdt.contexts_begin(va, vb); c != cdt.contexts_end(va, vb); ++c)
-      if (c->id() == constraint) return true;
-    return false;
+  // The constraint's own edges join consecutive vertices of its outline;
+  // asking the hierarchy's contexts instead is a search over the whole mesh.
+  std::vector<std::pair<const void*, const void*>> own;
+  auto key = [](Vertex a, Vertex b) {
+    const void *pa = &*a, *pb = &*b;
+    return pa < pb ? std::pair{pa, pb} : std::pair{pb, pa};
   };
-  std::unordered_set<Face> seen;
+  Vertex previous;
+  for (auto v = cdt.vertices_in_constraint_begin(constraint);
+       v != cdt.vertices_in_constraint_end(constraint); ++v) {
+    outline.push_back(to_vec((*v)->point()));
+    if (previous != Vertex()) own.push_back(key(previous, *v));
+    previous = *v;
+  }
+  std::sort(own.begin(), own.end());
+  auto on_constraint = [&](Face f, int i) {
+    return f->is_constrained(i) &&
+           std::binary_search(own.begin(), own.end(),
+                              key(f->vertex(Cdt::ccw(i)), f->vertex(Cdt::cw(i))));
+  };
+  FaceNumbers seen;
   std::vector<Face> stack;
   auto flood = [&](Face start) {
-    if (cdt.is_infinite(start) || seen.count(start)) return;
+    if (cdt.is_infinite(start) || seen.contains(start)) return;
     // A sliver's rounded centroid can fall outside it, onto the far side of
     // a nearly collinear edge; such a face is flooded from a neighbour.
     const Point c = centroid(start);
@@ -267,16 +282,17 @@ void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, int sign) {
 }
 
 void NavMeshState::remove_if_orphan(Vertex v) {
-  if (v->info().points == 0 && !cdt.are_there_incident_constraints(v)) cdt.remove(v);
+  if (v->info().points != 0 || cdt.are_there_incident_constraints(v)) return;
+  hints.forget(v);
+  cdt.remove(v);
 }
 
-NavMesh::NavMesh(Vec2 min_corner, Vec2 max_corner) : impl_(std::make_unique<NavMeshState>()) {
+NavMesh::NavMesh(Vec2 min_corner, Vec2 max_corner) {
   if (!in_world(min_corner) || !in_world(max_corner))
     throw std::invalid_argument("domain corners must be finite coordinates within 1e9 m");
   if (!(min_corner.x < max_corner.x && min_corner.y < max_corner.y))
     throw std::invalid_argument("domain is empty: min_corner must be below max_corner on x and y");
-  impl_->min_corner = min_corner;
-  impl_->max_corner = max_corner;
+  impl_ = std::make_unique<NavMeshState>(min_corner, max_corner);
   const std::vector<Point> corners{to_point(min_corner),
                                    {max_corner.x, min_corner.y},
                                    to_point(max_corner),
@@ -306,8 +322,9 @@ int NavMesh::add_polygon(const std::vector<Vec2>& polygon, const std::string& na
   std::vector<Point> points;
   for (Vec2 p : cleaned) points.push_back(to_point(p));
   NavMeshState::Obstacle obstacle;
-  obstacle.constraint = insert_outline(m.cdt, points);
+  obstacle.constraint = insert_outline(m.cdt, m.hints, points);
   const std::vector<Vertex> touched = constraint_vertices(m.cdt, obstacle.constraint);
+  for (Vertex v : touched) m.hints.keep(m.cdt, v);
   m.forget_windings(touched);
   m.shift_enclosed(obstacle.constraint, +1);
   m.repair_windings(touched);
@@ -325,7 +342,8 @@ int NavMesh::add_point(Vec2 point, const std::string& name) {
     m.obstacles.emplace(m.next_id, std::move(obstacle));  // outside: blocks nothing
     return m.next_id++;
   }
-  obstacle.point = m.cdt.insert(to_point(point));
+  obstacle.point = m.cdt.insert(to_point(point), m.hints.near(to_point(point)));
+  m.hints.keep(m.cdt, obstacle.point);
   obstacle.point->info().points += 1;
   m.forget_windings({obstacle.point});
   m.repair_windings({obstacle.point});
@@ -355,11 +373,12 @@ void NavMesh::remove(int id) {
   for (Vertex v : touched)
     (v->info().points == 0 && !m.cdt.are_there_incident_constraints(v) ? orphans : seeds)
         .push_back(v);
-  const std::unordered_set<Vertex> orphan_set(orphans.begin(), orphans.end());
   for (Vertex v : orphans) {
     auto around = m.cdt.incident_vertices(v), end = around;
-    do
-      if (!m.cdt.is_infinite(around) && !orphan_set.count(around)) seeds.push_back(around);
+    do  // orphans keeps the order of touched: sorted
+      if (!m.cdt.is_infinite(around) &&
+          !std::binary_search(orphans.begin(), orphans.end(), Vertex(around)))
+        seeds.push_back(around);
     while (++around != end);
     m.remove_if_orphan(v);
   }
