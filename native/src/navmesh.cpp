@@ -1,7 +1,8 @@
 // Footfall — building and updating the navigation mesh. Walkability is kept
 // as a winding number per face, repaired locally after every update: faces
 // inside the changed obstacle are shifted, faces CGAL created are re-derived
-// from their known neighbours across the edges between them.
+// from their known neighbours across the edges between them, and those that
+// fill a removed vertex's hole take the number around it.
 #include <algorithm>
 #include <map>
 #include <stdexcept>
@@ -283,8 +284,29 @@ void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, int sign) {
 
 void NavMeshState::remove_if_orphan(Vertex v) {
   if (v->info().points != 0 || cdt.are_there_incident_constraints(v)) return;
+  // No constraint runs through v, so the faces around it share one winding
+  // number, and so do the faces CGAL fills its hole with: found from the
+  // faces across the hole's rim, which stay. (Re-deriving them from their
+  // neighbours meant visiting every face round v's neighbours, mostly
+  // faces no other part of the update touches: cache misses in a large mesh.)
+  const int winding = v->face()->info().winding;
+  std::vector<std::pair<Face, int>> rim;  // the face across each rim edge, and that edge in it
+  auto faces = cdt.incident_faces(v), end = faces;
+  do {
+    const int i = faces->index(v);
+    rim.emplace_back(faces->neighbor(i), cdt.mirror_index(faces, i));
+  } while (++faces != end);
   hints.forget(v);
   cdt.remove(v);
+  std::vector<Face> fill;
+  for (const auto& [face, edge] : rim) fill.push_back(face->neighbor(edge));
+  while (!fill.empty()) {
+    const Face f = fill.back();
+    fill.pop_back();
+    if (f->info().winding != FaceInfo::kUnknown) continue;
+    f->info().winding = winding;
+    for (int i = 0; i < 3; ++i) fill.push_back(f->neighbor(i));
+  }
 }
 
 NavMesh::NavMesh(Vec2 min_corner, Vec2 max_corner) {
@@ -367,22 +389,7 @@ void NavMesh::remove(int id) {
     obstacle.point->info().points -= 1;
     touched = {obstacle.point};
   }
-  // Vertices nothing holds any more go; the faces around the holes they leave
-  // are found again through their former neighbours.
-  std::vector<Vertex> orphans, seeds;
-  for (Vertex v : touched)
-    (v->info().points == 0 && !m.cdt.are_there_incident_constraints(v) ? orphans : seeds)
-        .push_back(v);
-  for (Vertex v : orphans) {
-    auto around = m.cdt.incident_vertices(v), end = around;
-    do  // orphans keeps the order of touched: sorted
-      if (!m.cdt.is_infinite(around) &&
-          !std::binary_search(orphans.begin(), orphans.end(), Vertex(around)))
-        seeds.push_back(around);
-    while (++around != end);
-    m.remove_if_orphan(v);
-  }
-  m.repair_windings(seeds);
+  for (Vertex v : touched) m.remove_if_orphan(v);  // vertices nothing holds any more go
 }
 
 bool NavMesh::contains(int id) const { return impl_->obstacles.count(id) > 0; }

@@ -43,7 +43,8 @@ struct NavMeshState {
   /// Adds `sign` times the winding number of the closed `constraint` to the
   /// faces it encloses.
   void shift_enclosed(Cdt::Constraint_id constraint, int sign);
-  /// Removes a vertex that no constraint and no point obstacle uses any more.
+  /// Removes a vertex that no constraint and no point obstacle uses any more,
+  /// giving the faces that fill its hole the winding number around it.
   void remove_if_orphan(Vertex v);
 };
 
