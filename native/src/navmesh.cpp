@@ -397,7 +397,7 @@ bool NavMesh::contains(int id) const { return impl_->obstacles.count(id) > 0; }
 double NavMesh::clearance(Vec2 point) const {
   const NavMeshState& m = *impl_;
   if (!in_world(point)) throw std::invalid_argument("clearance: point is not finite");
-  const Face f = m.cdt.locate(to_point(point));
+  const Face f = m.cdt.locate(to_point(point), m.hints.near(to_point(point)));
   if (!m.walkable(f)) return 0.0;
   return obstacle_distance(m, f, point, point);
 }
@@ -407,7 +407,7 @@ double NavMesh::clearance_between(Vec2 a, Vec2 b, double limit) const {
   if (!in_world(a) || !in_world(b))
     throw std::invalid_argument("clearance_between: points are not finite");
   if (!m.in_domain(a) || !m.in_domain(b)) return 0.0;
-  const Face f = m.cdt.locate(to_point(a));
+  const Face f = m.cdt.locate(to_point(a), m.hints.near(to_point(a)));
   if (!m.walkable(f)) return 0.0;
   return obstacle_distance(m, f, a, b, limit);
 }

@@ -24,7 +24,7 @@ struct NavMeshState {
   Cdt cdt;
   Cdt::Constraint_id domain = nullptr;
   Vec2 min_corner, max_corner;
-  LocateHints hints;  ///< Where insertions start locating their points.
+  LocateHints hints;  ///< Where point locations start (updates change it, queries read it).
   std::unordered_map<int, Obstacle> obstacles;
   int next_id = 0;
 
