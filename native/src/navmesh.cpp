@@ -27,6 +27,7 @@ std::vector<Vec2> clean_polygon(const std::vector<Vec2>& polygon, const std::str
     throw std::invalid_argument((name.empty() ? std::string("polygon") : name) +
                                 " has no vertices");
   std::vector<Vec2> out;
+  out.reserve(polygon.size());
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     if (!in_world(polygon[i]))
       throw std::invalid_argument(where(name, i) + " is not a finite coordinate within 1e9 m");
@@ -41,6 +42,15 @@ std::vector<Vec2> clean_polygon(const std::vector<Vec2>& polygon, const std::str
 /// their winding numbers inside the rectangle are those of the input. Keeping
 /// every vertex in the rectangle keeps the triangulation's hull the domain's.
 std::vector<Vec2> clip_to_rectangle(std::vector<Vec2> polygon, Vec2 lo, Vec2 hi) {
+  if (std::all_of(polygon.begin(), polygon.end(), [&](Vec2 p) {
+        return p.x >= lo.x && p.y >= lo.y && p.x <= hi.x && p.y <= hi.y;
+      })) {
+    // Nothing to cut: the polygon as the four passes leave it, each starting
+    // one vertex on (the start decides CGAL's insertion order).
+    std::rotate(polygon.begin(), polygon.begin() + static_cast<long>(4 % polygon.size()),
+                polygon.end());
+    return polygon;
+  }
   // Each side of the rectangle: inside test and where an edge crosses it.
   struct Side {
     int axis;      // 0: x, 1: y
@@ -144,11 +154,14 @@ std::pair<Point, Point> undirected(const Point& a, const Point& b) {
 Cdt::Constraint_id insert_outline(Cdt& cdt, const LocateHints& hints,
                                   const std::vector<Point>& outline) {
   const std::size_t n = outline.size();
+  std::vector<std::pair<Point, Point>> sides;
+  sides.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) sides.push_back(undirected(outline[i], outline[(i + 1) % n]));
+  std::sort(sides.begin(), sides.end());
+  if (std::adjacent_find(sides.begin(), sides.end()) == sides.end())
+    return cdt.insert_polyline(outline, true, hints.near(outline.front()));
   std::map<std::pair<Point, Point>, Cdt::Constraint_id> edges;
-  bool retraced = false;
-  for (std::size_t i = 0; i < n; ++i)
-    retraced |= !edges.emplace(undirected(outline[i], outline[(i + 1) % n]), nullptr).second;
-  if (!retraced) return cdt.insert_polyline(outline, true, hints.near(outline.front()));
+  for (const auto& side : sides) edges.emplace(side, nullptr);
   for (auto& [edge, copy] : edges)
     copy = cdt.insert_polyline({edge.first, edge.second}, false, hints.near(edge.first));
   std::vector<Point> along;
@@ -186,6 +199,8 @@ int NavMeshState::winding_step(Face f, int i) const {
 void NavMeshState::repair_windings(const std::vector<Vertex>& seeds) {
   constexpr int kPending = FaceInfo::kUnknown + 1;
   std::vector<Face> region, known;
+  region.reserve(64);  // a few dozen faces around an obstacle's vertices: one allocation
+  known.reserve(64);
   auto collect = [&](Face f) {
     if (f->info().winding != FaceInfo::kUnknown) return;
     if (cdt.is_infinite(f)) {
@@ -231,9 +246,11 @@ void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, int sign) {
   // sliver face beside one can be outside the triangulated outline while its
   // centroid is inside the caller's polygon (which flooded the whole domain).
   std::vector<Vec2> outline;
+  outline.reserve(16);  // most outlines are short: one allocation
   // The constraint's own edges join consecutive vertices of its outline;
   // asking the hierarchy's contexts instead is a search over the whole mesh.
   std::vector<std::pair<const void*, const void*>> own;
+  own.reserve(16);
   auto key = [](Vertex a, Vertex b) {
     const void *pa = &*a, *pb = &*b;
     return pa < pb ? std::pair{pa, pb} : std::pair{pb, pa};
@@ -253,6 +270,7 @@ void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, int sign) {
   };
   FaceNumbers seen;
   std::vector<Face> stack;
+  stack.reserve(16);
   auto flood = [&](Face start) {
     if (cdt.is_infinite(start) || seen.contains(start)) return;
     // A sliver's rounded centroid can fall outside it, onto the far side of
@@ -291,6 +309,7 @@ void NavMeshState::remove_if_orphan(Vertex v) {
   // faces no other part of the update touches: cache misses in a large mesh.)
   const int winding = v->face()->info().winding;
   std::vector<std::pair<Face, int>> rim;  // the face across each rim edge, and that edge in it
+  rim.reserve(16);                        // six on average: one allocation
   auto faces = cdt.incident_faces(v), end = faces;
   do {
     const int i = faces->index(v);
@@ -299,6 +318,7 @@ void NavMeshState::remove_if_orphan(Vertex v) {
   hints.forget(v);
   cdt.remove(v);
   std::vector<Face> fill;
+  fill.reserve(3 * rim.size());
   for (const auto& [face, edge] : rim) fill.push_back(face->neighbor(edge));
   while (!fill.empty()) {
     const Face f = fill.back();
@@ -342,6 +362,7 @@ int NavMesh::add_polygon(const std::vector<Vec2>& polygon, const std::string& na
   // cancelling (the non-zero rule per obstacle).
   if (twice_signed_area(cleaned) < 0) std::reverse(cleaned.begin(), cleaned.end());
   std::vector<Point> points;
+  points.reserve(cleaned.size());
   for (Vec2 p : cleaned) points.push_back(to_point(p));
   NavMeshState::Obstacle obstacle;
   obstacle.constraint = insert_outline(m.cdt, m.hints, points);
