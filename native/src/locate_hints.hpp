@@ -14,6 +14,7 @@
 
 namespace footfall {
 
+/// One kept vertex per grid cell, where CGAL's walks start.
 class LocateHints {
  public:
   LocateHints(Vec2 lo, Vec2 hi) : lo_(lo), hi_(hi) { cells_.resize(side_ * side_); }
@@ -33,7 +34,7 @@ class LocateHints {
   }
 
   /// Keeps `v`, a new vertex of `cdt`, as its cell's start. The grid is
-  /// refined as the mesh grows, to one or two vertices per cell.
+  /// refined as the mesh grows: at most two vertices per cell.
   void keep(const Cdt& cdt, Vertex v) {
     if (cdt.number_of_vertices() > 2 * cells_.size()) {
       side_ *= 2;
