@@ -46,13 +46,12 @@ Vec2 direction(const Corner& a, const Corner& b, bool& ok) {
 }
 
 /// Appends the arc around `c` from touch point `p0` to `p1`, as the
-/// circumscribed polygon, then `p1`.
-void append_arc(const Corner& c, Vec2 p0, Vec2 p1, double tolerance, std::vector<Vec2>& out) {
+/// circumscribed polygon with steps of at most `max_step` radians, then `p1`.
+void append_arc(const Corner& c, Vec2 p0, Vec2 p1, double max_step, std::vector<Vec2>& out) {
   const double a0 = angle_of(p0 - c.center), a1 = angle_of(p1 - c.center);
   double sweep = c.side * (a1 - a0);  // left corners turn counter-clockwise
   while (sweep < 0) sweep += 2 * kPi;
   while (sweep >= 2 * kPi) sweep -= 2 * kPi;
-  const double max_step = 2 * std::acos(c.radius / (c.radius + tolerance));
   const int n = static_cast<int>(std::ceil(sweep / max_step));
   if (n > 0 && sweep > 1e-12) {
     const double step = sweep / n, reach = c.radius / std::cos(step / 2);
@@ -104,12 +103,15 @@ bool touch_points(const std::vector<Corner>& corners, std::vector<Touch>& touche
   return true;
 }
 
-/// The polyline of tangents and arcs (arcs on their circumscribed polygons).
+/// The polyline of tangents and arcs (arcs on their circumscribed polygons,
+/// every corner's circle of `radius`, at most `tolerance` outside it).
 std::vector<Vec2> trace(const std::vector<Corner>& corners, const std::vector<Touch>& touches,
-                        double tolerance) {
+                        double radius, double tolerance) {
+  // The step that keeps the polygon's vertices within tolerance of the circle.
+  const double max_step = 2 * std::acos(radius / (radius + tolerance));
   std::vector<Vec2> points{corners.front().center};
   for (std::size_t k = 1; k < corners.size(); ++k) {
-    if (k > 1) append_arc(corners[k - 1], touches[k - 1].in, touches[k - 1].out, tolerance, points);
+    if (k > 1) append_arc(corners[k - 1], touches[k - 1].in, touches[k - 1].out, max_step, points);
     points.push_back(touches[k].in);
   }
   return points;
@@ -146,22 +148,25 @@ double sweep(int side, double from, double to) {
   return a;
 }
 
-/// How far the arc of corner `c`, between the tangents from `prev` and to
-/// `next`, reaches beyond the channel's fan of triangles around it (<= 0 if
-/// it stays inside). The fan runs through the portals that end at the corner, from
-/// the vertex before them to the vertex after them (the start or the goal at
-/// the channel's ends, whose directions lie inside the end triangles' fans).
-double arc_excess(const Corner& prev, const Corner& c, const Corner& next, Vec2 start, Vec2 goal,
-                  const std::vector<Portal>& portals) {
+/// The channel's fan of triangles around corner `c`: it runs through the
+/// portals that end at the corner, from the vertex before them to the vertex
+/// after them (the start or the goal at the channel's ends, whose directions
+/// lie inside the end triangles' fans).
+std::pair<Vec2, Vec2> fan_ends(const Corner& c, Vec2 start, Vec2 goal,
+                               const std::vector<Portal>& portals) {
   const int n = static_cast<int>(portals.size());
   auto end_of = [&](int i) { return c.side > 0 ? portals[i].left : portals[i].right; };
   int first = c.portal, last = c.portal;
   while (first > 0 && end_of(first - 1) == c.center) --first;
   while (last + 1 < n && end_of(last + 1) == c.center) ++last;
-  const Vec2 before = first > 0 ? end_of(first - 1) : start;
-  const Vec2 after = last + 1 < n ? end_of(last + 1) : goal;
-  Vec2 from, in, out, to;
-  if (!tangent(prev, c, from, in) || !tangent(c, next, out, to)) return 2 * kPi;
+  return {first > 0 ? end_of(first - 1) : start, last + 1 < n ? end_of(last + 1) : goal};
+}
+
+/// How far the arc of corner `c`, from touch point `in` to `out`, reaches
+/// beyond its fan (<= 0 if it stays inside).
+double arc_excess(const Corner& c, Vec2 in, Vec2 out, Vec2 start, Vec2 goal,
+                  const std::vector<Portal>& portals) {
+  const auto [before, after] = fan_ends(c, start, goal, portals);
   const double lo = angle_of(before - c.center);
   double fan = sweep(c.side, lo, angle_of(after - c.center));
   if (fan == 0.0) fan = 2 * kPi;  // round the tip of a wall: in on one face, out on the other
@@ -170,18 +175,56 @@ double arc_excess(const Corner& prev, const Corner& c, const Corner& next, Vec2 
   return arc_start + arc - fan;
 }
 
+/// A stand-in for the angle of `v` turning `side`'s way from the x axis, in
+/// [0, 4): it grows with the angle, and costs a division where atan2 costs
+/// some hundred instructions. NaN for the zero vector.
+double diamond_angle(Vec2 v, int side) {
+  const double x = v.x, y = side * v.y;
+  if (y >= 0) return x >= 0 ? y / (x + y) : 1 - x / (y - x);
+  return x < 0 ? 2 - y / (-x - y) : 3 + x / (x - y);
+}
+
+/// True if the arc of `c` from `in` to `out` lies inside its fan with room
+/// to spare (1e-9 of a turn): then arc_excess is surely negative, without
+/// its four atan2. False when in doubt (near a fan end, a fan of nearly a
+/// full turn, a nearly empty arc), where arc_excess must decide.
+bool arc_clearly_in_fan(const Corner& c, Vec2 in, Vec2 out, Vec2 start, Vec2 goal,
+                        const std::vector<Portal>& portals) {
+  constexpr double kRoom = 1e-9;  // diamond angle units, each at least a radian's worth
+  const auto [before, after] = fan_ends(c, start, goal, portals);
+  const double lo = diamond_angle(before - c.center, c.side);
+  auto turn = [&](Vec2 p) {
+    const double t = diamond_angle(p - c.center, c.side) - lo;
+    return t < 0 ? t + 4 : t;
+  };
+  const double to_in = turn(in), to_out = turn(out), fan = turn(after);
+  return to_in > kRoom && to_out > to_in + kRoom && fan > to_out + kRoom && fan < 4 - kRoom;
+}
+
+/// The same for the arc between the tangents from `prev` and to `next`
+/// (infinite-ish, 2 pi, where either tangent does not exist).
+double arc_excess(const Corner& prev, const Corner& c, const Corner& next, Vec2 start, Vec2 goal,
+                  const std::vector<Portal>& portals) {
+  Vec2 from, in, out, to;
+  if (!tangent(prev, c, from, in) || !tangent(c, next, out, to)) return 2 * kPi;
+  return arc_excess(c, in, out, start, goal, portals);
+}
+
 /// The corner whose arc reaches farthest out of its fan, if any does: with
 /// circles, two corners on opposite sides can cross the funnel before a
 /// later, tighter corner of the same side shows that the path bends there
 /// instead, and the path would loop round the first one.
-std::optional<std::size_t> worst_wrap(const std::vector<Corner>& corners, Vec2 start, Vec2 goal,
+std::optional<std::size_t> worst_wrap(const std::vector<Corner>& corners,
+                                      const std::vector<Touch>& touches, Vec2 start, Vec2 goal,
                                       const std::vector<Portal>& portals) {
   std::optional<std::size_t> worst;
   double most = kArcSlack;
   for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
-    if (corners[k].radius == 0.0) continue;
+    if (corners[k].radius == 0.0 ||
+        arc_clearly_in_fan(corners[k], touches[k].in, touches[k].out, start, goal, portals))
+      continue;
     const double excess =
-        arc_excess(corners[k - 1], corners[k], corners[k + 1], start, goal, portals);
+        arc_excess(corners[k], touches[k].in, touches[k].out, start, goal, portals);
     if (excess > most) {
       most = excess;
       worst = k;
@@ -300,7 +343,10 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
   std::vector<Corner> corners{{start, 0.0, 0}};
   Corner apex = corners.front(), left = apex, right = apex;
   int apex_index = -1, left_index = -1, right_index = -1;
-  Vec2 left_dir, right_dir;  // from the apex towards left and right, while they differ from it
+  // From the apex towards left and right, while they differ from it; kept for
+  // the next portal, which shares a corner with this one where they are a
+  // triangle's edges.
+  Vec2 left_dir, right_dir;
   bool ok = true;
   for (int i = 0; i <= n; ++i) {
     const Corner new_left = left_of(i), new_right = right_of(i);
@@ -317,7 +363,8 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
     if (new_right.same(apex)) {
       right = new_right;
       right_index = i;
-    } else if (const Vec2 to_new_right = direction(apex, new_right, ok);
+    } else if (const Vec2 to_new_right =
+                   right.same(new_right) ? right_dir : direction(apex, new_right, ok);
                right.same(apex) || right.same(new_right) || cross(right_dir, to_new_right) >= 0) {
       if (left.same(apex) || cross(left_dir, to_new_right) <= 0) {
         right = new_right;
@@ -326,23 +373,24 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
       } else {
         // Crossed: the left corner comes first, unless the new right one
         // stands in the way to it (with circles, either may).
-        wrap(blocks(new_right, apex, left) ? -1 : +1,
-             blocks(new_right, apex, left) ? i : left_index);
+        const bool in_the_way = blocks(new_right, apex, left);
+        wrap(in_the_way ? -1 : +1, in_the_way ? i : left_index);
         continue;
       }
     }
     if (new_left.same(apex)) {
       left = new_left;
       left_index = i;
-    } else if (const Vec2 to_new_left = direction(apex, new_left, ok);
+    } else if (const Vec2 to_new_left =
+                   left.same(new_left) ? left_dir : direction(apex, new_left, ok);
                left.same(apex) || left.same(new_left) || cross(left_dir, to_new_left) <= 0) {
       if (right.same(apex) || cross(right_dir, to_new_left) >= 0) {
         left = new_left;
         left_index = i;
         left_dir = to_new_left;
       } else {
-        wrap(blocks(new_left, apex, right) ? +1 : -1,
-             blocks(new_left, apex, right) ? i : right_index);
+        const bool in_the_way = blocks(new_left, apex, right);
+        wrap(in_the_way ? +1 : -1, in_the_way ? i : right_index);
         continue;
       }
     }
@@ -368,7 +416,8 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
       corners.insert(after, end);
       continue;
     }
-    if (const std::optional<std::size_t> loose = worst_wrap(corners, start, goal, portals)) {
+    if (const std::optional<std::size_t> loose =
+            worst_wrap(corners, touches, start, goal, portals)) {
       corners.erase(corners.begin() + static_cast<long>(*loose));
       continue;
     }
@@ -381,7 +430,7 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
       return result;
     }
   }
-  result.points = trace(corners, touches, tolerance);
+  result.points = trace(corners, touches, radius, tolerance);
   result.ok = true;
   return result;
 }

@@ -35,6 +35,15 @@ class FaceNumbers {
     }
   }
 
+  /// True if `f` has a number.
+  bool contains(Face f) const {
+    const void* key = &*f;
+    for (std::size_t i = home(key);; i = (i + 1) & mask_) {
+      if (slots_[i].key == key) return true;
+      if (slots_[i].key == nullptr) return false;
+    }
+  }
+
   /// How many faces have a number.
   int size() const { return size_; }
 

@@ -1,15 +1,16 @@
 // Footfall — building and updating the navigation mesh. Walkability is kept
 // as a winding number per face, repaired locally after every update: faces
 // inside the changed obstacle are shifted, faces CGAL created are re-derived
-// from their known neighbours across the edges between them.
+// from their known neighbours across the edges between them, and those that
+// fill a removed vertex's hole take the number around it.
 #include <algorithm>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <tuple>
-#include <unordered_set>
 #include <utility>
 
+#include "face_numbers.hpp"
 #include "navmesh_impl.hpp"
 #include "obstacle_distance.hpp"
 
@@ -26,6 +27,7 @@ std::vector<Vec2> clean_polygon(const std::vector<Vec2>& polygon, const std::str
     throw std::invalid_argument((name.empty() ? std::string("polygon") : name) +
                                 " has no vertices");
   std::vector<Vec2> out;
+  out.reserve(polygon.size());
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     if (!in_world(polygon[i]))
       throw std::invalid_argument(where(name, i) + " is not a finite coordinate within 1e9 m");
@@ -40,6 +42,15 @@ std::vector<Vec2> clean_polygon(const std::vector<Vec2>& polygon, const std::str
 /// their winding numbers inside the rectangle are those of the input. Keeping
 /// every vertex in the rectangle keeps the triangulation's hull the domain's.
 std::vector<Vec2> clip_to_rectangle(std::vector<Vec2> polygon, Vec2 lo, Vec2 hi) {
+  if (std::all_of(polygon.begin(), polygon.end(), [&](Vec2 p) {
+        return p.x >= lo.x && p.y >= lo.y && p.x <= hi.x && p.y <= hi.y;
+      })) {
+    // Nothing to cut: the polygon as the four passes leave it, each starting
+    // one vertex on (the start decides CGAL's insertion order).
+    std::rotate(polygon.begin(), polygon.begin() + static_cast<long>(4 % polygon.size()),
+                polygon.end());
+    return polygon;
+  }
   // Each side of the rectangle: inside test and where an edge crosses it.
   struct Side {
     int axis;      // 0: x, 1: y
@@ -140,14 +151,19 @@ std::pair<Point, Point> undirected(const Point& a, const Point& b) {
 /// edge inserted later could bend a retraced one again), then the outline
 /// along the vertices they found (every piece already a constrained edge),
 /// and then the first copies removed.
-Cdt::Constraint_id insert_outline(Cdt& cdt, const std::vector<Point>& outline) {
+Cdt::Constraint_id insert_outline(Cdt& cdt, const LocateHints& hints,
+                                  const std::vector<Point>& outline) {
   const std::size_t n = outline.size();
+  std::vector<std::pair<Point, Point>> sides;
+  sides.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) sides.push_back(undirected(outline[i], outline[(i + 1) % n]));
+  std::sort(sides.begin(), sides.end());
+  if (std::adjacent_find(sides.begin(), sides.end()) == sides.end())
+    return cdt.insert_polyline(outline, true, hints.near(outline.front()));
   std::map<std::pair<Point, Point>, Cdt::Constraint_id> edges;
-  bool retraced = false;
-  for (std::size_t i = 0; i < n; ++i)
-    retraced |= !edges.emplace(undirected(outline[i], outline[(i + 1) % n]), nullptr).second;
-  if (!retraced) return cdt.insert_constraint(outline.begin(), outline.end(), true);
-  for (auto& [edge, copy] : edges) copy = cdt.insert_constraint(edge.first, edge.second);
+  for (const auto& side : sides) edges.emplace(side, nullptr);
+  for (auto& [edge, copy] : edges)
+    copy = cdt.insert_polyline({edge.first, edge.second}, false, hints.near(edge.first));
   std::vector<Point> along;
   for (std::size_t i = 0; i < n; ++i) {
     const Cdt::Constraint_id copy = edges.at(undirected(outline[i], outline[(i + 1) % n]));
@@ -158,7 +174,7 @@ Cdt::Constraint_id insert_outline(Cdt& cdt, const std::vector<Point>& outline) {
     if (pass.front() != outline[i]) std::reverse(pass.begin(), pass.end());
     along.insert(along.end(), pass.begin(), std::prev(pass.end()));  // the next pass starts there
   }
-  const Cdt::Constraint_id constraint = cdt.insert_constraint(along.begin(), along.end(), true);
+  const Cdt::Constraint_id constraint = cdt.insert_polyline(along, true, hints.near(along.front()));
   for (const auto& [edge, copy] : edges) cdt.remove_constraint(copy);
   return constraint;
 }
@@ -169,7 +185,10 @@ int NavMeshState::winding_step(Face f, int i) const {
   if (!f->is_constrained(i)) return 0;
   const Vertex va = f->vertex(Cdt::ccw(i)), vb = f->vertex(Cdt::cw(i));
   int step = 0;
-  for (auto context = cdt.contexts_begin(va, vb); context != cdt.contexts_end(va, vb); ++context) {
+  // Each look-up of an edge's contexts is a search of a map over every
+  // constrained edge of the mesh, comparing points: one, not one per context.
+  const auto end = cdt.contexts_end(va, vb);
+  for (auto context = cdt.contexts_begin(va, vb); context != end; ++context) {
     const int weight = context->id() == domain ? 1 : -1;
     // f lies left of va -> vb: crossing to the right leaves a constraint that runs va -> vb.
     step += *context->current() == va ? -weight : weight;
@@ -180,6 +199,8 @@ int NavMeshState::winding_step(Face f, int i) const {
 void NavMeshState::repair_windings(const std::vector<Vertex>& seeds) {
   constexpr int kPending = FaceInfo::kUnknown + 1;
   std::vector<Face> region, known;
+  region.reserve(64);  // a few dozen faces around an obstacle's vertices: one allocation
+  known.reserve(64);
   auto collect = [&](Face f) {
     if (f->info().winding != FaceInfo::kUnknown) return;
     if (cdt.is_infinite(f)) {
@@ -225,20 +246,33 @@ void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, int sign) {
   // sliver face beside one can be outside the triangulated outline while its
   // centroid is inside the caller's polygon (which flooded the whole domain).
   std::vector<Vec2> outline;
-  for (auto v = cdt.vertices_in_constraint_begin(constraint);
-       v != cdt.vertices_in_constraint_end(constraint); ++v)
-    outline.push_back(to_vec((*v)->point()));
-  auto on_constraint = [&](Face f, int i) {
-    if (!f->is_constrained(i)) return false;
-    const Vertex va = f->vertex(Cdt::ccw(i)), vb = f->vertex(Cdt::cw(i));
-    for (auto c = cdt.contexts_begin(va, vb); c != cdt.contexts_end(va, vb); ++c)
-      if (c->id() == constraint) return true;
-    return false;
+  outline.reserve(16);  // most outlines are short: one allocation
+  // The constraint's own edges join consecutive vertices of its outline;
+  // asking the hierarchy's contexts instead is a search over the whole mesh.
+  std::vector<std::pair<const void*, const void*>> own;
+  own.reserve(16);
+  auto key = [](Vertex a, Vertex b) {
+    const void *pa = &*a, *pb = &*b;
+    return pa < pb ? std::pair{pa, pb} : std::pair{pb, pa};
   };
-  std::unordered_set<Face> seen;
+  Vertex previous;
+  for (auto v = cdt.vertices_in_constraint_begin(constraint);
+       v != cdt.vertices_in_constraint_end(constraint); ++v) {
+    outline.push_back(to_vec((*v)->point()));
+    if (previous != Vertex()) own.push_back(key(previous, *v));
+    previous = *v;
+  }
+  std::sort(own.begin(), own.end());
+  auto on_constraint = [&](Face f, int i) {
+    return f->is_constrained(i) &&
+           std::binary_search(own.begin(), own.end(),
+                              key(f->vertex(Cdt::ccw(i)), f->vertex(Cdt::cw(i))));
+  };
+  FaceNumbers seen;
   std::vector<Face> stack;
+  stack.reserve(16);
   auto flood = [&](Face start) {
-    if (cdt.is_infinite(start) || seen.count(start)) return;
+    if (cdt.is_infinite(start) || seen.contains(start)) return;
     // A sliver's rounded centroid can fall outside it, onto the far side of
     // a nearly collinear edge; such a face is flooded from a neighbour.
     const Point c = centroid(start);
@@ -267,16 +301,40 @@ void NavMeshState::shift_enclosed(Cdt::Constraint_id constraint, int sign) {
 }
 
 void NavMeshState::remove_if_orphan(Vertex v) {
-  if (v->info().points == 0 && !cdt.are_there_incident_constraints(v)) cdt.remove(v);
+  if (v->info().points != 0 || cdt.are_there_incident_constraints(v)) return;
+  // No constraint runs through v, so the faces around it share one winding
+  // number, and so do the faces CGAL fills its hole with: found from the
+  // faces across the hole's rim, which stay. (Re-deriving them from their
+  // neighbours meant visiting every face round v's neighbours, mostly
+  // faces no other part of the update touches: cache misses in a large mesh.)
+  const int winding = v->face()->info().winding;
+  std::vector<std::pair<Face, int>> rim;  // the face across each rim edge, and that edge in it
+  rim.reserve(16);                        // six on average: one allocation
+  auto faces = cdt.incident_faces(v), end = faces;
+  do {
+    const int i = faces->index(v);
+    rim.emplace_back(faces->neighbor(i), cdt.mirror_index(faces, i));
+  } while (++faces != end);
+  hints.forget(v);
+  cdt.remove(v);
+  std::vector<Face> fill;
+  fill.reserve(3 * rim.size());
+  for (const auto& [face, edge] : rim) fill.push_back(face->neighbor(edge));
+  while (!fill.empty()) {
+    const Face f = fill.back();
+    fill.pop_back();
+    if (f->info().winding != FaceInfo::kUnknown) continue;
+    f->info().winding = winding;
+    for (int i = 0; i < 3; ++i) fill.push_back(f->neighbor(i));
+  }
 }
 
-NavMesh::NavMesh(Vec2 min_corner, Vec2 max_corner) : impl_(std::make_unique<NavMeshState>()) {
+NavMesh::NavMesh(Vec2 min_corner, Vec2 max_corner) {
   if (!in_world(min_corner) || !in_world(max_corner))
     throw std::invalid_argument("domain corners must be finite coordinates within 1e9 m");
   if (!(min_corner.x < max_corner.x && min_corner.y < max_corner.y))
     throw std::invalid_argument("domain is empty: min_corner must be below max_corner on x and y");
-  impl_->min_corner = min_corner;
-  impl_->max_corner = max_corner;
+  impl_ = std::make_unique<NavMeshState>(min_corner, max_corner);
   const std::vector<Point> corners{to_point(min_corner),
                                    {max_corner.x, min_corner.y},
                                    to_point(max_corner),
@@ -304,10 +362,12 @@ int NavMesh::add_polygon(const std::vector<Vec2>& polygon, const std::string& na
   // cancelling (the non-zero rule per obstacle).
   if (twice_signed_area(cleaned) < 0) std::reverse(cleaned.begin(), cleaned.end());
   std::vector<Point> points;
+  points.reserve(cleaned.size());
   for (Vec2 p : cleaned) points.push_back(to_point(p));
   NavMeshState::Obstacle obstacle;
-  obstacle.constraint = insert_outline(m.cdt, points);
+  obstacle.constraint = insert_outline(m.cdt, m.hints, points);
   const std::vector<Vertex> touched = constraint_vertices(m.cdt, obstacle.constraint);
+  for (Vertex v : touched) m.hints.keep(m.cdt, v);
   m.forget_windings(touched);
   m.shift_enclosed(obstacle.constraint, +1);
   m.repair_windings(touched);
@@ -325,7 +385,8 @@ int NavMesh::add_point(Vec2 point, const std::string& name) {
     m.obstacles.emplace(m.next_id, std::move(obstacle));  // outside: blocks nothing
     return m.next_id++;
   }
-  obstacle.point = m.cdt.insert(to_point(point));
+  obstacle.point = m.cdt.insert(to_point(point), m.hints.near(to_point(point)));
+  m.hints.keep(m.cdt, obstacle.point);
   obstacle.point->info().points += 1;
   m.forget_windings({obstacle.point});
   m.repair_windings({obstacle.point});
@@ -349,21 +410,7 @@ void NavMesh::remove(int id) {
     obstacle.point->info().points -= 1;
     touched = {obstacle.point};
   }
-  // Vertices nothing holds any more go; the faces around the holes they leave
-  // are found again through their former neighbours.
-  std::vector<Vertex> orphans, seeds;
-  for (Vertex v : touched)
-    (v->info().points == 0 && !m.cdt.are_there_incident_constraints(v) ? orphans : seeds)
-        .push_back(v);
-  const std::unordered_set<Vertex> orphan_set(orphans.begin(), orphans.end());
-  for (Vertex v : orphans) {
-    auto around = m.cdt.incident_vertices(v), end = around;
-    do
-      if (!m.cdt.is_infinite(around) && !orphan_set.count(around)) seeds.push_back(around);
-    while (++around != end);
-    m.remove_if_orphan(v);
-  }
-  m.repair_windings(seeds);
+  for (Vertex v : touched) m.remove_if_orphan(v);  // vertices nothing holds any more go
 }
 
 bool NavMesh::contains(int id) const { return impl_->obstacles.count(id) > 0; }
@@ -371,7 +418,7 @@ bool NavMesh::contains(int id) const { return impl_->obstacles.count(id) > 0; }
 double NavMesh::clearance(Vec2 point) const {
   const NavMeshState& m = *impl_;
   if (!in_world(point)) throw std::invalid_argument("clearance: point is not finite");
-  const Face f = m.cdt.locate(to_point(point));
+  const Face f = m.cdt.locate(to_point(point), m.hints.near(to_point(point)));
   if (!m.walkable(f)) return 0.0;
   return obstacle_distance(m, f, point, point);
 }
@@ -381,7 +428,7 @@ double NavMesh::clearance_between(Vec2 a, Vec2 b, double limit) const {
   if (!in_world(a) || !in_world(b))
     throw std::invalid_argument("clearance_between: points are not finite");
   if (!m.in_domain(a) || !m.in_domain(b)) return 0.0;
-  const Face f = m.cdt.locate(to_point(a));
+  const Face f = m.cdt.locate(to_point(a), m.hints.near(to_point(a)));
   if (!m.walkable(f)) return 0.0;
   return obstacle_distance(m, f, a, b, limit);
 }

@@ -1,48 +1,16 @@
-// Footfall — the navigation mesh's private state: CGAL's constrained Delaunay
-// triangulation (exact predicates) with the constraint hierarchy that gives
-// every obstacle an id, and per-face winding numbers for walkability.
+// Footfall — the navigation mesh's private state: the triangulation
+// (navmesh_cdt.hpp), the obstacles by id, and the local repairs of the
+// per-face winding numbers that say what is walkable.
 #pragma once
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Constrained_triangulation_plus_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
-
-#include <climits>
 #include <unordered_map>
 #include <vector>
 
 #include "footfall/navmesh.hpp"
+#include "locate_hints.hpp"
+#include "navmesh_cdt.hpp"
 
 namespace footfall {
-
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_2;
-
-/// Per face: the winding number of the domain (+1 inside) plus that of every
-/// obstacle (-1 inside each), so a face is walkable exactly when it is 1.
-struct FaceInfo {
-  static constexpr int kUnknown = INT_MIN;  ///< Set by CGAL on new faces; repaired locally.
-  int winding = kUnknown;
-};
-
-/// Per vertex: how many point obstacles sit on it.
-struct VertexInfo {
-  int points = 0;
-};
-
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, Kernel>;
-using FaceBase = CGAL::Triangulation_face_base_with_info_2<
-    FaceInfo, Kernel, CGAL::Constrained_triangulation_face_base_2<Kernel>>;
-using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
-using Cdt = CGAL::Constrained_triangulation_plus_2<
-    CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>>;
-using Face = Cdt::Face_handle;
-using Vertex = Cdt::Vertex_handle;
-
-inline Vec2 to_vec(const Point& p) { return {p.x(), p.y()}; }
-inline Point to_point(Vec2 v) { return {v.x, v.y}; }
 
 struct NavMeshState {
   /// One obstacle as the caller gave it.
@@ -51,9 +19,12 @@ struct NavMeshState {
     Vertex point;                             ///< Point obstacles (null outside the domain).
   };
 
+  NavMeshState(Vec2 lo, Vec2 hi) : min_corner(lo), max_corner(hi), hints(lo, hi) {}
+
   Cdt cdt;
   Cdt::Constraint_id domain = nullptr;
   Vec2 min_corner, max_corner;
+  LocateHints hints;  ///< Where point locations start (updates change it, queries read it).
   std::unordered_map<int, Obstacle> obstacles;
   int next_id = 0;
 
@@ -72,7 +43,8 @@ struct NavMeshState {
   /// Adds `sign` times the winding number of the closed `constraint` to the
   /// faces it encloses.
   void shift_enclosed(Cdt::Constraint_id constraint, int sign);
-  /// Removes a vertex that no constraint and no point obstacle uses any more.
+  /// Removes a vertex that no constraint and no point obstacle uses any more,
+  /// giving the faces that fill its hole the winding number around it.
   void remove_if_orphan(Vertex v);
 };
 

@@ -469,7 +469,7 @@ struct Pinch {
 Pinch find_pinch_within(const NavMeshState& mesh, const std::vector<Vec2>& points, double reach) {
   Pinch pinch;
   pinch.clearance = reach;
-  Face hint;
+  Face hint = mesh.hints.near(to_point(points.front()));
   double along = 0.0;
   for (std::size_t k = 0; k + 1 < points.size(); ++k) {
     const Vec2 a = points[k], b = points[k + 1];
@@ -640,7 +640,8 @@ PathResult NavMesh::find_path(const PathQuery& q) const {
     result.status = PathStatus::kOutside;
     return result;
   }
-  const Face start = m.cdt.locate(to_point(q.from)), goal = m.cdt.locate(to_point(q.to), start);
+  const Face start = m.cdt.locate(to_point(q.from), m.hints.near(to_point(q.from))),
+             goal = m.cdt.locate(to_point(q.to), m.hints.near(to_point(q.to)));
   auto blocked = [&](Face f, Vec2 p) {
     return !m.walkable(f) || obstacle_distance(m, f, p, p, q.radius) < q.radius;
   };
