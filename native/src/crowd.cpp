@@ -51,6 +51,14 @@ constexpr double kCheckDistance = 40.0;
 /// gained nothing), when one it sees stands within kJamDistance.
 constexpr int kBlockedHorizon = 100;
 constexpr double kJamDistance = 3.0;  ///< [m]
+/// Nodes the search of an agent with someone it sees within kJamDistance
+/// expands without one nearer its goal before it stops (the planner's
+/// stall_expansions, 300, is for one held up by obstacles): in a jam, a way
+/// forward shows within a few nodes or is not there yet.
+constexpr int kJamStall = 15;
+/// An agent whose way has not shortened by min_progress for this long
+/// searches as if alone again, for a way out that a short search misses. [s]
+constexpr double kJamPatience = 5.0;
 /// Longer ago than any time: "never". [s]
 constexpr double kForever = std::numeric_limits<double>::infinity();
 /// A blocked agent searches again only if something within this changed. [m]
@@ -288,14 +296,16 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   for (const std::size_t j : w.yielding_to)
     keep_out.insert(keep_out.end(), walkers[j].wish.begin(), walkers[j].wish.end());
   const MovingObstacles others = plans_of(walkers, seen);
-  // A blocked agent in a jam looks less far ahead: there the full horizon
-  // finds no more than waiting, at the most cost. One held up by obstacles
-  // alone needs it all (a side-on way through a narrow gap is long).
+  // An agent in a jam looks less far ahead, and a blocked one less deep:
+  // there the full search finds no more than waiting, or than a few nodes
+  // find, at the most cost. One held up by obstacles alone needs it all (a
+  // side-on way through a narrow gap is long).
   bool jammed = false;
   for (const std::size_t j : seen)
     jammed = jammed || distance(now.com[j], w.state.com) <= kJamDistance;
+  const bool patient = w.state.time - w.improved_at < kJamPatience;
   const SearchOptions options{leaves, keep_out, w.blocked >= 1 && jammed ? kBlockedHorizon : 0,
-                              kRestGrace};
+                              kRestGrace, jammed && patient ? kJamStall : 0};
   const SearchResult result = planner.plan(w.state, target.point, others, options);
   Attempt a;
   a.steps = result.footsteps;

@@ -613,7 +613,9 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
                                    const SearchOptions& options) const {
   if (options.horizon < 0) throw std::invalid_argument("horizon: must be >= 0");
   if (!(options.rest_grace >= 0.0)) throw std::invalid_argument("rest_grace: must be >= 0");
+  if (options.stall < 0) throw std::invalid_argument("stall: must be >= 0");
   const int horizon = options.horizon > 0 ? options.horizon : params_.max_expansions;
+  const int stall = options.stall > 0 ? options.stall : params_.stall_expansions;
   const KeepOut& keep_out = options.keep_out;
   if (!in_world(start.com) || !is_finite(start.com_velocity) || !std::isfinite(start.facing) ||
       !in_world(start.feet[0]) || !in_world(start.feet[1]) || !std::isfinite(start.time)) {
@@ -667,13 +669,12 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
       break;
     }
     if (current != 0) closed.push_back(current);
-    // Nothing nearer the goal for stall_expansions nodes: more of them would
-    // fill the same dead end (in a queue at a door, most of a search's time).
+    // Nothing nearer the goal for `stall` nodes: more of them would fill the
+    // same dead end (in a queue at a door, most of a search's time).
     if (search.nodes[current].h < nearest) {
       nearest = search.nodes[current].h;
       nearest_at = result.nodes_expanded;
-    } else if (params_.stall_expansions > 0 &&
-               result.nodes_expanded - nearest_at >= params_.stall_expansions) {
+    } else if (stall > 0 && result.nodes_expanded - nearest_at >= stall) {
       break;
     }
     expand(search, current, goal);

@@ -259,6 +259,14 @@ TEST(Planner, ASearchThatComesNoNearerStops) {
   EXPECT_LT(stalled.nodes_expanded, params.max_expansions / 2);
   EXPECT_EQ(stalled.status, Status::kPartial);
   EXPECT_NEAR(distance(stalled.end_state.com, full.end_state.com), 0.0, 0.3);
+  // One search may stall sooner than the planner's parameter says.
+  SearchOptions sooner;
+  sooner.stall = 15;
+  const SearchResult quick = brief.plan(start, {4, 0}, {}, sooner);
+  EXPECT_LT(quick.nodes_expanded, stalled.nodes_expanded);
+  EXPECT_EQ(quick.status, Status::kPartial);
+  sooner.stall = -1;
+  EXPECT_THROW(brief.plan(start, {4, 0}, {}, sooner), std::invalid_argument);
 }
 
 TEST(Planner, StandingCharacterWithNowhereToGoWaits) {

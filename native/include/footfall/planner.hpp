@@ -43,6 +43,9 @@ struct SearchOptions {
   /// fill the way ahead. The steps found are then cut before the first that
   /// runs into a rest taken for good; rests found keep clear of them anyway.
   double rest_grace = std::numeric_limits<double>::infinity();
+  /// Nodes expanded without one nearer the goal before the search stops;
+  /// 0: the planner's stall_expansions. [>= 0]
+  int stall = 0;
 };
 
 /// Stop steps that bring a character to rest, and where they leave it.
