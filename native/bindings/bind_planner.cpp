@@ -33,7 +33,9 @@ void bind_planner(py::module_& m) {
       .def_readonly("footsteps", &SearchResult::footsteps)
       .def_readonly("end_state", &SearchResult::end_state)
       .def_readonly("nodes_generated", &SearchResult::nodes_generated)
-      .def_readonly("nodes_expanded", &SearchResult::nodes_expanded);
+      .def_readonly("nodes_expanded", &SearchResult::nodes_expanded)
+      .def_readonly("refused_by", &SearchResult::refused_by,
+                    "Indices into `others` of the agents that turned down a step or a rest.");
 
   py::class_<FootstepPlanner>(m, "FootstepPlanner",
                               "The short-horizon best-first footstep planner.")

@@ -333,9 +333,13 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   if (asks_someone && w.blocked > 0 && w.state.standing() && !a.reached &&
       a.way_left > way.length - min_progress) {
     // Out of the wishes it yields to too: a wish may be the way out of
-    // another's, which those behind it make room for first.
+    // another's, which those behind it make room for first. If only those
+    // that go first turned anything down, the search among them alone would
+    // find what this one found.
+    const bool same = std::all_of(result.refused_by.begin(), result.refused_by.end(),
+                                  [&](std::size_t k) { return goes_first(walkers, seen[k], i); });
     const SearchResult wish =
-        planner.plan(w.state, target.point, plans_of(walkers, first), options);
+        same ? result : planner.plan(w.state, target.point, plans_of(walkers, first), options);
     const Vec2 from = w.state.com, to = wish.end_state.com;
     const bool gains = distance(to, target.point) < distance(from, target.point) - min_progress;
     const bool leaves_a_wish =

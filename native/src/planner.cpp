@@ -1,6 +1,7 @@
 #include "footfall/planner.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -346,7 +347,7 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
   if (blocker < others.size() && may_come_near(blocker) && touches(blocker)) return true;
   for (std::size_t j = 0; j < others.size(); ++j) {
     if (j != blocker && may_come_near(j) && touches(j)) {
-      others.set_blocker(j);
+      others.turned_down_by(j);
       return true;
     }
   }
@@ -387,19 +388,21 @@ bool FootstepPlanner::stands_clear(const FootstepState& state,
   // Room to turn on the spot, as room_to_turn() asks of static obstacles:
   // two agents resting face to face a few centimetres apart could never
   // step again, every turn swinging a shoulder into the other.
-  std::vector<Circle> mine{{state.com, 0.5 * character_.torso_width}};
-  for (const Vec2& foot : state.feet) mine.push_back({foot, character_.foot_radius});
+  const std::array<Circle, 3> mine{Circle{state.com, 0.5 * character_.torso_width},
+                                   Circle{state.feet[0], character_.foot_radius},
+                                   Circle{state.feet[1], character_.foot_radius}};
   double extent = mine.front().radius + kRestRoom;
   for (const Circle& circle : mine)
     extent = std::max(extent, distance(circle.center, state.com) + circle.radius);
   const long first = first_contact_instant(state.time);
-  for (std::size_t j = 0; j < others.size(); ++j) {
+  const auto touches = [&](std::size_t j) {
     // After its plan ends, the other stands too: the first instant from then
     // on is the last that can differ.
     const long last = std::max(first, first_contact_instant(others.plan(j).end_time()));
     const double span = static_cast<double>(last - first) * kContactDt;
     const double near = extent + others.reach(j) + 0.5 * others.top_speed(j) * kContactDt;
-    if (distance(others.at(j, first).com, state.com) > near + others.top_speed(j) * span) continue;
+    if (distance(others.at(j, first).com, state.com) > near + others.top_speed(j) * span)
+      return false;
     double start_gap = std::numeric_limits<double>::infinity();  // see touching()
     for (long k = first; k <= last; ++k) {
       const detail::AgentWhere& them = others.at(j, k);
@@ -418,7 +421,17 @@ bool FootstepPlanner::stands_clear(const FootstepState& state,
           gap.add(circle, shape.circles[i], pad);
         }
       if (k == first && standing_still(0.0, them.speed)) start_gap = gap.outright;
-      if (touching(gap, start_gap)) return false;
+      if (touching(gap, start_gap)) return true;
+    }
+    return false;
+  };
+  // As in touches_agents: the agent that turned down the last check first.
+  const std::size_t blocker = others.blocker();
+  if (blocker < others.size() && touches(blocker)) return false;
+  for (std::size_t j = 0; j < others.size(); ++j) {
+    if (j != blocker && touches(j)) {
+      others.turned_down_by(j);
+      return false;
     }
   }
   return true;
@@ -723,6 +736,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   if (options.rest_grace != std::numeric_limits<double>::infinity())
     cut_before_rests(start, search.others, result);
   choose_foot_orientations(result.footsteps, start.foot_orientation, character_);
+  result.refused_by = search.others.refusers();
   return result;
 }
 

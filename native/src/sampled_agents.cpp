@@ -14,6 +14,7 @@ void SampledAgents::reset(const MovingObstacles& others, const CharacterParams& 
   character_ = &character;
   rest_grace_ = std::numeric_limits<double>::infinity();
   blocker_ = std::numeric_limits<std::size_t>::max();
+  refusers_.clear();
   ++stamp_;
   if (others.size() > stride_) {  // a wider row: the old samples are stale anyway
     stride_ = others.size();

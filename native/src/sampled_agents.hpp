@@ -5,6 +5,7 @@
 // most of a crowd's planning time before this cache.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -64,7 +65,14 @@ class SampledAgents {
   /// The agent a step checked against these samples touched last (or
   /// size() and up: none yet), for the next check to try first.
   std::size_t blocker() const { return blocker_; }
-  void set_blocker(std::size_t j) { blocker_ = j; }
+  /// Notes that agent j turned down a step or a rest: it is the blocker now.
+  void turned_down_by(std::size_t j) {
+    if (j == blocker_) return;
+    blocker_ = j;
+    if (std::find(refusers_.begin(), refusers_.end(), j) == refusers_.end()) refusers_.push_back(j);
+  }
+  /// Every agent that turned down a step or a rest since the reset.
+  const std::vector<std::size_t>& refusers() const { return refusers_; }
   /// Walking others are taken to stand where their plans end for `grace`
   /// only (infinity: for good): their rests are provisional.
   void set_rest_grace(double grace) { rest_grace_ = grace; }
@@ -88,6 +96,7 @@ class SampledAgents {
 
   double rest_grace_ = std::numeric_limits<double>::infinity();
   std::size_t blocker_ = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> refusers_;
   const MovingObstacles* others_ = nullptr;
   const CharacterParams* character_ = nullptr;
   std::uint64_t stamp_ = 0;        ///< Counts resets.

@@ -454,6 +454,27 @@ TEST(Planner, AWalkingAgentsRestStandsForItsGraceOnly) {
   for (const Footstep& step : straight.footsteps) EXPECT_FALSE(planner.collides(step, {&crossing}));
 }
 
+// The crowd searches a blocked agent's wish among only some of the agents
+// it sees; when those the search names are all among them, it reuses the
+// search instead.
+TEST(Planner, NamesTheAgentsThatTurnedDownItsSteps) {
+  const CharacterParams character;
+  const ObstacleMap none;
+  const FootstepPlanner planner(character, PlannerParams{}, none);
+  const AgentPlan far = walk_alone(planner, "far", {0, 20}, {8, 20});
+  const AgentPlan head_on = walk_alone(planner, "head-on", {8, 0}, {0, 0});
+  const FootstepState start = standing_state({0, 0}, 0, character);
+  const SearchResult among_both = planner.plan(start, {8, 0}, {&far, &head_on});
+  EXPECT_EQ(among_both.refused_by, std::vector<std::size_t>{1});
+  const SearchResult among_one = planner.plan(start, {8, 0}, {&head_on});
+  EXPECT_EQ(among_one.refused_by, std::vector<std::size_t>{0});
+  EXPECT_EQ(among_one.status, among_both.status);
+  ASSERT_EQ(among_one.footsteps.size(), among_both.footsteps.size());
+  for (std::size_t k = 0; k < among_one.footsteps.size(); ++k)
+    EXPECT_EQ(among_one.footsteps[k].com_end, among_both.footsteps[k].com_end);
+  EXPECT_TRUE(planner.plan(start, {8, 0}, {&far}).refused_by.empty());
+}
+
 TEST(Plan, FeetNeverJump) {
   // The demo, and a walk with stops and restarts along the way (goal behind a wall).
   Scenario stops = one_agent({box_obstacle({3, 0}, {0.2, 3})}, {0, 0}, 0, {6, 0});

@@ -186,3 +186,5 @@ def test_search_takes_a_walking_agents_rest_for_its_grace_only(ff):
     assert straight.footsteps and straight.end_state.com[0] < 8.0
     with pytest.raises(ValueError, match="rest_grace"):
         planner.plan(start, (12.0, 0.0), [crossing], rest_grace=-1.0)
+    # The search names the agent that turned down its steps.
+    assert around.refused_by == [0]

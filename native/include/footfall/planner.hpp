@@ -74,6 +74,11 @@ struct SearchResult {
   FootstepState end_state;          ///< State after the last step.
   int nodes_generated = 0;          ///< Valid successors created.
   int nodes_expanded = 0;           ///< Nodes taken off the open list.
+  /// Indices into `others` of the agents that turned down a step or a rest
+  /// the search tried. Every check asks whether any of `others` is in the
+  /// way, so the same search among fewer others, all of these among them,
+  /// finds the same.
+  std::vector<std::size_t> refused_by;
 };
 
 /// Plans footsteps for one character among static obstacles. Stateless between
