@@ -449,13 +449,19 @@ bool FootstepPlanner::room_to_turn(Vec2 com) const {
 
 bool FootstepPlanner::keeps_out(const FootstepState& rested, const KeepOut& keep_out) const {
   if (keep_out.empty()) return true;
-  std::vector<Circle> mine{{rested.feet[0], character_.foot_radius},
-                           {rested.feet[1], character_.foot_radius}};
-  for (const Circle& circle : torso_circles(rested.com, rested.facing, character_))
-    mine.push_back(circle);
+  const auto torso = torso_circles(rested.com, rested.facing, character_);
+  const std::array<Circle, 5> mine{Circle{rested.feet[0], character_.foot_radius},
+                                   Circle{rested.feet[1], character_.foot_radius}, torso[0],
+                                   torso[1], torso[2]};
+  double reach = 0.0;  // of the circles from the COM, with a margin for rounding
   for (const Circle& circle : mine)
-    for (const Circle& disc : keep_out)
+    reach = std::max(reach, distance(circle.center, rested.com) + circle.radius + 1e-9);
+  for (const Circle& disc : keep_out) {
+    const Vec2 d = disc.center - rested.com;
+    if (dot(d, d) >= (reach + disc.radius) * (reach + disc.radius)) continue;  // far from all
+    for (const Circle& circle : mine)
       if (distance(circle.center, disc.center) < circle.radius + disc.radius) return false;
+  }
   return true;
 }
 
