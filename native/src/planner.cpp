@@ -288,57 +288,65 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
   // The character at each instant, sampled when first wanted: COM, speed,
   // torso circles, and how far those and the foot reach from the COM.
   struct Instant {
+    bool sampled = false;
     Vec2 com;
-    double speed;
+    double speed = 0.0;
     std::array<Circle, 3> torso;
-    double extent;
+    double extent = 0.0;
   };
   thread_local std::vector<Instant> mine;
-  mine.clear();
+  mine.assign(static_cast<std::size_t>(last - first + 1), Instant{});
   const auto torso_offsets = torso_circles({0.0, 0.0}, step.phi, character_);  // as above
   const auto instant = [&](long k) -> const Instant& {
-    while (first + static_cast<long>(mine.size()) <= k) {
-      const double t = static_cast<double>(first + static_cast<long>(mine.size())) * kContactDt;
-      const ComSample me = com_at(step, t);
-      Instant sample{me.position, length(me.velocity), torso_offsets,
-                     std::max(torso_extent_, distance(foot.center, me.position) + foot.radius)};
+    Instant& sample = mine[static_cast<std::size_t>(k - first)];
+    if (!sample.sampled) {
+      const ComSample me = com_at(step, static_cast<double>(k) * kContactDt);
+      sample = {true, me.position, length(me.velocity), torso_offsets,
+                std::max(torso_extent_, distance(foot.center, me.position) + foot.radius)};
       for (Circle& circle : sample.torso) circle.center = me.position + circle.center;
-      mine.push_back(sample);
     }
-    return mine[static_cast<std::size_t>(k - first)];
+    return sample;
   };
   // A step from standing that starts on an instant starts where the
   // character stood: it stood still there, whatever speed the step sets off at.
   const bool stood_at_first =
       from_standing && std::fabs(static_cast<double>(first) * kContactDt - step.start_time) < 1e-9;
-  const auto touches = [&](std::size_t j) {
-    double start_gap = std::numeric_limits<double>::infinity();  // see touching()
-    for (long k = first; k <= last; ++k) {
-      if (!others.counts(j, k)) continue;
-      const Instant& me = instant(k);
-      const detail::AgentWhere& them = others.at(j, k);
-      // Both move between instants: the circles are grown by half the travel.
-      const double pad = 0.5 * (me.speed + them.speed) * kContactDt;
-      const Vec2 between = me.com - them.com;
-      const double near = me.extent + others.reach(j) + pad;
-      if (dot(between, between) > near * near) continue;
-      const detail::AgentShape& shape = others.shape(j, k);
-      // Too far apart for any pair of circles to come within the padding; at
-      // the first instant the gap is still wanted for the exception below.
-      const double apart = length(between) - me.extent - shape.extent - pad;
-      if (k != first && apart > 0.0) continue;
-      Gap gap;  // of the torso: the foot is put down clear of everyone, standing close or not
-      for (int i = 0; i < shape.count; ++i) {
-        const Circle& theirs = shape.circles[i];
-        const Vec2 to_foot = foot.center - theirs.center;
-        const double foot_touch = foot.radius + theirs.radius + pad;
-        if (dot(to_foot, to_foot) <= foot_touch * foot_touch) return true;
-        for (const Circle& circle : me.torso) gap.add(circle, theirs, pad);
-      }
-      if (k == first && standing_still(stood_at_first ? 0.0 : me.speed, them.speed))
-        start_gap = gap.outright;
-      if (touching(gap, start_gap)) return true;
+  // True if the character touches agent j at instant k; the first instant
+  // sets `start_gap` (see touching()), which the later ones need.
+  const auto touches_at = [&](std::size_t j, long k, double& start_gap) {
+    if (!others.counts(j, k)) return false;
+    const Instant& me = instant(k);
+    const detail::AgentWhere& them = others.at(j, k);
+    // Both move between instants: the circles are grown by half the travel.
+    const double pad = 0.5 * (me.speed + them.speed) * kContactDt;
+    const Vec2 between = me.com - them.com;
+    const double near = me.extent + others.reach(j) + pad;
+    if (dot(between, between) > near * near) return false;
+    const detail::AgentShape& shape = others.shape(j, k);
+    // Too far apart for any pair of circles to come within the padding; at
+    // the first instant the gap is still wanted for the exception below.
+    const double apart = length(between) - me.extent - shape.extent - pad;
+    if (k != first && apart > 0.0) return false;
+    Gap gap;  // of the torso: the foot is put down clear of everyone, standing close or not
+    for (int i = 0; i < shape.count; ++i) {
+      const Circle& theirs = shape.circles[i];
+      const Vec2 to_foot = foot.center - theirs.center;
+      const double foot_touch = foot.radius + theirs.radius + pad;
+      if (dot(to_foot, to_foot) <= foot_touch * foot_touch) return true;
+      for (const Circle& circle : me.torso) gap.add(circle, theirs, pad);
     }
+    if (k == first && standing_still(stood_at_first ? 0.0 : me.speed, them.speed))
+      start_gap = gap.outright;
+    return touching(gap, start_gap);
+  };
+  // After the first instant, the last: a step turned down mostly walks into
+  // someone as it ends (the one ahead in a queue).
+  const auto touches = [&](std::size_t j) {
+    double start_gap = std::numeric_limits<double>::infinity();
+    if (touches_at(j, first, start_gap)) return true;
+    if (last > first && touches_at(j, last, start_gap)) return true;
+    for (long k = first + 1; k < last; ++k)
+      if (touches_at(j, k, start_gap)) return true;
     return false;
   };
   // The agent that turned down the last step checked is tried first: a
