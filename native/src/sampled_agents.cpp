@@ -55,11 +55,11 @@ void SampledAgents::fill(std::size_t j, long k, AgentWhere& where) const {
   where.stamp = stamp_;
 }
 
-void SampledAgents::fill(std::size_t j, long k, AgentShape& shape) const {
+void SampledAgents::fill(std::size_t j, long k, AgentShape& shape) {
   const AgentPlan& plan = *(*others_)[j];
   const double t = static_cast<double>(k) * kContactDt;
   shape.count = collision_circles(plan, *character_, t, shape.circles);
-  const Vec2 com = com_at(plan, t).position;
+  const Vec2 com = at(j, k).com;  // row k is held already: `shape` stays where it is
   shape.extent = 0.0;
   for (int i = 0; i < shape.count; ++i) {
     const Circle& c = shape.circles[i];

@@ -91,7 +91,7 @@ class SampledAgents {
   }
   void grow(long k);
   void fill(std::size_t j, long k, AgentWhere& where) const;
-  void fill(std::size_t j, long k, AgentShape& shape) const;
+  void fill(std::size_t j, long k, AgentShape& shape);
   void fill_bounds(std::size_t j);
 
   double rest_grace_ = std::numeric_limits<double>::infinity();
