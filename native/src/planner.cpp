@@ -120,12 +120,7 @@ struct FootstepPlanner::Node {
   double g = 0;
   double h = 0;
   int parent = -1;
-  StepKind kind = StepKind::kWalk;
-  Foot foot = Foot::kLeft;
-  double phi = 0;
-  double turn = 0;
-  double speed = 0;
-  double duration = 0;
+  Footstep step;  ///< From the parent's state (none at the root): checked when popped.
 };
 
 struct FootstepPlanner::Search {
@@ -499,23 +494,6 @@ StepResult FootstepPlanner::side_step(const FootstepState& standing, double way)
       character_);
 }
 
-// The step that led to node `index`, rebuilt from its parent exactly as it was
-// generated.
-StepResult FootstepPlanner::step_to(const Search& search, int index) const {
-  const Node& node = search.nodes[index];
-  const FootstepState& parent = search.nodes[node.parent].state;
-  if (node.kind != StepKind::kWalk) {
-    return create_footstep(parent, {node.kind, node.foot, node.phi, node.speed, node.duration},
-                           character_);
-  }
-  const OrientationInterval reach =
-      reachable_orientations(parent.foot_orientation[static_cast<int>(other(node.foot))],
-                             other(node.foot), character_.max_foot_turn);
-  return detail::walk_step(parent, node.foot, detail::heading_of(parent),
-                           detail::step_shape(node.speed, node.duration, node.turn, character_),
-                           node.phi, reach, character_);
-}
-
 template <class Visit>
 bool FootstepPlanner::tabled_walks(const FootstepState& state, Foot foot, Visit&& visit) const {
   const detail::Heading heading = detail::heading_of(state);
@@ -560,24 +538,16 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   const FootstepState state = search.nodes[index].state;
   const double g = search.nodes[index].g;
   const detail::Heading heading = detail::heading_of(state);
-  const auto add = [&](const StepResult& next, StepKind kind, Foot foot, double phi, double turn,
-                       double speed, double duration, double heading_after) {
+  // `speed` and `heading_after` place the state in its cell of the seen-set.
+  const auto add = [&](const StepResult& next, double speed, double heading_after) {
     if (!next.valid()) return;
-    if (!search.seen.insert(
-            state_key(next.state.com, heading_after, speed, next.state.standing(), foot))) {
+    if (!search.seen.insert(state_key(next.state.com, heading_after, speed,
+                                      next.state.standing(), next.step.foot))) {
       return;
     }
-    Node node{next.state,
-              g + next.step.cost.total(),
-              heuristic(next.state, goal),
-              index,
-              kind,
-              foot,
-              phi,
-              turn,
-              speed,
-              duration};
-    search.push(std::move(node), params_.heuristic_weight);
+    search.push(Node{next.state, g + next.step.cost.total(), heuristic(next.state, goal), index,
+                     next.step},
+                params_.heuristic_weight);
     ++search.generated;
   };
 
@@ -587,8 +557,7 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
     const double inward = -outward_sign(foot);
     tabled_walks(state, foot,
                  [&](const StepResult& next, double phi, const detail::StepShape& shape) {
-                   add(next, StepKind::kWalk, foot, phi, shape.turn, shape.speed, shape.duration,
-                       phi + inward * shape.turn);
+                   add(next, shape.speed, phi + inward * shape.turn);
                    return false;
                  });
     const OrientationInterval reach =
@@ -607,8 +576,8 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
           detail::step_shape(gait.speed, gait.duration, goal_turn, character_);
       if (detail::check_limits(shape, limits) != StepValidity::kValid) continue;
       const double phi = wrap_angle(heading.angle + inward * goal_turn);
-      add(detail::walk_step(state, foot, heading, shape, phi, reach, character_), StepKind::kWalk,
-          foot, phi, goal_turn, gait.speed, gait.duration, phi + inward * goal_turn);
+      add(detail::walk_step(state, foot, heading, shape, phi, reach, character_), gait.speed,
+          phi + inward * goal_turn);
     }
   }
   // The stop (a wait when standing), and from standing the pivots.
@@ -618,7 +587,7 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
     const double phi = wrap_angle(state.facing + turn);
     add(create_footstep(state, {StepKind::kStop, stop_foot, phi, 0.0, params_.stop_duration},
                         character_),
-        StepKind::kStop, stop_foot, phi, 0.0, 0.0, params_.stop_duration, phi);
+        0.0, phi);
   }
   // And the side steps (the foot that stepped last trails): straight across,
   // and toward the goal if it lies within the skew a side step allows (as the
@@ -626,8 +595,7 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   // shoulders leads to a local goal in sight beyond it).
   if (!state.standing()) return;
   const auto add_side_step = [&](double way) {
-    add(side_step(state, way), StepKind::kSideStep, stop_foot, way, 0.0, kSideStepSpeed,
-        params_.stop_duration, state.facing);
+    add(side_step(state, way), kSideStepSpeed, state.facing);
   };
   const double across = wrap_angle(state.facing + outward_sign(stop_foot) * 0.5 * kPi);
   add_side_step(across);
@@ -672,7 +640,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   const detail::Heading start_heading = detail::heading_of(start);
   search.seen.insert(state_key(start.com, start_heading.angle, start_heading.speed,
                                start.standing(), start.last_foot));
-  search.push(Node{start, 0.0, heuristic(start, goal)}, params_.heuristic_weight);
+  search.push(Node{start, 0.0, heuristic(start, goal), -1, Footstep{}}, params_.heuristic_weight);
 
   int goal_node = -1;
   std::vector<int> closed;                                   // expanded nodes, the root excluded
@@ -682,7 +650,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     const int current = search.pop();
     // Collisions are checked lazily, when a node is taken off the open list:
     // most generated nodes are never expanded.
-    if (current != 0 && collides(step_to(search, current).step, search.others,
+    if (current != 0 && collides(search.nodes[current].step, search.others,
                                  search.nodes[search.nodes[current].parent].state.standing()))
       continue;
     ++result.nodes_expanded;
@@ -743,7 +711,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   }
   if (end >= 0) {
     for (int i = end; i > 0; i = nodes[i].parent)
-      result.footsteps.push_back(step_to(search, i).step);
+      result.footsteps.push_back(nodes[i].step);
     std::reverse(result.footsteps.begin(), result.footsteps.end());
     result.end_state = nodes[end].state;
   }

@@ -183,7 +183,6 @@ class FootstepPlanner {
   // `keep_out`, free to set off from there.
   bool rests_well(const FootstepState& state, detail::SampledAgents& others,
                   const KeepOut& keep_out) const;
-  StepResult step_to(const Search& search, int index) const;
   // A side step the search tries from standing, toward `way`: by the foot
   // that did not step last, at kSideStepSpeed, for the stop duration.
   StepResult side_step(const FootstepState& standing, double way) const;
