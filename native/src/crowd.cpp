@@ -111,6 +111,7 @@ struct Walker {
   int failures = 0;                 ///< Searches in a row that gave nothing to commit.
   int blocked = 0;                  ///< Searches in a row that committed no progress.
   double searched_at = -kForever;   ///< Tick of its last search. [s]
+  FootstepState searched_from;      ///< Where its last search started.
   double committed_at = -kForever;  ///< Tick its plan last changed by a commit. [s]
   /// Tick it was last asked to make room, or noticed an agent. [s]
   double news_at = -kForever;
@@ -158,6 +159,7 @@ struct Attempt {
   KeepOut wish;
   int nodes_generated = 0, nodes_expanded = 0;
   bool searched = false;
+  FootstepState from;  ///< Where the search started.
 };
 
 /// Where every agent is at a tick's time t, and whether it is still there.
@@ -308,6 +310,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
                               kRestGrace, jammed && patient ? kJamStall : 0};
   const SearchResult result = planner.plan(w.state, target.point, others, options);
   Attempt a;
+  a.from = w.state;
   a.steps = result.footsteps;
   a.end = result.footsteps.empty() ? w.state : result.end_state;
   a.reached = result.status == Status::kSuccess && target.is_goal;
@@ -469,15 +472,25 @@ bool still_from(const AgentPlan& plan, double from) {
   return true;
 }
 
+/// True if the two states stand (or walk) the same way at the same place.
+bool same_stance(const FootstepState& a, const FootstepState& b) {
+  return distance(a.com, b.com) <= kSamePlace && a.facing == b.facing &&
+         a.standing() == b.standing();
+}
+
 /// True if a search by agent i now would see what its last one saw, which
 /// gained nothing: it committed nothing but waiting then (a pivot gains no
-/// way, but looks elsewhere), no one asked it to make room nor was noticed
-/// since, and everyone within kFreezeRadius (or gone from there) has neither
-/// committed since nor moved from then on. In a jam most agents wait behind others
+/// way, but looks elsewhere), it would start as its last search did (a
+/// search from a walk that found nothing leaves the agent standing where its
+/// rest brought it, with new steps open to it), no one asked it to make room
+/// nor was noticed since, and everyone within kFreezeRadius (or gone from
+/// there) has neither committed since nor moved from then on. In a jam most agents wait behind others
 /// that wait; their searches, each to the horizon, would cost the most.
 bool nothing_new(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now) {
   const Walker& w = walkers[i];
-  if (w.blocked == 0 || w.news_at >= w.searched_at || w.committed_at >= w.searched_at) return false;
+  if (w.blocked == 0 || w.news_at >= w.searched_at || w.committed_at >= w.searched_at ||
+      !same_stance(w.searched_from, w.state))
+    return false;
   for (std::size_t j = 0; j < walkers.size(); ++j) {
     if (j == i || distance(now.com[j], now.com[i]) > kFreezeRadius) continue;
     if (walkers[j].committed_at >= w.searched_at || !still_from(walkers[j].plan, w.searched_at))
@@ -731,6 +744,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       changed[i] = 1;
       if (a.searched) {
         w.searched_at = t;
+        w.searched_from = a.from;
         w.way = a.way_from;
         const bool gained = a.reached || a.way_left <= a.way_from - planner.params().min_progress;
         w.blocked = w.failures == 0 && gained ? 0 : w.blocked + 1;
