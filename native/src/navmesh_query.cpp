@@ -196,8 +196,8 @@ class ChannelSearch {
   /// What the search knows of one face: its handle, its corners' widths (NaN
   /// until measured), whether a disc can cross each edge at all, the face
   /// beyond each edge (its slot, -1 until looked up, and the edge's index
-  /// there: a face is expanded several times, the mesh read once), and, per entry
-  /// edge, the last node kept that came in through it, how many dominated
+  /// there: a face is expanded several times, the mesh read once), and, per
+  /// entry edge, the last node kept that came in through it, how many dominated
   /// ones were kept anyway, and the shortest relaxed length to each end of
   /// its gate for a path that turns there; and which states (face, entry
   /// edge) the pocket check's flood has seen, one bit per entry.
@@ -388,7 +388,7 @@ class ChannelSearch {
   bool passable(const Node& node, FaceSearch& here, int exit) {
     const Face f = node.face;
     // Tested before the corner: the edge's test costs a third of a corner's
-    // walk, and at r = 3 m on the 10k-box scene half the edges fail it.
+    // walk, and at r = 3 m on the 10k-box scene nearly half the edges fail it.
     Tested& crossing = here.crossing[exit];
     if (crossing == kUntested) crossing = crossable(f, exit) ? kPasses : kFails;
     if (crossing == kFails) return false;
