@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "face_numbers.hpp"
+#include "scratch_vector.hpp"
 
 namespace footfall {
 namespace {
@@ -61,7 +62,9 @@ double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, d
   // (face, the edge the walk came in through): that edge and its ends were
   // measured in the face before, so only the far vertex and the other two
   // edges are new (3: the start, all new).
-  std::vector<std::pair<Face, int>> stack{{start, 3}};
+  ScratchVector<std::pair<Face, int>> storage;
+  std::vector<std::pair<Face, int>>& stack = *storage;
+  stack.push_back({start, 3});
   while (!stack.empty()) {
     const auto [f, entry] = stack.back();
     stack.pop_back();
@@ -159,7 +162,9 @@ double wedge_width(const NavMeshState& mesh, Face f, int corner, Vec2 from, Vec2
   const Vec2 apex = to_vec(f->vertex(corner)->point());
   double best = limit;
   // Edges still to look across: (face, edge index), all beyond the opposite edge.
-  std::vector<std::pair<Face, int>> stack{{f, corner}};
+  ScratchVector<std::pair<Face, int>> storage;
+  std::vector<std::pair<Face, int>>& stack = *storage;
+  stack.push_back({f, corner});
   FaceNumbers seen;
   seen.insert(f);
   while (!stack.empty()) {
