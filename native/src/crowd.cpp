@@ -484,8 +484,8 @@ bool same_stance(const FootstepState& a, const FootstepState& b) {
 /// search from a walk that found nothing leaves the agent standing where its
 /// rest brought it, with new steps open to it), no one asked it to make room
 /// nor was noticed since, and everyone within kFreezeRadius (or gone from
-/// there) has neither committed since nor moved from then on. In a jam most agents wait behind others
-/// that wait; their searches, each to the horizon, would cost the most.
+/// there) has neither committed since nor moved from then on. In a jam most
+/// agents wait behind others that wait; their searches would cost the most.
 bool nothing_new(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now) {
   const Walker& w = walkers[i];
   if (w.blocked == 0 || w.news_at >= w.searched_at || w.committed_at >= w.searched_at ||
