@@ -103,6 +103,7 @@ void check_agent(const AgentSpec& agent) {
 struct Walker {
   const AgentSpec* spec = nullptr;
   AgentPlan plan;        ///< Its steps, ending with `resting` provisional rest steps.
+  PlanBounds bounds;     ///< Of `plan`, rebuilt whenever it changes.
   FootstepState state;   ///< Where the next search starts: before the rest.
   FootstepState rested;  ///< After the rest.
   std::size_t resting = 0;
@@ -366,46 +367,104 @@ std::vector<std::size_t> near(const std::vector<Walker>& walkers, std::size_t i,
 
 /// An agent's plan with new steps in place of its old rest, to be checked
 /// against the others before it is committed.
-struct Trial {
-  AgentPlan plan;
-  double from = 0.0;       ///< It differs from the agent's plan from then on. [s]
-  double top_speed = 0.0;  ///< top_com_speed of the plan from `from` on. [m/s]
-  double reach = 0.0;      ///< circle_reach of the plan from `from` on. [m]
+class Trial {
+ public:
+  /// The trial at one instant of the contact grid.
+  struct Instant {
+    bool sampled = false;
+    ComSample com;
+    bool shaped = false;  ///< The circles below are sampled.
+    int count = 0;
+    std::array<Circle, 5> circles;
+    double extent = 0.0;  ///< How far they reach from the COM. [m]
+  };
+
+  Trial() = default;
+  /// `plan` differs from the agent's plan from time `from` on.
+  Trial(AgentPlan plan, double from, const CharacterParams& character)
+      : plan_(std::move(plan)), bounds_(plan_, character), from_(from) {}
+  const AgentPlan& plan() const { return plan_; }
+  AgentPlan& plan() { return plan_; }
+  const PlanBounds& bounds() const { return bounds_; }
+  PlanBounds& bounds() { return bounds_; }
+  double from() const { return from_; }
+  /// The trial at instant k (from `from` on), its circles too if `shaped`:
+  /// sampled when first wanted, for it is checked against dozens of plans at
+  /// the same instants.
+  const Instant& at(long k, const CharacterParams& character, bool shaped) {
+    // After its last step it stands, or is gone, as at the first instant
+    // past its end.
+    const long first = first_contact_instant(from_);
+    const long still = first_contact_instant(plan_.end_time()) + 1;
+    const long held = std::min(k, still);
+    const auto index = static_cast<std::size_t>(held - first);
+    if (index >= instants_.size()) instants_.resize(index + 1);
+    Instant& sample = instants_[index];
+    const double t = static_cast<double>(held) * kContactDt;
+    if (!sample.sampled) {
+      sample.com = com_at(plan_, t);
+      sample.sampled = true;
+    }
+    if (shaped && !sample.shaped) {
+      sample.count = collision_circles(plan_, character, t, sample.circles);
+      sample.extent = 0.0;
+      for (int i = 0; i < sample.count; ++i) {
+        const Circle& circle = sample.circles[i];
+        sample.extent =
+            std::max(sample.extent, distance(circle.center, sample.com.position) + circle.radius);
+      }
+      sample.shaped = true;
+    }
+    return sample;
+  }
+
+ private:
+  AgentPlan plan_;
+  PlanBounds bounds_;
+  double from_ = 0.0;
+  std::vector<Instant> instants_;  ///< [k - first_contact_instant(from)]
 };
 
 /// True if the trial, from its time `from` on, touches `other` under the
 /// five-circle model that measures a plan (torso circles and planted feet;
 /// after its last step a plan stands where it ends). Checked every
 /// kContactDt, the circles grown by half of both agents' travel in between.
-bool touches(const Trial& trial, const FootstepPlanner& planner, const AgentPlan& other) {
+bool touches(Trial& trial, const FootstepPlanner& planner, const Walker& walker) {
   const CharacterParams& c = planner.character();
-  const double from = trial.from;
-  const double end = std::max(trial.plan.end_time(), other.end_time()) + kContactDt;
+  const AgentPlan& other = walker.plan;
+  const double from = trial.from();
+  const double end = std::max(trial.plan().end_time(), other.end_time()) + kContactDt;
   // While the pair is far apart, instants they cannot close the distance
   // in are skipped (most of those checked are never near).
-  const double closing = (trial.top_speed + top_com_speed(other, from)) * kContactDt;
+  const double closing =
+      (trial.bounds().top_speed(from) + walker.bounds.top_speed(from)) * kContactDt;
   // Farther apart than this, no circles of the pair come within the padding.
-  const double near = trial.reach + circle_reach(other, c, from) + 0.5 * closing;
+  const double their_reach = walker.bounds.reach(from);
+  const double near = trial.bounds().reach(from) + their_reach + 0.5 * closing;
+  if (trial.bounds().stay_apart(walker.bounds, from, near)) return false;
   // The gap where the trial starts (see touching()).
   double start_gap = std::numeric_limits<double>::infinity();
   const long first = first_contact_instant(from);
   for (long k = first, next = first;; k = next) {
     const double t = static_cast<double>(k) * kContactDt;
     if (t > end) break;
-    const ComSample me = com_at(trial.plan, t), them = com_at(other, t);
-    const double apart = distance(me.position, them.position) - near;
+    const ComSample me = trial.at(k, c, false).com, them = com_at(other, t);
+    const double between = distance(me.position, them.position);
     next = k + 1;
-    if (apart > 0.0) {
-      if (closing > 0.0) next = k + std::max(1L, static_cast<long>(apart / closing));
+    if (between > near) {
+      if (closing > 0.0) next = k + std::max(1L, static_cast<long>((between - near) / closing));
       continue;
     }
     const double pad = 0.5 * (length(me.velocity) + length(them.velocity)) * kContactDt;
-    std::array<Circle, 5> mine, theirs;
-    const int my_count = collision_circles(trial.plan, c, t, mine);
+    const Trial::Instant& mine = trial.at(k, c, true);
+    // Out of reach of the trial's circles as they are now (after the first
+    // instant: its gap is wanted, see touching()).
+    if (k != first && between - mine.extent - their_reach > pad) continue;
+    std::array<Circle, 5> theirs;
     const int their_count = collision_circles(other, c, t, theirs);
     Gap gap;
     for (int i = 0; i < their_count; ++i)
-      for (int m = 0; m < my_count; ++m) gap.add(mine[m], theirs[i], pad);
+      for (int m = 0; m < mine.count; ++m) gap.add(mine.circles[m], theirs[i], pad);
     if (k == first && standing_still(length(me.velocity), length(them.velocity)))
       start_gap = gap.outright;
     if (touching(gap, start_gap)) return true;
@@ -425,6 +484,7 @@ void rest_until(Walker& w, const FootstepPlanner& planner, double t) {
     const StepResult wait = planner.stop_step(w.state, std::min(t - w.state.time, kMaxWait));
     if (wait.valid()) {
       w.plan.footsteps.push_back(wait.step);
+      w.bounds = PlanBounds(w.plan, planner.character());
       w.state = wait.state;
     }
   }
@@ -533,7 +593,7 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
     p.rested = a.rest.state;
   }
   if (a.steps.empty()) return p;
-  AgentPlan& plan = p.trial.plan;
+  AgentPlan plan;
   plan.leaves = p.leaving;
   plan.start = w.plan.start;
   const std::size_t kept = w.plan.footsteps.size() - w.resting;
@@ -541,13 +601,12 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
   plan.footsteps.insert(plan.footsteps.end(), p.steps.begin(), p.steps.end());
   // During the last kept step the free foot swings toward the next step's
   // foot (feet_at): that step's circles change with the new steps too.
-  p.trial.from = kept > 0 ? plan.footsteps[kept - 1].start_time : a.steps.front().start_time;
-  p.trial.top_speed = top_com_speed(plan, p.trial.from);
-  p.trial.reach = circle_reach(plan, planner.character(), p.trial.from);
+  const double from = kept > 0 ? plan.footsteps[kept - 1].start_time : a.steps.front().start_time;
+  p.trial = Trial(std::move(plan), from, planner.character());
   // A new place to rest needs room among everyone, seen or not.
   p.new_place = !p.leaving && distance(p.rested.com, rest_of(w).com) > kSamePlace;
   for (const std::size_t j : p.close) {
-    p.hits.push_back(touches(p.trial, planner, walkers[j].plan));
+    p.hits.push_back(touches(p.trial, planner, walkers[j]));
     p.no_room.push_back(p.new_place && !planner.stands_clear(p.rested, {&walkers[j].plan}));
   }
   return p;
@@ -556,12 +615,11 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
 /// The index in p.close of the agent the trial is refused for: the first it
 /// touches, else (resting somewhere new) the first it has no room beside;
 /// -1 if none. The plans of agents `changed` this tick are checked anew.
-int refusal(const std::vector<Walker>& walkers, const Proposal& p, const std::vector<char>& changed,
+int refusal(const std::vector<Walker>& walkers, Proposal& p, const std::vector<char>& changed,
             const FootstepPlanner& planner) {
-  if (p.trial.plan.footsteps.empty()) return -1;
+  if (p.trial.plan().footsteps.empty()) return -1;
   for (std::size_t c = 0; c < p.close.size(); ++c) {
-    const AgentPlan& other = walkers[p.close[c]].plan;
-    if (changed[p.close[c]] ? touches(p.trial, planner, other) : p.hits[c])
+    if (changed[p.close[c]] ? touches(p.trial, planner, walkers[p.close[c]]) : p.hits[c])
       return static_cast<int>(c);
   }
   if (!p.new_place) return -1;
@@ -611,7 +669,8 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a, Propo
                                             kNoticeDistance;
                                    }),
                     w.noticed.end());
-    w.plan.footsteps = std::move(p.trial.plan.footsteps);
+    w.plan.footsteps = std::move(p.trial.plan().footsteps);
+    w.bounds = std::move(p.trial.bounds());
     w.resting = p.steps.size() - a.steps.size();
     w.state = a.end;
     w.rested = p.rested;
@@ -679,6 +738,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     w.plan.name = agents[i].name;
     w.plan.start = standing_state(agents[i].position, agents[i].facing, planner.character());
     w.state = w.plan.start;
+    w.bounds = PlanBounds(w.plan, planner.character());
   }
   Workers workers(control.threads);
   double reported = 0.0;

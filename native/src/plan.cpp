@@ -44,45 +44,140 @@ ComSample com_at(const AgentPlan& plan, double t) {
   return com_at(plan.footsteps[step_index(plan, t)], t);
 }
 
+namespace {
+
+// A step's COM speed is greatest at one of its ends. [m/s]
+double step_top_speed(const Footstep& step) {
+  return std::max(length(step.com_velocity_start), length(step.com_velocity_end));
+}
+
+// How far the torso circles reach from the COM. [m]
+double torso_reach(const CharacterParams& character) {
+  double reach = 0.0;
+  for (const Circle& circle : torso_circles({0.0, 0.0}, 0.0, character))
+    reach = std::max(reach, length(circle.center) + circle.radius);
+  return reach;
+}
+
+// How far the COM strays from a step's chord. [m]
+double step_sway(const Footstep& step) {
+  return std::fabs(step.alpha) * step.duration() * step.duration() / 4.0;
+}
+
+// How far a planted foot's circle can reach from the COM during `step`: the
+// COM stays within the sway of the chord, and a point's distance to a chord
+// is greatest at one of its ends. [m]
+double foot_reach(const Footstep& step, Vec2 foot, const CharacterParams& character) {
+  const double far = std::max(distance(step.com_start, foot), distance(step.com_end, foot));
+  return far + step_sway(step) + character.foot_radius;
+}
+
+// The corners of the box round two points. [m]
+Vec2 min(Vec2 a, Vec2 b) { return {std::min(a.x, b.x), std::min(a.y, b.y)}; }
+Vec2 max(Vec2 a, Vec2 b) { return {std::max(a.x, b.x), std::max(a.y, b.y)}; }
+
+// Standing at the start: the feet where they stand. [m]
+double start_feet_reach(const AgentPlan& plan, const CharacterParams& character) {
+  double reach = 0.0;
+  for (const Vec2& foot : plan.start.feet)
+    reach = std::max(reach, distance(plan.start.com, foot) + character.foot_radius);
+  return reach;
+}
+
+}  // namespace
+
 double top_com_speed(const AgentPlan& plan, double from) {
   double speed = 0.0;
   if (plan.footsteps.empty()) return speed;
   // From the step under way at `from`: a long plan's past costs nothing.
   for (auto step = plan.footsteps.begin() + step_index(plan, from); step != plan.footsteps.end();
        ++step)
-    speed = std::max({speed, length(step->com_velocity_start), length(step->com_velocity_end)});
+    speed = std::max(speed, step_top_speed(*step));
   return speed;
 }
 
 double circle_reach(const AgentPlan& plan, const CharacterParams& character, double from) {
-  double reach = 0.0;
-  for (const Circle& circle : torso_circles({0.0, 0.0}, 0.0, character))
-    reach = std::max(reach, length(circle.center) + circle.radius);
+  double reach = torso_reach(character);
   const auto& steps = plan.footsteps;
+  if (steps.empty() || from < steps.front().start_time)  // standing at the start first
+    reach = std::max(reach, start_feet_reach(plan, character));
+  if (steps.empty()) return reach;
   // Where each foot was last planted before the step under way.
   std::array<Vec2, 2> last = plan.start.feet;
-  const int first = steps.empty() ? 0 : step_index(plan, from);
+  const int first = step_index(plan, from);
   std::array<bool, 2> found{false, false};
   for (int i = first - 1; i >= 0 && !(found[0] && found[1]); --i) {
     const int f = static_cast<int>(steps[i].foot);
     if (!found[f]) last[f] = steps[i].foot_position;
     found[f] = true;
   }
-  if (steps.empty() || from < steps.front().start_time) {  // standing at the start first
-    for (const Vec2& foot : last)
-      reach = std::max(reach, distance(plan.start.com, foot) + character.foot_radius);
-  }
   for (auto step = steps.begin() + first; step != steps.end(); ++step) {
-    // The COM stays within the sway of the chord, and a point's distance
-    // to a chord is greatest at one of its ends.
-    const double sway = std::fabs(step->alpha) * step->duration() * step->duration() / 4.0;
-    for (const Vec2& foot : {step->foot_position, last[static_cast<int>(other(step->foot))]}) {
-      const double far = std::max(distance(step->com_start, foot), distance(step->com_end, foot));
-      reach = std::max(reach, far + sway + character.foot_radius);
-    }
+    for (const Vec2& foot : {step->foot_position, last[static_cast<int>(other(step->foot))]})
+      reach = std::max(reach, foot_reach(*step, foot, character));
     last[static_cast<int>(step->foot)] = step->foot_position;
   }
   return reach;
+}
+
+PlanBounds::PlanBounds(const AgentPlan& plan, const CharacterParams& character) {
+  const auto& steps = plan.footsteps;
+  const double torso = torso_reach(character);
+  start_.reach = std::max(torso, start_feet_reach(plan, character));
+  start_.low = start_.high = plan.start.com;
+  // Each step's own terms first, going forward (the foot that stays planted
+  // through it was put down earlier), then the maxima going back.
+  suffix_.resize(steps.size());
+  std::array<Vec2, 2> last = plan.start.feet;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const Footstep& step = steps[i];
+    Suffix& own = suffix_[i];
+    own.start_time = step.start_time;
+    own.top_speed = step_top_speed(step);
+    own.reach = torso;
+    for (const Vec2& foot : {step.foot_position, last[static_cast<int>(other(step.foot))]})
+      own.reach = std::max(own.reach, foot_reach(step, foot, character));
+    last[static_cast<int>(step.foot)] = step.foot_position;
+    const Vec2 sway{step_sway(step), step_sway(step)};
+    own.low = min(step.com_start, step.com_end) - sway;
+    own.high = max(step.com_start, step.com_end) + sway;
+  }
+  for (std::size_t i = steps.size(); i-- > 1;) {
+    const Suffix& later = suffix_[i];
+    Suffix& here = suffix_[i - 1];
+    here.top_speed = std::max(here.top_speed, later.top_speed);
+    here.reach = std::max(here.reach, later.reach);
+    here.low = min(here.low, later.low);
+    here.high = max(here.high, later.high);
+  }
+  if (!suffix_.empty()) {  // before its first step it stands at the start
+    suffix_.front().low = min(suffix_.front().low, start_.low);
+    suffix_.front().high = max(suffix_.front().high, start_.high);
+  }
+}
+
+const PlanBounds::Suffix& PlanBounds::suffix(double from) const {
+  if (suffix_.empty()) return start_;
+  // The step under way, as step_index finds it.
+  const auto after =
+      std::upper_bound(suffix_.begin(), suffix_.end(), from,
+                       [](double time, const Suffix& s) { return time < s.start_time; });
+  return after == suffix_.begin() ? suffix_.front() : *(after - 1);
+}
+
+double PlanBounds::top_speed(double from) const { return suffix(from).top_speed; }
+
+double PlanBounds::reach(double from) const {
+  const double reach = suffix(from).reach;
+  return !suffix_.empty() && from < suffix_.front().start_time ? std::max(reach, start_.reach)
+                                                               : reach;
+}
+
+bool PlanBounds::stay_apart(const PlanBounds& other, double from, double apart) const {
+  const Suffix& a = suffix(from);
+  const Suffix& b = other.suffix(from);
+  const double dx = std::max({0.0, a.low.x - b.high.x, b.low.x - a.high.x});
+  const double dy = std::max({0.0, a.low.y - b.high.y, b.low.y - a.high.y});
+  return dx * dx + dy * dy > apart * apart;
 }
 
 double facing_at(const AgentPlan& plan, double t) {

@@ -2,6 +2,7 @@
 // plans, waiting when they must; the plans do not depend on the thread count.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@ namespace footfall {
 namespace {
 
 const std::string kCases = FOOTFALL_STEERSUITE_DIR;
+constexpr double kTick = 0.05;  ///< The metrics' 20 Hz. [s]
 
 /// Plans `scenario` and checks that every agent reached its goals with no
 /// overlap under the five-circle model and no SteerBench collision episode.
@@ -151,6 +153,38 @@ TEST(Crowd, AnEgressThroughOneDoorClears) {
   const Scenario egress = egress_scenario(20, 3);
   EXPECT_EQ(plan_to_json(plan_clear_of_each_other(egress, 1)),
             plan_to_json(plan_clear_of_each_other(egress, 2)));
+}
+
+// The commit check takes its bounds from PlanBounds, and passes over pairs
+// whose boxes stay apart: each must hold what it bounds, or a touch goes
+// unseen. Plans of an egress hold walks, waits, pivots and side steps.
+TEST(Crowd, PlanBoundsHoldWhatTheyBound) {
+  const Plan plan = plan_scenario(egress_scenario(12, 1));
+  const CharacterParams& character = plan.character;
+  for (const AgentPlan& agent : plan.agents) {
+    const PlanBounds bounds(agent, character);
+    std::vector<double> times{-1.0, agent.end_time() + 1.0};  // before the first, after the last
+    for (const Footstep& step : agent.footsteps)
+      times.insert(times.end(), {step.start_time, 0.5 * (step.start_time + step.end_time)});
+    for (const double from : times) {
+      EXPECT_EQ(bounds.top_speed(from), top_com_speed(agent, from)) << agent.name << " " << from;
+      EXPECT_EQ(bounds.reach(from), circle_reach(agent, character, from)) << agent.name;
+      // The COM's box holds it: a plan standing where the COM passes is not apart.
+      for (double t = std::max(from, 0.0); t <= agent.end_time() + kTick; t += kTick) {
+        AgentPlan there;
+        there.start = standing_state(com_at(agent, t).position, 0.0, character);
+        ASSERT_FALSE(bounds.stay_apart(PlanBounds(there, character), from, 0.0))
+            << agent.name << " at " << t << " s, from " << from << " s";
+      }
+    }
+    // One standing 1 m beyond the box, from the start on, is apart.
+    AgentPlan beyond;
+    double east = agent.start.com.x;
+    for (const Footstep& step : agent.footsteps)
+      east = std::max({east, step.com_start.x, step.com_end.x});
+    beyond.start = standing_state({east + 1.0, agent.start.com.y}, 0.0, character);
+    EXPECT_TRUE(bounds.stay_apart(PlanBounds(beyond, character), 0.0, 0.5)) << agent.name;
+  }
 }
 
 // The table-1 workloads come from seeded generators: valid scenes, the same
