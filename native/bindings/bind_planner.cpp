@@ -45,11 +45,12 @@ void bind_planner(py::module_& m) {
       .def(
           "plan",
           [](const FootstepPlanner& planner, const FootstepState& start, Vec2 goal,
-             const MovingObstacles& others, bool leaves, const KeepOut& keep_out,
+             const std::vector<const AgentPlan*>& others, bool leaves, const KeepOut& keep_out,
              double rest_grace) {
-            return planner.plan(start, goal, others, {leaves, keep_out, 0, rest_grace});
+            return planner.plan(start, goal, {others.begin(), others.end()},
+                                {leaves, keep_out, 0, rest_grace});
           },
-          py::arg("start"), py::arg("goal"), py::arg("others") = MovingObstacles{},
+          py::arg("start"), py::arg("goal"), py::arg("others") = std::vector<const AgentPlan*>{},
           py::arg("leaves") = false, py::arg("keep_out") = KeepOut{},
           py::arg("rest_grace") = std::numeric_limits<double>::infinity(),
           py::call_guard<py::gil_scoped_release>(),
@@ -62,10 +63,13 @@ void bind_planner(py::module_& m) {
       .def("heuristic", &FootstepPlanner::heuristic, py::arg("state"), py::arg("goal"))
       .def("expected_step_cost", &FootstepPlanner::expected_step_cost)
       .def("expected_step_length", &FootstepPlanner::expected_step_length)
-      .def("collides",
-           py::overload_cast<const Footstep&, const MovingObstacles&>(&FootstepPlanner::collides,
-                                                                      py::const_),
-           py::arg("step"), py::arg("others") = MovingObstacles{})
+      .def(
+          "collides",
+          [](const FootstepPlanner& planner, const Footstep& step,
+             const std::vector<const AgentPlan*>& others) {
+            return planner.collides(step, {others.begin(), others.end()});
+          },
+          py::arg("step"), py::arg("others") = std::vector<const AgentPlan*>{})
       .def("collides",
            py::overload_cast<const FootstepState&>(&FootstepPlanner::collides, py::const_),
            py::arg("state"));

@@ -231,11 +231,14 @@ void cut_to_rest(const FootstepPlanner& planner, const FootstepState& start,
 /// True while agent `w` shows a wish.
 bool wishing(const Walker& w) { return !w.wish.empty(); }
 
+/// Agent `w`'s plan, as others keep clear of it.
+MovingObstacle obstacle_of(const Walker& w) { return {&w.plan, &w.bounds}; }
+
 /// The plans of agents `which`.
 MovingObstacles plans_of(const std::vector<Walker>& walkers,
                          const std::vector<std::size_t>& which) {
   MovingObstacles plans;
-  for (const std::size_t j : which) plans.push_back(&walkers[j].plan);
+  for (const std::size_t j : which) plans.push_back(obstacle_of(walkers[j]));
   return plans;
 }
 
@@ -382,12 +385,15 @@ class Trial {
   Trial() = default;
   /// `plan` differs from the agent's plan from time `from` on.
   Trial(AgentPlan plan, double from, const CharacterParams& character)
-      : plan_(std::move(plan)), bounds_(plan_, character), from_(from) {}
-  const AgentPlan& plan() const { return plan_; }
+      : plan_(std::move(plan)),
+        bounds_(plan_, character),
+        from_(from),
+        bounds_from_(bounds_.from(from)) {}
+  /// The plan and its bounds, non-const for the commit to take them.
   AgentPlan& plan() { return plan_; }
-  const PlanBounds& bounds() const { return bounds_; }
   PlanBounds& bounds() { return bounds_; }
   double from() const { return from_; }
+  const PlanBounds::From& bounds_from() const { return bounds_from_; }
   /// The trial at instant k (from `from` on), its circles too if `shaped`:
   /// sampled when first wanted, for it is checked against dozens of plans at
   /// the same instants.
@@ -422,6 +428,7 @@ class Trial {
   AgentPlan plan_;
   PlanBounds bounds_;
   double from_ = 0.0;
+  PlanBounds::From bounds_from_;  ///< bounds_.from(from_)
   std::vector<Instant> instants_;  ///< [k - first_contact_instant(from)]
 };
 
@@ -436,12 +443,13 @@ bool touches(Trial& trial, const FootstepPlanner& planner, const Walker& walker)
   const double end = std::max(trial.plan().end_time(), other.end_time()) + kContactDt;
   // While the pair is far apart, instants they cannot close the distance
   // in are skipped (most of those checked are never near).
-  const double closing =
-      (trial.bounds().top_speed(from) + walker.bounds.top_speed(from)) * kContactDt;
+  const PlanBounds::From& mine = trial.bounds_from();
+  const PlanBounds::From theirs = walker.bounds.from(from);
+  const double closing = (mine.top_speed + theirs.top_speed) * kContactDt;
   // Farther apart than this, no circles of the pair come within the padding.
-  const double their_reach = walker.bounds.reach(from);
-  const double near = trial.bounds().reach(from) + their_reach + 0.5 * closing;
-  if (trial.bounds().stay_apart(walker.bounds, from, near)) return false;
+  const double near = mine.reach + theirs.reach + 0.5 * closing;
+  // Their COMs keep farther apart than that throughout: none is near.
+  if (squared_distance(mine.com_box, theirs.com_box) > near * near) return false;
   // The gap where the trial starts (see touching()).
   double start_gap = std::numeric_limits<double>::infinity();
   const long first = first_contact_instant(from);
@@ -456,15 +464,15 @@ bool touches(Trial& trial, const FootstepPlanner& planner, const Walker& walker)
       continue;
     }
     const double pad = 0.5 * (length(me.velocity) + length(them.velocity)) * kContactDt;
-    const Trial::Instant& mine = trial.at(k, c, true);
+    const Trial::Instant& now = trial.at(k, c, true);
     // Out of reach of the trial's circles as they are now (after the first
     // instant: its gap is wanted, see touching()).
-    if (k != first && between - mine.extent - their_reach > pad) continue;
-    std::array<Circle, 5> theirs;
-    const int their_count = collision_circles(other, c, t, theirs);
+    if (k != first && between - now.extent - theirs.reach > pad) continue;
+    std::array<Circle, 5> circles;
+    const int count = collision_circles(other, c, t, circles);
     Gap gap;
-    for (int i = 0; i < their_count; ++i)
-      for (int m = 0; m < mine.count; ++m) gap.add(mine.circles[m], theirs[i], pad);
+    for (int i = 0; i < count; ++i)
+      for (int m = 0; m < now.count; ++m) gap.add(now.circles[m], circles[i], pad);
     if (k == first && standing_still(length(me.velocity), length(them.velocity)))
       start_gap = gap.outright;
     if (touching(gap, start_gap)) return true;
@@ -607,7 +615,7 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
   p.new_place = !p.leaving && distance(p.rested.com, rest_of(w).com) > kSamePlace;
   for (const std::size_t j : p.close) {
     p.hits.push_back(touches(p.trial, planner, walkers[j]));
-    p.no_room.push_back(p.new_place && !planner.stands_clear(p.rested, {&walkers[j].plan}));
+    p.no_room.push_back(p.new_place && !planner.stands_clear(p.rested, {obstacle_of(walkers[j])}));
   }
   return p;
 }
@@ -624,8 +632,8 @@ int refusal(const std::vector<Walker>& walkers, Proposal& p, const std::vector<c
   }
   if (!p.new_place) return -1;
   for (std::size_t c = 0; c < p.close.size(); ++c) {
-    const AgentPlan& other = walkers[p.close[c]].plan;
-    if (changed[p.close[c]] ? !planner.stands_clear(p.rested, {&other}) : p.no_room[c])
+    if (changed[p.close[c]] ? !planner.stands_clear(p.rested, {obstacle_of(walkers[p.close[c]])})
+                            : p.no_room[c])
       return static_cast<int>(c);
   }
   return -1;

@@ -34,17 +34,13 @@ ObstacleMap::ObstacleMap(std::vector<Obstacle> obstacles) : obstacles_(std::move
             name + ".polygon[" + std::to_string(k) +
             "]: coordinates must be finite numbers within 1e9 m of the origin");
       }
-      box.min = {std::min(box.min.x, p.x), std::min(box.min.y, p.y)};
-      box.max = {std::max(box.max.x, p.x), std::max(box.max.y, p.y)};
+      box.take_in(p);
     }
     boxes_.push_back(box);
   }
   if (boxes_.empty()) return;
   bounds_ = boxes_.front();
-  for (const Box& box : boxes_) {
-    bounds_.min = {std::min(bounds_.min.x, box.min.x), std::min(bounds_.min.y, box.min.y)};
-    bounds_.max = {std::max(bounds_.max.x, box.max.x), std::max(bounds_.max.y, box.max.y)};
-  }
+  for (const Box& box : boxes_) bounds_.take_in(box);
   const double w = bounds_.max.x - bounds_.min.x, h = bounds_.max.y - bounds_.min.y;
   // About kMaxCells cells at most: larger cells for larger scenes, and for long thin
   // ones a cap per axis.

@@ -72,10 +72,6 @@ double foot_reach(const Footstep& step, Vec2 foot, const CharacterParams& charac
   return far + step_sway(step) + character.foot_radius;
 }
 
-// The corners of the box round two points. [m]
-Vec2 min(Vec2 a, Vec2 b) { return {std::min(a.x, b.x), std::min(a.y, b.y)}; }
-Vec2 max(Vec2 a, Vec2 b) { return {std::max(a.x, b.x), std::max(a.y, b.y)}; }
-
 // Standing at the start: the feet where they stand. [m]
 double start_feet_reach(const AgentPlan& plan, const CharacterParams& character) {
   double reach = 0.0;
@@ -123,61 +119,44 @@ PlanBounds::PlanBounds(const AgentPlan& plan, const CharacterParams& character) 
   const auto& steps = plan.footsteps;
   const double torso = torso_reach(character);
   start_.reach = std::max(torso, start_feet_reach(plan, character));
-  start_.low = start_.high = plan.start.com;
+  start_.com_box = {plan.start.com, plan.start.com};
   // Each step's own terms first, going forward (the foot that stays planted
   // through it was put down earlier), then the maxima going back.
   suffix_.resize(steps.size());
   std::array<Vec2, 2> last = plan.start.feet;
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const Footstep& step = steps[i];
-    Suffix& own = suffix_[i];
-    own.start_time = step.start_time;
+    suffix_[i].start_time = step.start_time;
+    From& own = suffix_[i].bounds;
     own.top_speed = step_top_speed(step);
     own.reach = torso;
     for (const Vec2& foot : {step.foot_position, last[static_cast<int>(other(step.foot))]})
       own.reach = std::max(own.reach, foot_reach(step, foot, character));
     last[static_cast<int>(step.foot)] = step.foot_position;
     const Vec2 sway{step_sway(step), step_sway(step)};
-    own.low = min(step.com_start, step.com_end) - sway;
-    own.high = max(step.com_start, step.com_end) + sway;
+    own.com_box = {step.com_start, step.com_start};
+    own.com_box.take_in(step.com_end);
+    own.com_box = {own.com_box.min - sway, own.com_box.max + sway};
   }
   for (std::size_t i = steps.size(); i-- > 1;) {
-    const Suffix& later = suffix_[i];
-    Suffix& here = suffix_[i - 1];
+    const From& later = suffix_[i].bounds;
+    From& here = suffix_[i - 1].bounds;
     here.top_speed = std::max(here.top_speed, later.top_speed);
     here.reach = std::max(here.reach, later.reach);
-    here.low = min(here.low, later.low);
-    here.high = max(here.high, later.high);
+    here.com_box.take_in(later.com_box);
   }
-  if (!suffix_.empty()) {  // before its first step it stands at the start
-    suffix_.front().low = min(suffix_.front().low, start_.low);
-    suffix_.front().high = max(suffix_.front().high, start_.high);
-  }
+  if (!suffix_.empty()) suffix_.front().bounds.com_box.take_in(plan.start.com);  // before it
 }
 
-const PlanBounds::Suffix& PlanBounds::suffix(double from) const {
+PlanBounds::From PlanBounds::from(double from) const {
   if (suffix_.empty()) return start_;
   // The step under way, as step_index finds it.
   const auto after =
       std::upper_bound(suffix_.begin(), suffix_.end(), from,
                        [](double time, const Suffix& s) { return time < s.start_time; });
-  return after == suffix_.begin() ? suffix_.front() : *(after - 1);
-}
-
-double PlanBounds::top_speed(double from) const { return suffix(from).top_speed; }
-
-double PlanBounds::reach(double from) const {
-  const double reach = suffix(from).reach;
-  return !suffix_.empty() && from < suffix_.front().start_time ? std::max(reach, start_.reach)
-                                                               : reach;
-}
-
-bool PlanBounds::stay_apart(const PlanBounds& other, double from, double apart) const {
-  const Suffix& a = suffix(from);
-  const Suffix& b = other.suffix(from);
-  const double dx = std::max({0.0, a.low.x - b.high.x, b.low.x - a.high.x});
-  const double dy = std::max({0.0, a.low.y - b.high.y, b.low.y - a.high.y});
-  return dx * dx + dy * dy > apart * apart;
+  From bounds = (after == suffix_.begin() ? suffix_.front() : *(after - 1)).bounds;
+  if (from < suffix_.front().start_time) bounds.reach = std::max(bounds.reach, start_.reach);
+  return bounds;
 }
 
 double facing_at(const AgentPlan& plan, double t) {

@@ -276,7 +276,11 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
       std::max(length(step.com_velocity_start), length(step.com_velocity_end));
   const auto may_come_near = [&](std::size_t j) {
     const double pad = 0.5 * (my_top_speed + others.top_speed(j)) * kContactDt;
-    const double reach = my_reach + others.reach(j) + pad + others.top_speed(j) * span;
+    const double close = my_reach + others.reach(j) + pad;
+    // Its COM keeps out of a box: far from that, it needs no sample.
+    if (squared_distance(others.com_box(j), {sweep.center, sweep.center}) > close * close)
+      return false;
+    const double reach = close + others.top_speed(j) * span;
     const Vec2 d = others.at(j, middle).com - sweep.center;
     return dot(d, d) <= reach * reach;
   };
@@ -404,6 +408,7 @@ bool FootstepPlanner::stands_clear(const FootstepState& state,
     const long last = std::max(first, first_contact_instant(others.plan(j).end_time()));
     const double span = static_cast<double>(last - first) * kContactDt;
     const double near = extent + others.reach(j) + 0.5 * others.top_speed(j) * kContactDt;
+    if (squared_distance(others.com_box(j), {state.com, state.com}) > near * near) return false;
     if (distance(others.at(j, first).com, state.com) > near + others.top_speed(j) * span)
       return false;
     double start_gap = std::numeric_limits<double>::infinity();  // see touching()

@@ -25,6 +25,7 @@ void SampledAgents::reset(const MovingObstacles& others, const CharacterParams& 
   if (top_speed_.size() < others.size()) {
     top_speed_.resize(others.size());
     reach_.resize(others.size());
+    com_box_.resize(others.size());
     bounds_stamp_.resize(others.size(), 0);
   }
   first_ = first_contact_instant(from);  // the rows held keep their memory, not their samples
@@ -46,7 +47,7 @@ void SampledAgents::grow(long k) {
 }
 
 void SampledAgents::fill(std::size_t j, long k, AgentWhere& where) const {
-  const AgentPlan& plan = *(*others_)[j];
+  const AgentPlan& plan = *(*others_)[j].plan;
   const double t = static_cast<double>(k) * kContactDt;
   const ComSample com = com_at(plan, t);
   where.present = present_at(plan, t);
@@ -56,7 +57,7 @@ void SampledAgents::fill(std::size_t j, long k, AgentWhere& where) const {
 }
 
 void SampledAgents::fill(std::size_t j, long k, AgentShape& shape) {
-  const AgentPlan& plan = *(*others_)[j];
+  const AgentPlan& plan = *(*others_)[j].plan;
   const double t = static_cast<double>(k) * kContactDt;
   shape.count = collision_circles(plan, *character_, t, shape.circles);
   const Vec2 com = at(j, k).com;  // row k is held already: `shape` stays where it is
@@ -70,8 +71,18 @@ void SampledAgents::fill(std::size_t j, long k, AgentShape& shape) {
 
 void SampledAgents::fill_bounds(std::size_t j) {
   const double from = static_cast<double>(first_) * kContactDt;
-  top_speed_[j] = top_com_speed(*(*others_)[j], from);
-  reach_[j] = circle_reach(*(*others_)[j], *character_, from);
+  const MovingObstacle& other = (*others_)[j];
+  if (other.bounds != nullptr) {
+    const PlanBounds::From bounds = other.bounds->from(from);
+    top_speed_[j] = bounds.top_speed;
+    reach_[j] = bounds.reach;
+    com_box_[j] = bounds.com_box;
+  } else {
+    top_speed_[j] = top_com_speed(*other.plan, from);
+    reach_[j] = circle_reach(*other.plan, *character_, from);
+    constexpr double kAll = std::numeric_limits<double>::infinity();
+    com_box_[j] = {{-kAll, -kAll}, {kAll, kAll}};
+  }
   bounds_stamp_[j] = stamp_;
 }
 

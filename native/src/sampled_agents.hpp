@@ -39,7 +39,7 @@ class SampledAgents {
   /// instants of interest begin at time `from`. Earlier samples are forgotten.
   void reset(const MovingObstacles& others, const CharacterParams& character, double from);
   std::size_t size() const { return others_->size(); }
-  const AgentPlan& plan(std::size_t j) const { return *(*others_)[j]; }
+  const AgentPlan& plan(std::size_t j) const { return *(*others_)[j].plan; }
   /// Agent j at instant k (t = k * kContactDt).
   const AgentWhere& at(std::size_t j, long k) {
     AgentWhere& where = where_[slot(j, k)];
@@ -61,6 +61,12 @@ class SampledAgents {
   double reach(std::size_t j) {
     if (bounds_stamp_[j] != stamp_) fill_bounds(j);
     return reach_[j];
+  }
+  /// A box that holds agent j's COM from the first instant on: those far
+  /// from it need no samples. Without PlanBounds, the whole plane.
+  const Box& com_box(std::size_t j) {
+    if (bounds_stamp_[j] != stamp_) fill_bounds(j);
+    return com_box_[j];
   }
   /// The agent a step checked against these samples touched last (or
   /// size() and up: none yet), for the next check to try first.
@@ -107,6 +113,7 @@ class SampledAgents {
   std::vector<AgentShape> shape_;  ///< the same
   std::vector<double> top_speed_;
   std::vector<double> reach_;
+  std::vector<Box> com_box_;
   std::vector<std::uint64_t> bounds_stamp_;
 };
 

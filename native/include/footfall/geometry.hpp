@@ -71,6 +71,30 @@ inline double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
   return std::sqrt(squared_distance_to_segment(p, a, b));
 }
 
+/// An axis-aligned box in the ground plane.
+struct Box {
+  Vec2 min, max;  ///< Its corners. [m]
+
+  /// Grows the box to hold `p`.
+  void take_in(Vec2 p) {
+    min = {std::min(min.x, p.x), std::min(min.y, p.y)};
+    max = {std::max(max.x, p.x), std::max(max.y, p.y)};
+  }
+  /// Grows the box to hold `box`.
+  void take_in(const Box& box) {
+    take_in(box.min);
+    take_in(box.max);
+  }
+};
+
+/// Squared distance between the nearest points of two boxes (0 where they
+/// meet). [m^2]
+inline double squared_distance(const Box& a, const Box& b) {
+  const double dx = std::max({0.0, a.min.x - b.max.x, b.min.x - a.max.x});
+  const double dy = std::max({0.0, a.min.y - b.max.y, b.min.y - a.max.y});
+  return dx * dx + dy * dy;
+}
+
 /// A circle in the ground plane.
 struct Circle {
   Vec2 center;        ///< Centre. [m]

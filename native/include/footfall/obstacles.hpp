@@ -38,9 +38,6 @@ class ObstacleMap {
   const std::vector<Obstacle>& obstacles() const { return obstacles_; }
 
  private:
-  struct Box {
-    Vec2 min, max;
-  };
   bool circle_overlaps(int index, const Circle& circle) const;
   // Calls visit(index) once for each obstacle whose box meets the circle's box,
   // until visit returns true; returns that index, or -1.

@@ -45,37 +45,34 @@ double top_com_speed(const AgentPlan& plan, double from);
 double circle_reach(const AgentPlan& plan, const CharacterParams& character, double from);
 
 /// top_com_speed, circle_reach and a box round the COM path of one plan,
-/// from any time on, each found in O(log steps): kept per step as maxima over
-/// the steps from there on. A crowd checks every plan against dozens of
-/// others at every commit; scanning each plan's steps for these cost more
+/// from any time on, found in O(log steps): kept per step as maxima over the
+/// steps from there on. A crowd checks every plan against dozens of others
+/// at every commit and search; scanning each plan's steps for these cost more
 /// than the checks they skip. A copy of what it needs: rebuild it whenever
 /// the plan changes.
 class PlanBounds {
  public:
+  /// The plan's bounds from a time on.
+  struct From {
+    double top_speed = 0.0;  ///< top_com_speed(plan, from), the same to the bit. [m/s]
+    double reach = 0.0;  ///< circle_reach(plan, character, from), the same to the bit. [m]
+    /// Holds the COM: the chords of the steps from the one under way on,
+    /// grown by their sway (and the start, before the first step).
+    Box com_box;
+  };
+
   PlanBounds() = default;
   PlanBounds(const AgentPlan& plan, const CharacterParams& character);
-  /// top_com_speed(plan, from), the same to the bit. [m/s]
-  double top_speed(double from) const;
-  /// circle_reach(plan, character, from), the same to the bit. [m]
-  double reach(double from) const;
-  /// True if the COM paths of the two plans from time `from` on stay more
-  /// than `apart` from each other, judged by the boxes that hold them (a
-  /// step's chord grown by its sway). [m]
-  bool stay_apart(const PlanBounds& other, double from, double apart) const;
+  /// The bounds from time `from` on.
+  From from(double from) const;
 
  private:
-  /// What the steps from one on reach, and where their COM goes (standing
-  /// where the last ends included).
   struct Suffix {
     double start_time = 0.0;  ///< Of the step. [s]
-    double top_speed = 0.0;
-    double reach = 0.0;  ///< The torso's included.
-    Vec2 low, high;      ///< The box holding the COM. [m]
+    From bounds;              ///< From its start on (the start's feet left out).
   };
-  /// The suffix that holds from time `from` on: the step under way then.
-  const Suffix& suffix(double from) const;
   std::vector<Suffix> suffix_;  ///< [i]: from step i on.
-  Suffix start_;  ///< Standing at the start (circle_reach's feet term, and the start COM).
+  From start_;  ///< Standing at the start: circle_reach's feet term, and the start COM.
 };
 
 /// Both feet at time `t`, indexed by Foot. The foot of the current step is

@@ -15,14 +15,24 @@
 namespace footfall {
 
 struct AgentPlan;
+class PlanBounds;
 namespace detail {
 class SampledAgents;
 }
 
-/// Other agents' plans, which a search keeps clear of as moving obstacles: at
-/// every sampled time of a step, the five circles each plan gives at that time
-/// (section 4). They are taken to share the planner's character.
-using MovingObstacles = std::vector<const AgentPlan*>;
+/// Another agent's plan, which a search keeps clear of as a moving obstacle:
+/// at every sampled time of a step, the five circles the plan gives at that
+/// time (section 4). It is taken to share the planner's character.
+struct MovingObstacle {
+  /// Implicit: a list of plans alone is a list of moving obstacles.
+  MovingObstacle(const AgentPlan* its_plan, const PlanBounds* its_bounds = nullptr)
+      : plan(its_plan), bounds(its_bounds) {}
+  const AgentPlan* plan;
+  /// Its PlanBounds, when the caller keeps them (a crowd does); null: a
+  /// search finds the bounds it needs itself.
+  const PlanBounds* bounds;
+};
+using MovingObstacles = std::vector<MovingObstacle>;
 
 /// Discs that a search's rests keep out of: the way another agent waits to
 /// take (the crowd's yielding). The steps may cross them.
