@@ -275,12 +275,13 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
   const double my_top_speed =
       std::max(length(step.com_velocity_start), length(step.com_velocity_end));
   const auto may_come_near = [&](std::size_t j) {
-    const double pad = 0.5 * (my_top_speed + others.top_speed(j)) * kContactDt;
-    const double close = my_reach + others.reach(j) + pad;
+    const PlanBounds::From& bounds = others.bounds(j);
+    const double pad = 0.5 * (my_top_speed + bounds.top_speed) * kContactDt;
+    const double close = my_reach + bounds.reach + pad;
     // Its COM keeps out of a box: far from that, it needs no sample.
-    if (squared_distance(others.com_box(j), {sweep.center, sweep.center}) > close * close)
+    if (squared_distance(bounds.com_box, {sweep.center, sweep.center}) > close * close)
       return false;
-    const double reach = close + others.top_speed(j) * span;
+    const double reach = close + bounds.top_speed * span;
     const Vec2 d = others.at(j, middle).com - sweep.center;
     return dot(d, d) <= reach * reach;
   };
@@ -319,7 +320,7 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
     // Both move between instants: the circles are grown by half the travel.
     const double pad = 0.5 * (me.speed + them.speed) * kContactDt;
     const Vec2 between = me.com - them.com;
-    const double near = me.extent + others.reach(j) + pad;
+    const double near = me.extent + others.bounds(j).reach + pad;
     if (dot(between, between) > near * near) return false;
     const detail::AgentShape& shape = others.shape(j, k);
     // Too far apart for any pair of circles to come within the padding; at
@@ -407,9 +408,10 @@ bool FootstepPlanner::stands_clear(const FootstepState& state,
     // on is the last that can differ.
     const long last = std::max(first, first_contact_instant(others.plan(j).end_time()));
     const double span = static_cast<double>(last - first) * kContactDt;
-    const double near = extent + others.reach(j) + 0.5 * others.top_speed(j) * kContactDt;
-    if (squared_distance(others.com_box(j), {state.com, state.com}) > near * near) return false;
-    if (distance(others.at(j, first).com, state.com) > near + others.top_speed(j) * span)
+    const PlanBounds::From& bounds = others.bounds(j);
+    const double near = extent + bounds.reach + 0.5 * bounds.top_speed * kContactDt;
+    if (squared_distance(bounds.com_box, {state.com, state.com}) > near * near) return false;
+    if (distance(others.at(j, first).com, state.com) > near + bounds.top_speed * span)
       return false;
     double start_gap = std::numeric_limits<double>::infinity();  // see touching()
     for (long k = first; k <= last; ++k) {

@@ -22,12 +22,7 @@ void SampledAgents::reset(const MovingObstacles& others, const CharacterParams& 
     shape_.clear();
     rows_ = 0;
   }
-  if (top_speed_.size() < others.size()) {
-    top_speed_.resize(others.size());
-    reach_.resize(others.size());
-    com_box_.resize(others.size());
-    bounds_stamp_.resize(others.size(), 0);
-  }
+  if (bounds_.size() < others.size()) bounds_.resize(others.size());
   first_ = first_contact_instant(from);  // the rows held keep their memory, not their samples
 }
 
@@ -38,7 +33,7 @@ void SampledAgents::grow(long k) {
     shape_.insert(shape_.begin(), added, AgentShape{});
     rows_ += first_ - k;
     first_ = k;
-    std::fill(bounds_stamp_.begin(), bounds_stamp_.end(), 0);  // bounds from first_ on
+    for (Bounds& bounds : bounds_) bounds.stamp = 0;  // bounds from first_ on
   } else {
     rows_ = k - first_ + 1;
     where_.resize(static_cast<std::size_t>(rows_) * stride_);
@@ -69,21 +64,18 @@ void SampledAgents::fill(std::size_t j, long k, AgentShape& shape) {
   shape.stamp = stamp_;
 }
 
-void SampledAgents::fill_bounds(std::size_t j) {
+void SampledAgents::fill_bounds(std::size_t j, Bounds& bounds) const {
   const double from = static_cast<double>(first_) * kContactDt;
   const MovingObstacle& other = (*others_)[j];
   if (other.bounds != nullptr) {
-    const PlanBounds::From bounds = other.bounds->from(from);
-    top_speed_[j] = bounds.top_speed;
-    reach_[j] = bounds.reach;
-    com_box_[j] = bounds.com_box;
+    bounds.from = other.bounds->from(from);
   } else {
-    top_speed_[j] = top_com_speed(*other.plan, from);
-    reach_[j] = circle_reach(*other.plan, *character_, from);
+    bounds.from.top_speed = top_com_speed(*other.plan, from);
+    bounds.from.reach = circle_reach(*other.plan, *character_, from);
     constexpr double kAll = std::numeric_limits<double>::infinity();
-    com_box_[j] = {{-kAll, -kAll}, {kAll, kAll}};
+    bounds.from.com_box = {{-kAll, -kAll}, {kAll, kAll}};
   }
-  bounds_stamp_[j] = stamp_;
+  bounds.stamp = stamp_;
 }
 
 }  // namespace footfall::detail

@@ -13,6 +13,7 @@
 
 #include "contact.hpp"
 #include "footfall/agent_planner.hpp"
+#include "footfall/plan.hpp"
 #include "footfall/planner.hpp"
 
 namespace footfall::detail {
@@ -52,21 +53,13 @@ class SampledAgents {
     if (shape.stamp != stamp_) fill(j, k, shape);
     return shape;
   }
-  /// top_com_speed of agent j's plan from the first instant on. [m/s]
-  double top_speed(std::size_t j) {
-    if (bounds_stamp_[j] != stamp_) fill_bounds(j);
-    return top_speed_[j];
-  }
-  /// circle_reach of agent j's plan from the first instant on. [m]
-  double reach(std::size_t j) {
-    if (bounds_stamp_[j] != stamp_) fill_bounds(j);
-    return reach_[j];
-  }
-  /// A box that holds agent j's COM from the first instant on: those far
-  /// from it need no samples. Without PlanBounds, the whole plane.
-  const Box& com_box(std::size_t j) {
-    if (bounds_stamp_[j] != stamp_) fill_bounds(j);
-    return com_box_[j];
+  /// Agent j's plan's bounds from the first instant on: its top COM speed,
+  /// how far its circles reach, and a box that holds its COM (those far from
+  /// it need no samples; without PlanBounds, the whole plane).
+  const PlanBounds::From& bounds(std::size_t j) {
+    Bounds& held = bounds_[j];
+    if (held.stamp != stamp_) fill_bounds(j, held);
+    return held.from;
   }
   /// The agent a step checked against these samples touched last (or
   /// size() and up: none yet), for the next check to try first.
@@ -86,7 +79,8 @@ class SampledAgents {
   /// of a walking agent's rest.
   bool counts(std::size_t j, long k) {
     if (!at(j, k).present) return false;
-    if (rest_grace_ == std::numeric_limits<double>::infinity() || top_speed(j) == 0.0) return true;
+    if (rest_grace_ == std::numeric_limits<double>::infinity() || bounds(j).top_speed == 0.0)
+      return true;
     return static_cast<double>(k) * kContactDt <= plan(j).end_time() + rest_grace_;
   }
 
@@ -98,7 +92,11 @@ class SampledAgents {
   void grow(long k);
   void fill(std::size_t j, long k, AgentWhere& where) const;
   void fill(std::size_t j, long k, AgentShape& shape);
-  void fill_bounds(std::size_t j);
+  struct Bounds {
+    std::uint64_t stamp = 0;
+    PlanBounds::From from;
+  };
+  void fill_bounds(std::size_t j, Bounds& bounds) const;
 
   double rest_grace_ = std::numeric_limits<double>::infinity();
   std::size_t blocker_ = std::numeric_limits<std::size_t>::max();
@@ -111,10 +109,7 @@ class SampledAgents {
   std::size_t stride_ = 0;         ///< Agents per row (at least size()).
   std::vector<AgentWhere> where_;  ///< [(k - first_) * stride_ + j]
   std::vector<AgentShape> shape_;  ///< the same
-  std::vector<double> top_speed_;
-  std::vector<double> reach_;
-  std::vector<Box> com_box_;
-  std::vector<std::uint64_t> bounds_stamp_;
+  std::vector<Bounds> bounds_;  ///< [j]
 };
 
 }  // namespace footfall::detail
