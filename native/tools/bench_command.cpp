@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -105,7 +106,7 @@ void run_bench(int repeat, std::ostream& out) {
   out << "(" << repeat << " timed runs per plan; one core; plans start standing)\n";
 }
 
-void run_crowd_bench(int threads, std::ostream& out) {
+void run_crowd_bench(int threads, int repeat, std::ostream& out) {
   struct CrowdWorkload {
     const char* name;
     Scenario scenario;
@@ -121,14 +122,22 @@ void run_crowd_bench(int threads, std::ostream& out) {
       << std::setw(10) << "sim s" << std::setw(10) << "wall s" << std::setw(16) << "ms/agent/tick"
       << "\n";
   for (const CrowdWorkload& workload : workloads) {
-    RunControl control;
-    control.threads = threads;
-    double search_seconds = 0.0;
-    control.search_seconds = &search_seconds;
-    const auto begin = std::chrono::steady_clock::now();
-    const Plan plan = plan_scenario(workload.scenario, control);
-    const double wall =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    Plan plan;
+    double wall = std::numeric_limits<double>::infinity(), search_seconds = 0.0;
+    for (int run = 0; run < repeat; ++run) {
+      RunControl control;
+      control.threads = threads;
+      double searching = 0.0;
+      control.search_seconds = &searching;
+      const auto begin = std::chrono::steady_clock::now();
+      plan = plan_scenario(workload.scenario, control);
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+      if (seconds < wall) {
+        wall = seconds;
+        search_seconds = searching;
+      }
+    }
     long searches = 0;  // an integer: the fixed notation of the row before must not apply
     double generated = 0, expanded = 0, simulated = 0;
     int reached = 0;
@@ -151,7 +160,7 @@ void run_crowd_bench(int threads, std::ostream& out) {
         << simulated << std::setw(10) << wall << std::setprecision(4) << std::setw(16)
         << 1000.0 * wall / (agents * ticks) << "\n";
   }
-  out << "(one run each on " << threads
+  out << "(the fastest of " << repeat << " run(s) each on " << threads
       << " thread(s); ms/plan and ms/agent/tick are the whole run's wall time shared out;\n"
          " search ms is the time in searches alone: way, local goal, search, cut to a rest)\n";
 }

@@ -10,9 +10,10 @@ namespace footfall::tools {
 /// Runs every workload `repeat` times and prints a table to `out`.
 void run_bench(int repeat, std::ostream& out);
 
-/// Plans each crowd workload once on `threads` threads and prints, per
-/// workload, the searches' effort and the planning time per plan and per
-/// agent per 20 Hz tick to `out`.
-void run_crowd_bench(int threads, std::ostream& out);
+/// Plans each crowd workload `repeat` times on `threads` threads and prints,
+/// per workload, the searches' effort and the planning time per plan and per
+/// agent per 20 Hz tick of the fastest run to `out` (the plans are the same
+/// every time; on a shared machine the fastest run is the least disturbed).
+void run_crowd_bench(int threads, int repeat, std::ostream& out);
 
 }  // namespace footfall::tools
