@@ -63,6 +63,7 @@ def test_bad_input_is_one_line_exit_2_and_no_output(cli, tmp_path, name):
 def test_usage_errors_exit_2(cli):
     assert run(cli, "plan").returncode == 2
     assert run(cli, "fly").returncode == 2
+    assert run(cli, "bench", "--crowds", "--repeat", "0").returncode == 2
     assert run(cli, "--help").returncode == 0
 
 
