@@ -31,6 +31,7 @@
 #include "footfall/agent_planner.hpp"
 #include "footfall/plan.hpp"
 #include "local_goal.hpp"
+#include "trial.hpp"
 #include "workers.hpp"
 
 namespace footfall {
@@ -368,118 +369,6 @@ std::vector<std::size_t> near(const std::vector<Walker>& walkers, std::size_t i,
   return out;
 }
 
-/// An agent's plan with new steps in place of its old rest, to be checked
-/// against the others before it is committed.
-class Trial {
- public:
-  /// The trial at one instant of the contact grid.
-  struct Instant {
-    bool sampled = false;
-    ComSample com;
-    bool shaped = false;  ///< The circles below are sampled.
-    int count = 0;
-    std::array<Circle, 5> circles;
-    double extent = 0.0;  ///< How far they reach from the COM. [m]
-  };
-
-  Trial() = default;
-  /// `plan` differs from the agent's plan from time `from` on.
-  Trial(AgentPlan plan, double from, const CharacterParams& character)
-      : plan_(std::move(plan)),
-        bounds_(plan_, character),
-        from_(from),
-        bounds_from_(bounds_.from(from)) {}
-  /// The plan and its bounds, non-const for the commit to take them.
-  AgentPlan& plan() { return plan_; }
-  PlanBounds& bounds() { return bounds_; }
-  double from() const { return from_; }
-  const PlanBounds::From& bounds_from() const { return bounds_from_; }
-  /// The trial at instant k (from `from` on), its circles too if `shaped`:
-  /// sampled when first wanted, for it is checked against dozens of plans at
-  /// the same instants.
-  const Instant& at(long k, const CharacterParams& character, bool shaped) {
-    // After its last step it stands, or is gone, as at the first instant
-    // past its end.
-    const long first = first_contact_instant(from_);
-    const long still = first_contact_instant(plan_.end_time()) + 1;
-    const long held = std::min(k, still);
-    const auto index = static_cast<std::size_t>(held - first);
-    if (index >= instants_.size()) instants_.resize(index + 1);
-    Instant& sample = instants_[index];
-    const double t = static_cast<double>(held) * kContactDt;
-    if (!sample.sampled) {
-      sample.com = com_at(plan_, t);
-      sample.sampled = true;
-    }
-    if (shaped && !sample.shaped) {
-      sample.count = collision_circles(plan_, character, t, sample.circles);
-      sample.extent = 0.0;
-      for (int i = 0; i < sample.count; ++i) {
-        const Circle& circle = sample.circles[i];
-        sample.extent =
-            std::max(sample.extent, distance(circle.center, sample.com.position) + circle.radius);
-      }
-      sample.shaped = true;
-    }
-    return sample;
-  }
-
- private:
-  AgentPlan plan_;
-  PlanBounds bounds_;
-  double from_ = 0.0;
-  PlanBounds::From bounds_from_;  ///< bounds_.from(from_)
-  std::vector<Instant> instants_;  ///< [k - first_contact_instant(from)]
-};
-
-/// True if the trial, from its time `from` on, touches `other` under the
-/// five-circle model that measures a plan (torso circles and planted feet;
-/// after its last step a plan stands where it ends). Checked every
-/// kContactDt, the circles grown by half of both agents' travel in between.
-bool touches(Trial& trial, const FootstepPlanner& planner, const Walker& walker) {
-  const CharacterParams& c = planner.character();
-  const AgentPlan& other = walker.plan;
-  const double from = trial.from();
-  const double end = std::max(trial.plan().end_time(), other.end_time()) + kContactDt;
-  // While the pair is far apart, instants they cannot close the distance
-  // in are skipped (most of those checked are never near).
-  const PlanBounds::From& mine = trial.bounds_from();
-  const PlanBounds::From theirs = walker.bounds.from(from);
-  const double closing = (mine.top_speed + theirs.top_speed) * kContactDt;
-  // Farther apart than this, no circles of the pair come within the padding.
-  const double near = mine.reach + theirs.reach + 0.5 * closing;
-  // Their COMs keep farther apart than that throughout: none is near.
-  if (squared_distance(mine.com_box, theirs.com_box) > near * near) return false;
-  // The gap where the trial starts (see touching()).
-  double start_gap = std::numeric_limits<double>::infinity();
-  const long first = first_contact_instant(from);
-  for (long k = first, next = first;; k = next) {
-    const double t = static_cast<double>(k) * kContactDt;
-    if (t > end) break;
-    const ComSample me = trial.at(k, c, false).com, them = com_at(other, t);
-    const double between = distance(me.position, them.position);
-    next = k + 1;
-    if (between > near) {
-      if (closing > 0.0) next = k + std::max(1L, static_cast<long>((between - near) / closing));
-      continue;
-    }
-    const double pad = 0.5 * (length(me.velocity) + length(them.velocity)) * kContactDt;
-    const Trial::Instant& now = trial.at(k, c, true);
-    // Out of reach of the trial's circles as they are now (after the first
-    // instant: its gap is wanted, see touching()).
-    if (k != first && between - now.extent - theirs.reach > pad) continue;
-    std::array<Circle, 5> circles;
-    const int count = collision_circles(other, c, t, circles);
-    Gap gap;
-    for (int i = 0; i < count; ++i)
-      for (int m = 0; m < now.count; ++m) gap.add(now.circles[m], circles[i], pad);
-    if (k == first && standing_still(length(me.velocity), length(them.velocity)))
-      start_gap = gap.outright;
-    if (touching(gap, start_gap)) return true;
-  }
-  return false;
-}
-
 /// Lets the agent's provisional rest happen (it is no longer provisional),
 /// and if it would then stand before time `t`, has it stand until `t`: the
 /// next steps start now, not in the past.
@@ -578,7 +467,7 @@ struct Proposal {
   std::vector<Footstep> steps;     ///< The attempt's steps, then (unless it leaves) its rest.
   FootstepState rested;            ///< Where they leave the agent.
   bool leaving = false;            ///< It walks on through its last goal.
-  Trial trial;                     ///< The plan with them in place of the old rest.
+  detail::Trial trial;             ///< The plan with them in place of the old rest.
   bool new_place = false;          ///< It rests somewhere new: it needs room there.
   std::vector<std::size_t> close;  ///< The agents near (near()).
   std::vector<char> hits;          ///< Per close: the trial touches its plan.
@@ -610,11 +499,11 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
   // During the last kept step the free foot swings toward the next step's
   // foot (feet_at): that step's circles change with the new steps too.
   const double from = kept > 0 ? plan.footsteps[kept - 1].start_time : a.steps.front().start_time;
-  p.trial = Trial(std::move(plan), from, planner.character());
+  p.trial = detail::Trial(std::move(plan), from, planner.character());
   // A new place to rest needs room among everyone, seen or not.
   p.new_place = !p.leaving && distance(p.rested.com, rest_of(w).com) > kSamePlace;
   for (const std::size_t j : p.close) {
-    p.hits.push_back(touches(p.trial, planner, walkers[j]));
+    p.hits.push_back(p.trial.touches(walkers[j].plan, walkers[j].bounds));
     p.no_room.push_back(p.new_place && !planner.stands_clear(p.rested, {obstacle_of(walkers[j])}));
   }
   return p;
@@ -627,7 +516,8 @@ int refusal(const std::vector<Walker>& walkers, Proposal& p, const std::vector<c
             const FootstepPlanner& planner) {
   if (p.trial.plan().footsteps.empty()) return -1;
   for (std::size_t c = 0; c < p.close.size(); ++c) {
-    if (changed[p.close[c]] ? touches(p.trial, planner, walkers[p.close[c]]) : p.hits[c])
+    const Walker& other = walkers[p.close[c]];
+    if (changed[p.close[c]] ? p.trial.touches(other.plan, other.bounds) : p.hits[c])
       return static_cast<int>(c);
   }
   if (!p.new_place) return -1;

@@ -1,0 +1,53 @@
+// Footfall — the crowd's commit check: whether an agent's new plan keeps
+// clear of another agent's plan, under the five-circle model that measures
+// plans (torso circles and planted feet; after its last step a plan stands
+// where it ends), checked every kContactDt, the circles grown by half of both
+// agents' travel in between (contact.hpp).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "footfall/plan.hpp"
+
+namespace footfall::detail {
+
+/// An agent's plan with new steps in place of its old rest, to be checked
+/// against the others' plans before it is committed.
+class Trial {
+ public:
+  Trial() = default;
+  /// `plan` differs from the agent's plan from time `from` on: during the
+  /// last step kept, the free foot swings toward the first new step.
+  Trial(AgentPlan plan, double from, const CharacterParams& character);
+  /// The plan and its bounds, non-const for the commit to take them.
+  AgentPlan& plan() { return plan_; }
+  PlanBounds& bounds() { return bounds_; }
+  /// True if the trial, from its time `from` on, touches `other`, whose
+  /// bounds are `bounds`.
+  bool touches(const AgentPlan& other, const PlanBounds& bounds);
+
+ private:
+  /// The trial at one instant of the contact grid.
+  struct Instant {
+    bool sampled = false;
+    ComSample com;
+    bool shaped = false;  ///< The circles below are sampled.
+    int count = 0;
+    std::array<Circle, 5> circles;
+    double extent = 0.0;  ///< How far they reach from the COM. [m]
+  };
+  /// The trial at instant k (from `from` on), its circles too if `shaped`:
+  /// sampled when first wanted, for it is checked against dozens of plans at
+  /// the same instants.
+  const Instant& at(long k, bool shaped);
+
+  AgentPlan plan_;
+  const CharacterParams* character_ = nullptr;
+  PlanBounds bounds_;
+  double from_ = 0.0;
+  PlanBounds::From bounds_from_;   ///< bounds_.from(from_)
+  std::vector<Instant> instants_;  ///< [k - first_contact_instant(from_)]
+};
+
+}  // namespace footfall::detail
