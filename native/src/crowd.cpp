@@ -117,7 +117,9 @@ struct Walker {
   double committed_at = -kForever;  ///< Tick its plan last changed by a commit. [s]
   /// Tick it was last asked to make room, or noticed an agent. [s]
   double news_at = -kForever;
-  int last_expanded = 0;   ///< Nodes its last search expanded: a guess at the next one's cost.
+  /// Seconds its last search and check took: a guess at the next one's cost
+  /// (only the order in which a tick's jobs start depends on it).
+  double last_cost = 0.0;
   double first_way = 0.0;  ///< Way to the current goal when it was first measured. [m]
   double best_way = std::numeric_limits<double>::infinity();  ///< Shortest way left so far. [m]
   double improved_at = 0.0;  ///< Plan time when best_way last shortened by min_progress. [s]
@@ -540,7 +542,6 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a, Propo
     ++w.plan.searches;
     w.plan.nodes_generated += a.nodes_generated;
     w.plan.nodes_expanded += a.nodes_expanded;
-    w.last_expanded = a.nodes_expanded;
   }
   if (refused >= 0) {
     w.noticed.push_back(p.close[refused]);
@@ -663,28 +664,33 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       if (walkers[i].state.time < t) rest_until(walkers[i], planner, t);
     const Snapshot at_tick = snapshot(walkers, t);
     std::vector<Attempt> attempts(due.size());
-    // The dearest-looking searches start first, so that threads finish the
-    // tick together; results go by index, so the order changes nothing else.
-    std::vector<std::size_t> order(due.size());
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return walkers[due[a]].last_expanded > walkers[due[b]].last_expanded;
-    });
     std::vector<char> idle(due.size());
     for (std::size_t k = 0; k < due.size(); ++k) idle[k] = nothing_new(walkers, due[k], at_tick);
-    std::vector<double> seconds(due.size());
+    // The dearest-looking jobs start first (those that search, by what their
+    // last ones took), so that threads finish the tick together; results go
+    // by index, so the order changes nothing else.
+    std::vector<std::size_t> order(due.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    const auto cost = [&](std::size_t k) { return idle[k] ? 0.0 : walkers[due[k]].last_cost; };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return cost(a) > cost(b); });
+    std::vector<double> seconds(due.size()), job_seconds(due.size());
     std::vector<Proposal> proposals(due.size());
     workers.run(due.size(), [&](std::size_t job) {
       const std::size_t k = order[job], i = due[k];
+      const auto begin = std::chrono::steady_clock::now();
       if (!idle[k]) {
-        const auto begin = std::chrono::steady_clock::now();
         attempts[k] =
             search(walkers, i, planner, mesh, seen_by(walkers, i, at_tick, mesh), at_tick);
         seconds[k] =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
       }
       proposals[k] = propose(walkers, i, attempts[k], planner, near(walkers, i, at_tick));
+      job_seconds[k] =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     });
+    for (std::size_t k = 0; k < due.size(); ++k)
+      if (!idle[k]) walkers[due[k]].last_cost = job_seconds[k];
     if (control.search_seconds != nullptr)
       for (const double s : seconds) *control.search_seconds += s;
     // Plans changed in this tick so far (by a commit, or a wait).
