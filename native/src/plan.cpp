@@ -123,11 +123,12 @@ PlanBounds::PlanBounds(const AgentPlan& plan, const CharacterParams& character) 
   // Each step's own terms first, going forward (the foot that stays planted
   // through it was put down earlier), then the maxima going back.
   suffix_.resize(steps.size());
+  starts_.resize(steps.size());
   std::array<Vec2, 2> last = plan.start.feet;
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const Footstep& step = steps[i];
-    suffix_[i].start_time = step.start_time;
-    From& own = suffix_[i].bounds;
+    starts_[i] = step.start_time;
+    From& own = suffix_[i];
     own.top_speed = step_top_speed(step);
     own.reach = torso;
     for (const Vec2& foot : {step.foot_position, last[static_cast<int>(other(step.foot))]})
@@ -139,23 +140,22 @@ PlanBounds::PlanBounds(const AgentPlan& plan, const CharacterParams& character) 
     own.com_box = {own.com_box.min - sway, own.com_box.max + sway};
   }
   for (std::size_t i = steps.size(); i-- > 1;) {
-    const From& later = suffix_[i].bounds;
-    From& here = suffix_[i - 1].bounds;
+    const From& later = suffix_[i];
+    From& here = suffix_[i - 1];
     here.top_speed = std::max(here.top_speed, later.top_speed);
     here.reach = std::max(here.reach, later.reach);
     here.com_box.take_in(later.com_box);
   }
-  if (!suffix_.empty()) suffix_.front().bounds.com_box.take_in(plan.start.com);  // before it
+  if (!suffix_.empty()) suffix_.front().com_box.take_in(plan.start.com);  // before it
 }
 
 PlanBounds::From PlanBounds::from(double from) const {
   if (suffix_.empty()) return start_;
   // The step under way, as step_index finds it.
-  const auto after =
-      std::upper_bound(suffix_.begin(), suffix_.end(), from,
-                       [](double time, const Suffix& s) { return time < s.start_time; });
-  From bounds = (after == suffix_.begin() ? suffix_.front() : *(after - 1)).bounds;
-  if (from < suffix_.front().start_time) bounds.reach = std::max(bounds.reach, start_.reach);
+  const auto after = std::upper_bound(starts_.begin(), starts_.end(), from);
+  const auto index = std::max<std::ptrdiff_t>(0, after - starts_.begin() - 1);
+  From bounds = suffix_[static_cast<std::size_t>(index)];
+  if (from < starts_.front()) bounds.reach = std::max(bounds.reach, start_.reach);
   return bounds;
 }
 

@@ -67,11 +67,10 @@ class PlanBounds {
   From from(double from) const;
 
  private:
-  struct Suffix {
-    double start_time = 0.0;  ///< Of the step. [s]
-    From bounds;              ///< From its start on (the start's feet left out).
-  };
-  std::vector<Suffix> suffix_;  ///< [i]: from step i on.
+  /// The steps' start times, searched apart from the bounds: a crowd asks
+  /// for the bounds of dozens of plans at every commit. [s]
+  std::vector<double> starts_;
+  std::vector<From> suffix_;  ///< [i]: from step i on (the start's feet left out).
   From start_;  ///< Standing at the start: circle_reach's feet term, and the start COM.
 };
 
