@@ -176,12 +176,12 @@ class ChannelSearch {
   }
 
   /// The next channel to the goal, in order of the lower bound on the length
-  /// of a path through it (its relaxed length, `bound`); false when none is
-  /// left whose bound is below `limit`. A node's successors have bounds of at least its f / kAheadWeight
-  /// (the unweighted bound never falls along a channel), so once every open
-  /// node is at kAheadWeight * limit or more, no channel left can qualify: a
-  /// query whose answer is found stops there instead of searching on for a
-  /// goal's face that may have no other way in.
+  /// of a path through it (its relaxed length, `bound_out`); false when none
+  /// is left whose bound is below `limit`. A node's successors have bounds of
+  /// at least its f / kAheadWeight (the unweighted bound never falls along a
+  /// channel), so once every open node is at kAheadWeight * limit or more, no
+  /// channel left can qualify: a query whose answer is found stops there
+  /// instead of searching on for a goal's face that may have no other way in.
   bool next(Channel& channel, double limit, double& bound_out) {
     while (!open_.empty() && open_.top().first < kAheadWeight * limit) {
       const auto [bound, index] = open_.top();

@@ -411,8 +411,7 @@ bool FootstepPlanner::stands_clear(const FootstepState& state,
     const PlanBounds::From& bounds = others.bounds(j);
     const double near = extent + bounds.reach + 0.5 * bounds.top_speed * kContactDt;
     if (squared_distance(bounds.com_box, {state.com, state.com}) > near * near) return false;
-    if (distance(others.at(j, first).com, state.com) > near + bounds.top_speed * span)
-      return false;
+    if (distance(others.at(j, first).com, state.com) > near + bounds.top_speed * span) return false;
     double start_gap = std::numeric_limits<double>::infinity();  // see touching()
     for (long k = first; k <= last; ++k) {
       const detail::AgentWhere& them = others.at(j, k);

@@ -109,7 +109,7 @@ class SampledAgents {
   std::size_t stride_ = 0;         ///< Agents per row (at least size()).
   std::vector<AgentWhere> where_;  ///< [(k - first_) * stride_ + j]
   std::vector<AgentShape> shape_;  ///< the same
-  std::vector<Bounds> bounds_;  ///< [j]
+  std::vector<Bounds> bounds_;     ///< [j]
 };
 
 }  // namespace footfall::detail

@@ -55,7 +55,7 @@ class PlanBounds {
   /// The plan's bounds from a time on.
   struct From {
     double top_speed = 0.0;  ///< top_com_speed(plan, from), the same to the bit. [m/s]
-    double reach = 0.0;  ///< circle_reach(plan, character, from), the same to the bit. [m]
+    double reach = 0.0;      ///< circle_reach(plan, character, from), the same to the bit. [m]
     /// Holds the COM: the chords of the steps from the one under way on,
     /// grown by their sway (and the start, before the first step).
     Box com_box;
