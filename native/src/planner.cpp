@@ -42,22 +42,23 @@ std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, F
          static_cast<std::uint64_t>(last_foot) << 48 | 1ull << 63;
 }
 
-// Open-addressing set of state keys, reused from search to search.
+// Open-addressing set of state keys, reused from search to search. Each
+// search starts with a table for a typical search's keys (a few hundred) that
+// doubles if more come. Sized for the horizon instead, it was 128 KB to zero
+// for every full search, and reallocated whenever a blocked agent's shorter
+// horizon alternated with the full one. The memory is kept, never handed back.
 class KeySet {
  public:
-  void clear(size_t expected) {
-    size_t capacity = 1024;
-    while (capacity < 2 * expected) capacity *= 2;
-    if (slots_.size() != capacity)
-      slots_.assign(capacity, 0);
-    else
-      std::fill(slots_.begin(), slots_.end(), 0);
+  void clear() {
+    used_ = kFirstSize;
+    if (slots_.size() < used_) slots_.resize(used_);
+    std::fill_n(slots_.begin(), used_, 0);
     size_ = 0;
   }
   // True if `key` was not there yet.
   bool insert(std::uint64_t key) {
-    if (2 * (size_ + 1) > slots_.size()) grow();
-    const size_t mask = slots_.size() - 1;
+    if (2 * (size_ + 1) > used_) grow();
+    const size_t mask = used_ - 1;
     for (size_t i = mix(key) & mask;; i = (i + 1) & mask) {
       if (slots_[i] == key) return false;
       if (slots_[i] == 0) {
@@ -69,21 +70,25 @@ class KeySet {
   }
 
  private:
+  static constexpr size_t kFirstSize = 2048;
   static size_t mix(std::uint64_t key) {
     key ^= key >> 33;
     key *= 0xFF51AFD7ED558CCDull;
     return static_cast<size_t>(key ^ (key >> 33));
   }
   void grow() {
-    std::vector<std::uint64_t> old;
-    old.swap(slots_);
-    slots_.assign(old.size() * 2, 0);
+    old_.assign(slots_.begin(), slots_.begin() + static_cast<std::ptrdiff_t>(used_));
+    used_ *= 2;
+    if (slots_.size() < used_) slots_.resize(used_);
+    std::fill_n(slots_.begin(), used_, 0);
     size_ = 0;
-    for (const std::uint64_t key : old) {
+    for (const std::uint64_t key : old_) {
       if (key != 0) insert(key);
     }
   }
-  std::vector<std::uint64_t> slots_;
+  std::vector<std::uint64_t> slots_;  ///< The first used_ are the table.
+  std::vector<std::uint64_t> old_;    ///< The keys being rehashed.
+  size_t used_ = kFirstSize;
   size_t size_ = 0;
 };
 
@@ -642,7 +647,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   search.generated = 0;
   search.others.reset(others, character_, start.time);
   search.others.set_rest_grace(options.rest_grace);
-  search.seen.clear(static_cast<size_t>(horizon) * 8);
+  search.seen.clear();
   const detail::Heading start_heading = detail::heading_of(start);
   search.seen.insert(state_key(start.com, start_heading.angle, start_heading.speed,
                                start.standing(), start.last_foot));

@@ -15,15 +15,14 @@ void SampledAgents::reset(const MovingObstacles& others, const CharacterParams& 
   rest_grace_ = std::numeric_limits<double>::infinity();
   blocker_ = std::numeric_limits<std::size_t>::max();
   refusers_.clear();
-  ++stamp_;
-  if (others.size() > stride_) {  // a wider row: the old samples are stale anyway
-    stride_ = others.size();
-    where_.clear();
-    shape_.clear();
-    rows_ = 0;
-  }
+  ++stamp_;  // every sample held is stale now
+  // Rows as wide as these agents, none held yet: the vectors keep the memory
+  // of the largest search so far (a new stamp makes it stale), not a row as
+  // wide as the most agents times as many rows as the longest search.
+  stride_ = others.size();
+  rows_ = 0;
   if (bounds_.size() < others.size()) bounds_.resize(others.size());
-  first_ = first_contact_instant(from);  // the rows held keep their memory, not their samples
+  first_ = first_contact_instant(from);
 }
 
 void SampledAgents::grow(long k) {
@@ -36,8 +35,11 @@ void SampledAgents::grow(long k) {
     for (Bounds& bounds : bounds_) bounds.stamp = 0;  // bounds from first_ on
   } else {
     rows_ = k - first_ + 1;
-    where_.resize(static_cast<std::size_t>(rows_) * stride_);
-    shape_.resize(static_cast<std::size_t>(rows_) * stride_);
+    const std::size_t cells = static_cast<std::size_t>(rows_) * stride_;
+    if (where_.size() < cells) {
+      where_.resize(cells);
+      shape_.resize(cells);
+    }
   }
 }
 

@@ -105,8 +105,8 @@ class SampledAgents {
   const CharacterParams* character_ = nullptr;
   std::uint64_t stamp_ = 0;        ///< Counts resets.
   long first_ = 0;                 ///< The instant of the first row.
-  long rows_ = 0;                  ///< Instants held.
-  std::size_t stride_ = 0;         ///< Agents per row (at least size()).
+  long rows_ = 0;                  ///< Instants held (this search).
+  std::size_t stride_ = 0;         ///< Agents per row: size().
   std::vector<AgentWhere> where_;  ///< [(k - first_) * stride_ + j]
   std::vector<AgentShape> shape_;  ///< the same
   std::vector<Bounds> bounds_;     ///< [j]

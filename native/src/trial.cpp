@@ -12,7 +12,12 @@ Trial::Trial(AgentPlan plan, double from, const CharacterParams& character)
       character_(&character),
       bounds_(plan_, character),
       from_(from),
-      bounds_from_(bounds_.from(from)) {}
+      bounds_from_(bounds_.from(from)) {
+  // Every instant it can be sampled at, from `from` to where it stands (at()):
+  // one allocation, not one per doubling while it is checked.
+  instants_.resize(static_cast<std::size_t>(first_contact_instant(plan_.end_time()) + 2 -
+                                            first_contact_instant(from_)));
+}
 
 const Trial::Instant& Trial::at(long k, bool shaped) {
   // After its last step it stands, or is gone, as at the first instant past
@@ -20,9 +25,7 @@ const Trial::Instant& Trial::at(long k, bool shaped) {
   const long first = first_contact_instant(from_);
   const long still = first_contact_instant(plan_.end_time()) + 1;
   const long held = std::min(k, still);
-  const auto index = static_cast<std::size_t>(held - first);
-  if (index >= instants_.size()) instants_.resize(index + 1);
-  Instant& sample = instants_[index];
+  Instant& sample = instants_[static_cast<std::size_t>(held - first)];
   const double t = static_cast<double>(held) * kContactDt;
   if (!sample.sampled) {
     sample.com = com_at(plan_, t);
