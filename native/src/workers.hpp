@@ -2,8 +2,10 @@
 // at a time (the searches of one scheduling tick).
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
+#include <cstdint>
 #include <exception>
 #include <functional>
 #include <mutex>
@@ -27,17 +29,24 @@ class Workers {
 
  private:
   void work();
-  /// Takes jobs of the current batch until none is left.
-  void drain();
+  /// Takes jobs of batch `batch` until none is left.
+  void drain(std::uint32_t batch);
 
   std::vector<std::thread> threads_;
+  /// The batch (high 32 bits) and its next job to take (low 32): a thread
+  /// takes job k of the batch it saw by raising k, so that one which sees a
+  /// batch late never takes a job of the next.
+  std::atomic<std::uint64_t> ticket_{0};
+  std::atomic<const std::function<void(std::size_t)>*> job_{nullptr};
+  std::atomic<std::size_t> count_{0};
+  std::atomic<std::size_t> unfinished_{0};  ///< Jobs of the batch not yet done.
+  std::atomic<bool> stopping_{false};
+  // Sleeping, for a thread that found nothing to do for a while: spinning
+  // through the few hundred microseconds between ticks keeps the threads from
+  // paying a wake-up each tick.
   std::mutex mutex_;
   std::condition_variable wake_, finished_;
-  const std::function<void(std::size_t)>* job_ = nullptr;
-  std::size_t next_ = 0, count_ = 0, running_ = 0;
-  unsigned long batch_ = 0;
-  bool stopping_ = false;
-  std::exception_ptr error_;
+  std::exception_ptr error_;  ///< Under mutex_.
 };
 
 }  // namespace footfall
