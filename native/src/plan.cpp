@@ -179,14 +179,17 @@ FootPose swing(const FootPose& from, const Footstep& to, double u) {
   return foot;
 }
 
-}  // namespace
-
-std::array<FootPose, 2> feet_at(const AgentPlan& plan, double t) {
+// The feet before any step: where they stand.
+std::array<FootPose, 2> standing_feet(const AgentPlan& plan) {
   std::array<FootPose, 2> feet;
   for (int f = 0; f < 2; ++f) feet[f] = {plan.start.feet[f], plan.start.facing, 0.0, true};
+  return feet;
+}
+
+// The feet at time t during step k (step_index), t not before the first step.
+std::array<FootPose, 2> feet_during(const AgentPlan& plan, int k, double t) {
+  std::array<FootPose, 2> feet = standing_feet(plan);
   const auto& steps = plan.footsteps;
-  if (steps.empty() || t < steps.front().start_time) return feet;
-  const int k = step_index(plan, t);
   // Where each foot was last planted before step k: found walking back, so a
   // long plan costs no more than a short one.
   std::array<bool, 2> found{false, false};
@@ -226,16 +229,56 @@ std::array<FootPose, 2> feet_at(const AgentPlan& plan, double t) {
   return feet;
 }
 
-int collision_circles(const AgentPlan& plan, const CharacterParams& character, double t,
-                      std::array<Circle, 5>& out) {
+}  // namespace
+
+std::array<FootPose, 2> feet_at(const AgentPlan& plan, double t) {
+  if (plan.footsteps.empty() || t < plan.footsteps.front().start_time) return standing_feet(plan);
+  return feet_during(plan, step_index(plan, t), t);
+}
+
+namespace {
+
+// collision_circles at time t, with the step under way (k, step_index's) known.
+int circles_during(const AgentPlan& plan, int k, const CharacterParams& character, double t,
+                   std::array<Circle, 5>& out) {
   if (!present_at(plan, t)) return 0;
-  const auto torso = torso_circles(com_at(plan, t).position, facing_at(plan, t), character);
+  // What com_at, facing_at and feet_at give, from the one step.
+  const auto& steps = plan.footsteps;
+  const bool started = !steps.empty() && t >= steps.front().start_time;
+  const Vec2 com = steps.empty() ? plan.start.com : com_at(steps[k], t).position;
+  const auto torso = torso_circles(com, started ? steps[k].phi : plan.start.facing, character);
   int count = 0;
   for (const Circle& circle : torso) out[count++] = circle;
-  for (const FootPose& foot : feet_at(plan, t)) {
+  for (const FootPose& foot : started ? feet_during(plan, k, t) : standing_feet(plan)) {
     if (foot.planted) out[count++] = {foot.position, character.foot_radius};
   }
   return count;
+}
+
+}  // namespace
+
+int collision_circles(const AgentPlan& plan, const CharacterParams& character, double t,
+                      std::array<Circle, 5>& out) {
+  return circles_during(plan, plan.footsteps.empty() ? 0 : step_index(plan, t), character, t, out);
+}
+
+int PlanWalk::step(double t) {
+  // As step_index: the last step that started at or before t (or the first);
+  // searched for the first time only.
+  const auto& steps = plan_->footsteps;
+  if (step_ < 0) return step_ = step_index(*plan_, t);
+  while (step_ + 1 < static_cast<int>(steps.size()) && steps[step_ + 1].start_time <= t) ++step_;
+  return step_;
+}
+
+ComSample PlanWalk::com_at(double t) {
+  if (plan_->footsteps.empty()) return {plan_->start.com, {0.0, 0.0}};
+  return footfall::com_at(plan_->footsteps[step(t)], t);
+}
+
+int PlanWalk::collision_circles(const CharacterParams& character, double t,
+                                std::array<Circle, 5>& out) {
+  return circles_during(*plan_, plan_->footsteps.empty() ? 0 : step(t), character, t, out);
 }
 
 std::vector<Circle> collision_circles(const AgentPlan& plan, const CharacterParams& character,

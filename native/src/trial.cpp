@@ -58,10 +58,11 @@ bool Trial::touches(const AgentPlan& other, const PlanBounds& bounds) {
   // The gap where the trial starts (see touching()).
   double start_gap = std::numeric_limits<double>::infinity();
   const long first = first_contact_instant(from_);
+  PlanWalk them_at(other);  // at instants in order
   for (long k = first, next = first;; k = next) {
     const double t = static_cast<double>(k) * kContactDt;
     if (t > end) break;
-    const ComSample me = at(k, false).com, them = com_at(other, t);
+    const ComSample me = at(k, false).com, them = them_at.com_at(t);
     const double between = distance(me.position, them.position);
     next = k + 1;
     if (between > near) {
@@ -74,7 +75,7 @@ bool Trial::touches(const AgentPlan& other, const PlanBounds& bounds) {
     // instant: its gap is wanted, see touching()).
     if (k != first && between - now.extent - theirs.reach > pad) continue;
     std::array<Circle, 5> circles;
-    const int count = collision_circles(other, *character_, t, circles);
+    const int count = them_at.collision_circles(*character_, t, circles);
     Gap gap;
     for (int i = 0; i < count; ++i)
       for (int m = 0; m < now.count; ++m) gap.add(now.circles[m], circles[i], pad);

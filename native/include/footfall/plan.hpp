@@ -96,4 +96,20 @@ std::vector<Circle> collision_circles(const AgentPlan& plan, const CharacterPara
 int collision_circles(const AgentPlan& plan, const CharacterParams& character, double t,
                       std::array<Circle, 5>& out);
 
+/// com_at and collision_circles of one plan at times that never decrease (a
+/// check walking through its instants), the same to the bit: each step under
+/// way is found from the last, not searched for again.
+class PlanWalk {
+ public:
+  explicit PlanWalk(const AgentPlan& plan) : plan_(&plan) {}
+  ComSample com_at(double t);
+  int collision_circles(const CharacterParams& character, double t, std::array<Circle, 5>& out);
+
+ private:
+  /// The step under way at t, as com_at(plan, t) finds it.
+  int step(double t);
+  const AgentPlan* plan_;
+  int step_ = -1;  ///< None yet.
+};
+
 }  // namespace footfall
