@@ -117,25 +117,66 @@ std::vector<Vec2> trace(const std::vector<Corner>& corners, const std::vector<To
   return points;
 }
 
-/// The first portal end (2 i for portal i's left, 2 i + 1 for its right)
-/// that the path passes nearer than `radius` or on the wrong side. Where a
-/// corner ends the portal, the path crosses it on that corner's arc, which
-/// the fan test keeps in the channel; elsewhere it crosses on one tangent.
-std::optional<std::size_t> first_missed_end(const std::vector<Portal>& portals, double radius,
+/// True if the segments [a, b] and [c, d] cross at a point inside both.
+bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double c_side = cross(b - a, c - a), d_side = cross(b - a, d - a);
+  const double a_side = cross(d - c, a - c), b_side = cross(d - c, b - c);
+  return ((c_side > 0 && d_side < 0) || (c_side < 0 && d_side > 0)) &&
+         ((a_side > 0 && b_side < 0) || (a_side < 0 && b_side > 0));
+}
+
+/// The tangent (from corner j to corner j + 1) on which the path crosses
+/// `portal`, which lies between corners k and k + 1; none if it crosses on
+/// an arc. Where neither corner ends the portal, that is tangent k. A corner
+/// that ends it is taken to cross it on its arc; with `strict_ends`, only
+/// if no tangent beside it crosses the portal (a corner ending a fan of
+/// portals may leave the last of them, or meet the first, on a tangent).
+std::optional<std::size_t> crossing_tangent(const Portal& portal,
                                             const std::vector<Corner>& corners,
-                                            const std::vector<Touch>& touches) {
+                                            const std::vector<Touch>& touches, std::size_t k,
+                                            bool strict_ends) {
+  auto ends = [&](const Corner& c) {
+    return (c.side > 0 && c.center == portal.left) || (c.side < 0 && c.center == portal.right);
+  };
+  const bool at_this = ends(corners[k]), at_next = ends(corners[k + 1]);
+  if (!at_this && !at_next) return k;
+  if (!strict_ends) return std::nullopt;
+  auto crosses = [&](std::size_t j) {
+    return segments_cross(touches[j].out, touches[j + 1].in, portal.left, portal.right);
+  };
+  if (crosses(k)) return k;
+  if (at_this && k > 0 && crosses(k - 1)) return k - 1;
+  if (at_next && k + 2 < corners.size() && crosses(k + 1)) return k + 1;
+  return std::nullopt;
+}
+
+/// A portal end the path passes nearer than `radius` or on the wrong side:
+/// 2 i for portal i's left, 2 i + 1 for its right, and the index in the
+/// corners where it belongs (after the tangent that passed it).
+struct MissedEnd {
+  std::size_t end;
+  std::size_t at;
+};
+
+/// The first portal end that the path passes nearer than `radius` or on the
+/// wrong side, checked on the tangent that crosses its portal
+/// (crossing_tangent).
+std::optional<MissedEnd> first_missed_end(const std::vector<Portal>& portals, double radius,
+                                          const std::vector<Corner>& corners,
+                                          const std::vector<Touch>& touches, bool strict_ends) {
   std::size_t k = 0;  // corners[k] is the last corner at or before the portal
   for (std::size_t i = 0; i < portals.size(); ++i) {
     while (k + 2 < corners.size() && corners[k + 1].portal <= static_cast<int>(i)) ++k;
-    auto is_corner = [&](const Corner& c) {
-      return (c.side > 0 && c.center == portals[i].left) ||
-             (c.side < 0 && c.center == portals[i].right);
-    };
-    if (is_corner(corners[k]) || is_corner(corners[k + 1])) continue;
-    for (int side : {+1, -1})
-      if (!passes_end(side > 0 ? portals[i].left : portals[i].right, side, touches[k].out,
-                      touches[k + 1].in, radius))
-        return 2 * i + (side > 0 ? 0 : 1);
+    const std::optional<std::size_t> j =
+        crossing_tangent(portals[i], corners, touches, k, strict_ends);
+    if (!j) continue;
+    for (int side : {+1, -1}) {
+      const Vec2 end = side > 0 ? portals[i].left : portals[i].right;
+      auto is_end = [&](const Corner& c) { return c.side == side && c.center == end; };
+      if (is_end(corners[*j]) || is_end(corners[*j + 1])) continue;
+      if (!passes_end(end, side, touches[*j].out, touches[*j + 1].in, radius))
+        return MissedEnd{2 * i + (side > 0 ? 0 : 1), *j + 1};
+    }
   }
   return std::nullopt;
 }
@@ -331,7 +372,7 @@ std::vector<Corner> shortest_corners(Vec2 start, Vec2 goal, const std::vector<Po
 }  // namespace
 
 FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, double radius,
-                  double tolerance) {
+                  double tolerance, bool strict_ends) {
   FunnelPath result;
   const int n = static_cast<int>(portals.size());
   auto left_of = [&](int i) {
@@ -407,13 +448,16 @@ FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, dou
       ok = false;
       break;
     }
-    if (const std::optional<std::size_t> missing =
-            first_missed_end(portals, radius, corners, touches)) {
-      const Corner end = *missing % 2 == 0 ? left_of(static_cast<int>(*missing / 2))
-                                           : right_of(static_cast<int>(*missing / 2));
-      const auto after = std::find_if(corners.begin(), corners.end(),
-                                      [&](const Corner& c) { return c.portal > end.portal; });
-      corners.insert(after, end);
+    if (const std::optional<MissedEnd> missing =
+            first_missed_end(portals, radius, corners, touches, strict_ends)) {
+      const int i = static_cast<int>(missing->end / 2);
+      // Corners stay in portal order: one that ends portal i and passed
+      // the end on its way in or out now counts as wrapped at portal i.
+      for (std::size_t c = 0; c < corners.size(); ++c)
+        corners[c].portal =
+            c < missing->at ? std::min(corners[c].portal, i) : std::max(corners[c].portal, i);
+      corners.insert(corners.begin() + static_cast<long>(missing->at),
+                     missing->end % 2 == 0 ? left_of(i) : right_of(i));
       continue;
     }
     if (const std::optional<std::size_t> loose =

@@ -25,7 +25,14 @@ struct FunnelPath {
 /// wraps around portal ends at `radius`: tangent segments joined by arcs.
 /// Arcs are sampled on the circumscribed polygon, so no chord comes nearer
 /// than `radius` to its corner and no vertex farther than `radius + tolerance`.
+/// A corner that ends a portal is taken to cross it on its arc; with
+/// `strict_ends`, the portal's other end is also checked against a tangent
+/// beside the corner that crosses the portal (the arc can stop short of the
+/// last portals of the corner's fan). That is the exact rule, but it can
+/// enforce corners the lenient one lets slip that then clash with corners
+/// across the path, leaving long channels to the slow exact fallback: it is
+/// for a channel the lenient rule fails.
 FunnelPath funnel(Vec2 start, Vec2 goal, const std::vector<Portal>& portals, double radius,
-                  double tolerance);
+                  double tolerance, bool strict_ends = false);
 
 }  // namespace footfall

@@ -612,9 +612,10 @@ ChannelOutcome clear_path(const NavMeshState& mesh, const PathQuery& q, const Ch
   std::vector<ExtraCorner> extra;
   double tolerance = q.arc_tolerance;
   const double across = distance(mesh.min_corner, mesh.max_corner) + 2 * q.radius;
-  for (int pass = 0; pass <= kMaxExtraCorners; ++pass) {
-    FunnelPath path =
-        funnel(q.from, q.to, portals_with(channel, extra, across), q.radius, tolerance);
+  bool strict_ends = false;  // the funnel's exact end check (channel_funnel.hpp)
+  for (int pass = 0; pass <= kMaxExtraCorners + 1; ++pass) {
+    FunnelPath path = funnel(q.from, q.to, portals_with(channel, extra, across), q.radius,
+                             tolerance, strict_ends);
     if (!path.ok) return ChannelOutcome::kMisjudged;
     if (polyline_length(path.points) >= give_up_length)
       return extra.empty() ? ChannelOutcome::kLonger : ChannelOutcome::kMisjudged;
@@ -643,7 +644,15 @@ ChannelOutcome clear_path(const NavMeshState& mesh, const PathQuery& q, const Ch
     const Vec2 candidates[3] = {near.edge_from, near.edge_to, near.point};
     const Vec2* corner = std::find_if(std::begin(candidates), std::end(candidates),
                                       [&](Vec2 p) { return !known(p); });
-    if (corner == std::end(candidates)) return ChannelOutcome::kMisjudged;  // no progress
+    if (corner == std::end(candidates)) {
+      // No progress: the funnel took a corner ending a portal to cross it
+      // on its arc where a tangent crosses it, and passed the portal's other
+      // end there (the obstacle met is that end). Once more with the exact
+      // check; else the channel is given up.
+      if (strict_ends) return ChannelOutcome::kMisjudged;
+      strict_ends = true;
+      continue;
+    }
     extra.push_back({face_index(channel, *corner), pinch.along, *corner, left, pinch.heading});
   }
   return ChannelOutcome::kMisjudged;
