@@ -645,10 +645,11 @@ ChannelOutcome clear_path(const NavMeshState& mesh, const PathQuery& q, const Ch
     const Vec2* corner = std::find_if(std::begin(candidates), std::end(candidates),
                                       [&](Vec2 p) { return !known(p); });
     if (corner == std::end(candidates)) {
-      // No progress: the funnel took a corner ending a portal to cross it
-      // on its arc where a tangent crosses it, and passed the portal's other
-      // end there (the obstacle met is that end). Once more with the exact
-      // check; else the channel is given up.
+      // No progress. The funnel's lenient end check can cause this: it takes
+      // a corner that ends a portal to cross it on its arc where a tangent
+      // crosses it, and so never checks the portal's other end, which is the
+      // obstacle met again. Once more with the exact check; if that makes no
+      // progress either, the channel is given up.
       if (strict_ends) return ChannelOutcome::kMisjudged;
       strict_ends = true;
       continue;
