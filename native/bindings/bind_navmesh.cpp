@@ -62,6 +62,8 @@ void bind_navmesh(py::module_& m) {
            py::arg("limit") = std::numeric_limits<double>::infinity(),
            "Distance from the segment a-b to the nearest obstacle, up to limit [m]; 0 if it "
            "crosses an obstacle or leaves the domain.")
+      .def("line_of_sight", &NavMesh::line_of_sight, py::arg("a"), py::arg("b"),
+           "True if the segment a-b stays in the walkable domain and crosses no obstacle.")
       .def(
           "triangles",
           [](const NavMesh& mesh) {

@@ -433,6 +433,22 @@ double NavMesh::clearance_between(Vec2 a, Vec2 b, double limit) const {
   return obstacle_distance(m, f, a, b, limit);
 }
 
+bool NavMesh::line_of_sight(Vec2 a, Vec2 b) const { return lines_of_sight(a, {b}).front() != 0; }
+
+std::vector<char> NavMesh::lines_of_sight(Vec2 from, const std::vector<Vec2>& to) const {
+  constexpr double kTouch = 1e-9;  // [m]
+  const NavMeshState& m = *impl_;
+  if (!in_world(from) || !std::all_of(to.begin(), to.end(), [](Vec2 p) { return in_world(p); }))
+    throw std::invalid_argument("line_of_sight: points are not finite");
+  std::vector<char> seen(to.size(), 0);
+  if (!m.in_domain(from)) return seen;
+  const Face f = m.cdt.locate(to_point(from), m.hints.near(to_point(from)));
+  if (!m.walkable(f)) return seen;
+  for (std::size_t k = 0; k < to.size(); ++k)
+    seen[k] = m.in_domain(to[k]) && footfall::line_of_sight(m, f, from, to[k], kTouch);
+  return seen;
+}
+
 std::vector<NavTriangle> NavMesh::triangles() const {
   const NavMeshState& m = *impl_;
   std::vector<NavTriangle> out;

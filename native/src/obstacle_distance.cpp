@@ -92,6 +92,42 @@ double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, d
   return best;
 }
 
+bool line_of_sight(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, double room) {
+  const Point pa = to_point(a), pb = to_point(b);
+  const auto near = [&](Vertex v) { return distance_to_segment(to_vec(v->point()), a, b) < room; };
+  const auto side = [&](Vertex v) { return CGAL::orientation(pa, pb, v->point()); };
+  // Edge i of f runs from c = vertex(ccw(i)) to d = vertex(cw(i)), f on its
+  // left; the segment leaves f there if c is right of the line a->b, d left
+  // of it, and b beyond the edge. Every vertex met is first checked to be
+  // `room` off the segment, so none lies on it.
+  const auto beyond = [&](Face f, int i) {
+    return CGAL::orientation(f->vertex(Cdt::ccw(i))->point(), f->vertex(Cdt::cw(i))->point(),
+                             pb) == CGAL::RIGHT_TURN;
+  };
+  Face f = start;
+  for (int i = 0; i < 3; ++i)
+    if (near(f->vertex(i))) return false;
+  int exit = 0;
+  while (exit < 3 && !(side(f->vertex(Cdt::ccw(exit))) == CGAL::RIGHT_TURN &&
+                       side(f->vertex(Cdt::cw(exit))) == CGAL::LEFT_TURN && beyond(f, exit)))
+    ++exit;
+  for (;;) {
+    if (exit == 3) return true;  // b lies in f
+    if (f->is_constrained(exit)) return false;
+    const Face next = f->neighbor(exit);
+    if (mesh.cdt.is_infinite(next)) return false;
+    const int entry = next->index(f);
+    f = next;
+    // Entered across the edge from vertex(ccw(entry)), left of the line, to
+    // vertex(cw(entry)), right of it; the far vertex's side picks which of the
+    // other two edges the line crosses (on the line, it lies beyond b).
+    const Vertex far = f->vertex(entry);
+    if (near(far)) return false;
+    const int crossed = side(far) == CGAL::LEFT_TURN ? Cdt::ccw(entry) : Cdt::cw(entry);
+    exit = beyond(f, crossed) ? crossed : 3;
+  }
+}
+
 bool portal_covered(Face f, int edge, double radius) {
   if (radius <= 0) return false;  // a point crosses between the ends
   const Vec2 a = to_vec(f->vertex(Cdt::ccw(edge))->point());

@@ -26,6 +26,14 @@ double obstacle_distance(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b,
                          double limit = std::numeric_limits<double>::infinity(),
                          NearestObstacle* nearest = nullptr);
 
+/// True if the segment [a, b] crosses no constrained edge and passes no vertex
+/// nearer than `room` (every vertex is on an obstacle): a line of sight.
+/// `start` is a walkable face that contains `a`. It walks only the faces the
+/// segment crosses, so for `a` and `b` farther than `room` from every
+/// obstacle it answers obstacle_distance(mesh, start, a, b, room) >= room at
+/// a fraction of the cost (an agent's eyes are never that near one).
+bool line_of_sight(const NavMeshState& mesh, Face start, Vec2 a, Vec2 b, double room);
+
 /// Width of the passage around corner `corner` of walkable face `f`: the
 /// distance from that corner to the nearest obstacle seen across the opposite
 /// edge (within the corner's angle), capped by the two edges beside the corner.

@@ -144,6 +144,55 @@ TEST(NavMesh, ClearanceBetweenTwoPointsSeesPastAndThroughObstacles) {
   EXPECT_NEAR(mesh.clearance_between({1, 7}, {9, 7}, 0.25), 0.25, 1e-12);  // up to the limit
 }
 
+TEST(NavMesh, LineOfSightStopsAtAnythingItTouches) {
+  NavMesh mesh({0, 0}, {10, 10});
+  mesh.add_polygon(box({4, 4}, {6, 6}));
+  mesh.add_polygon({{1, 1}, {3, 1}});  // a wall
+  mesh.add_point({8, 2});
+  EXPECT_TRUE(mesh.line_of_sight({1, 7}, {9, 7}));               // past the box
+  EXPECT_TRUE(mesh.line_of_sight({1, 6 + 1e-6}, {9, 6 + 1e-6}));  // a micrometre clear
+  EXPECT_FALSE(mesh.line_of_sight({1, 6}, {9, 6}));               // along its side
+  EXPECT_FALSE(mesh.line_of_sight({1, 3}, {7, 9}));               // through its corner (4, 6)
+  EXPECT_FALSE(mesh.line_of_sight({1, 5}, {9, 5}));               // through it
+  EXPECT_FALSE(mesh.line_of_sight({5, 5}, {9, 5}));               // from inside it
+  EXPECT_FALSE(mesh.line_of_sight({2, 0.5}, {2, 1.5}));           // across the wall
+  EXPECT_FALSE(mesh.line_of_sight({7, 1}, {9, 3}));               // through the point
+  EXPECT_FALSE(mesh.line_of_sight({1, 7}, {11, 7}));              // out of the domain
+  EXPECT_TRUE(mesh.line_of_sight({1, 7}, {1, 7}));                // a point in the open
+  EXPECT_EQ(mesh.lines_of_sight({1, 7}, {{9, 7}, {9, 5}, {11, 7}}), (std::vector<char>{1, 0, 0}));
+}
+
+// The walk along the segment answers as the distance walk does, for ends
+// clear of every obstacle (as an agent's eyes are).
+TEST(NavMesh, LineOfSightAgreesWithTheClearanceOfTheSegment) {
+  const bench::BoxScene scene = bench::box_scene(700, 80.0, 7);
+  const auto mesh = bench::build(scene);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> coordinate(0.0, 80.0), offset(-10.0, 10.0);
+  const auto free_point = [&](Vec2 near) {
+    for (;;) {
+      const Vec2 p = near + Vec2{offset(rng), offset(rng)};
+      if (mesh->clearance(p) > 1e-6) return p;
+    }
+  };
+  int seen = 0, hidden = 0;
+  for (int k = 0; k < 400; ++k) {
+    const Vec2 eye = free_point({coordinate(rng), coordinate(rng)});
+    std::vector<Vec2> others;
+    for (int j = 0; j < 10; ++j) others.push_back(free_point(eye));
+    const std::vector<char> in_sight = mesh->lines_of_sight(eye, others);
+    for (int j = 0; j < 10; ++j) {
+      const bool clear = mesh->clearance_between(eye, others[j], 1e-9) >= 1e-9;
+      ASSERT_EQ(in_sight[j] != 0, clear) << "from " << eye.x << "," << eye.y << " to "
+                                         << others[j].x << "," << others[j].y;
+      ASSERT_EQ(mesh->line_of_sight(eye, others[j]), clear);
+      (clear ? seen : hidden) += 1;
+    }
+  }
+  EXPECT_GT(seen, 500);  // both answers come up often
+  EXPECT_GT(hidden, 500);
+}
+
 TEST(NavMesh, BadInputIsNamed) {
   NavMesh mesh({0, 0}, {10, 10});
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -160,6 +209,7 @@ TEST(NavMesh, BadInputIsNamed) {
   EXPECT_THROW(path(mesh, {1, 1}, {2, 2}, -0.1), std::invalid_argument);
   EXPECT_THROW(path(mesh, {1, 1}, {2, 2}, nan), std::invalid_argument);
   EXPECT_THROW(mesh.remove(42), std::out_of_range);
+  EXPECT_THROW(mesh.line_of_sight({1, 1}, {nan, 2}), std::invalid_argument);
   EXPECT_THROW(NavMesh({0, 0}, {0, 10}), std::invalid_argument);
   EXPECT_THROW(NavMesh({0, 0}, {nan, 10}), std::invalid_argument);
   EXPECT_EQ(mesh.triangle_count(), 2u);  // nothing half-added

@@ -102,6 +102,13 @@ class NavMesh {
   /// sight test); 0 when the segment crosses an obstacle or leaves the domain. [m]
   double clearance_between(Vec2 a, Vec2 b,
                            double limit = std::numeric_limits<double>::infinity()) const;
+  /// True if the segment [a, b] lies in the walkable domain and crosses no
+  /// obstacle, passing none nearer than 1e-9 m: the line of sight. For points
+  /// that far from every obstacle, clearance_between(a, b, 1e-9) >= 1e-9,
+  /// found by walking only the triangles the segment crosses.
+  bool line_of_sight(Vec2 a, Vec2 b) const;
+  /// line_of_sight(from, p) for every p of `to` (`from` is located once).
+  std::vector<char> lines_of_sight(Vec2 from, const std::vector<Vec2>& to) const;
 
   /// Every finite triangle, for drawing.
   std::vector<NavTriangle> triangles() const;
