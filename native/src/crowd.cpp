@@ -543,9 +543,12 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
   p.trial = detail::Trial(std::move(plan), from, planner.character());
   // A new place to rest needs room among everyone, seen or not.
   p.new_place = !p.leaving && distance(p.rested.com, rest_of(w).com) > kSamePlace;
-  for (const std::size_t j : p.close) {
+  for (const std::size_t j : p.close)
     p.hits.push_back(p.trial.touches(walkers[j].plan, walkers[j].bounds));
-    p.no_room.push_back(p.new_place && !planner.stands_clear(p.rested, {obstacle_of(walkers[j])}));
+  p.no_room.assign(p.close.size(), 0);
+  if (p.new_place) {
+    const std::vector<char> clear = planner.stands_clear_of_each(p.rested, plans_of(walkers, p.close));
+    for (std::size_t c = 0; c < clear.size(); ++c) p.no_room[c] = !clear[c];
   }
   return p;
 }

@@ -111,6 +111,63 @@ detail::SampledAgents& sampled(const MovingObstacles& others, const CharacterPar
   return samples;
 }
 
+// A character standing at a state, checked against other agents' plans from
+// the state's time on, with room to turn on the spot, as room_to_turn() asks
+// of static obstacles: two agents resting face to face a few centimetres
+// apart could never step again, every turn swinging a shoulder into the other.
+class StandingCheck {
+ public:
+  StandingCheck(const FootstepState& state, const CharacterParams& character)
+      : com_(state.com),
+        mine_{Circle{state.com, 0.5 * character.torso_width},
+              Circle{state.feet[0], character.foot_radius},
+              Circle{state.feet[1], character.foot_radius}},
+        first_(first_contact_instant(state.time)) {
+    extent_ = mine_.front().radius + kRestRoom;
+    for (const Circle& circle : mine_)
+      extent_ = std::max(extent_, distance(circle.center, com_) + circle.radius);
+  }
+
+  // True if it touches agent j of `others` (sampled from the state's time).
+  bool touches(detail::SampledAgents& others, std::size_t j) const {
+    // After its plan ends, the other stands too: the first instant from then
+    // on is the last that can differ.
+    const long last = std::max(first_, first_contact_instant(others.plan(j).end_time()));
+    const double span = static_cast<double>(last - first_) * kContactDt;
+    const PlanBounds::From& bounds = others.bounds(j);
+    const double near = extent_ + bounds.reach + 0.5 * bounds.top_speed * kContactDt;
+    if (squared_distance(bounds.com_box, {com_, com_}) > near * near) return false;
+    if (distance(others.at(j, first_).com, com_) > near + bounds.top_speed * span) return false;
+    double start_gap = std::numeric_limits<double>::infinity();  // see touching()
+    for (long k = first_; k <= last; ++k) {
+      const detail::AgentWhere& them = others.at(j, k);
+      if (!them.present) break;  // gone for good
+      if (distance(them.com, com_) > near) continue;
+      const detail::AgentShape& shape = others.shape(j, k);
+      const double pad = 0.5 * them.speed * kContactDt;
+      if (k != first_ && distance(them.com, com_) - extent_ - shape.extent - pad > 0.0) continue;
+      // Room kept from those standing still (the torso disc only).
+      const double room = standing_still(0.0, them.speed) ? kRestRoom : 0.0;
+      Gap gap;
+      for (int i = 0; i < shape.count; ++i)
+        for (std::size_t m = 0; m < mine_.size(); ++m) {
+          Circle circle = mine_[m];
+          if (m == 0) circle.radius += room;
+          gap.add(circle, shape.circles[i], pad);
+        }
+      if (k == first_ && standing_still(0.0, them.speed)) start_gap = gap.outright;
+      if (touching(gap, start_gap)) return true;
+    }
+    return false;
+  }
+
+ private:
+  Vec2 com_;
+  std::array<Circle, 3> mine_;  // the torso disc and the feet
+  double extent_ = 0.0;         // how far they reach from the COM, room included
+  long first_ = 0;
+};
+
 }  // namespace
 
 struct FootstepPlanner::TabledAction {
@@ -316,16 +373,18 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
   // character stood: it stood still there, whatever speed the step sets off at.
   const bool stood_at_first =
       from_standing && std::fabs(static_cast<double>(first) * kContactDt - step.start_time) < 1e-9;
-  // True if the character touches agent j at instant k; the first instant
+  // True if the character touches agent j at instant k, if j counts then
+  // (up to `counted_until`; its circles reach `reach`); the first instant
   // sets `start_gap` (see touching()), which the later ones need.
-  const auto touches_at = [&](std::size_t j, long k, double& start_gap) {
-    if (!others.counts(j, k)) return false;
-    const Instant& me = instant(k);
+  const auto touches_at = [&](std::size_t j, long k, double counted_until, double reach,
+                              double& start_gap) {
     const detail::AgentWhere& them = others.at(j, k);
+    if (!them.present || static_cast<double>(k) * kContactDt > counted_until) return false;
+    const Instant& me = instant(k);
     // Both move between instants: the circles are grown by half the travel.
     const double pad = 0.5 * (me.speed + them.speed) * kContactDt;
     const Vec2 between = me.com - them.com;
-    const double near = me.extent + others.bounds(j).reach + pad;
+    const double near = me.extent + reach + pad;
     if (dot(between, between) > near * near) return false;
     const detail::AgentShape& shape = others.shape(j, k);
     // Too far apart for any pair of circles to come within the padding; at
@@ -345,13 +404,15 @@ bool FootstepPlanner::touches_agents(const Footstep& step, detail::SampledAgents
     return touching(gap, start_gap);
   };
   // After the first instant, the last: a step turned down mostly walks into
-  // someone as it ends (the one ahead in a queue).
+  // someone as it ends (the one ahead in a queue). Then those between. (One
+  // call in one loop, which the compiler inlines.)
   const auto touches = [&](std::size_t j) {
+    const double until = others.counted_until(j), reach = others.bounds(j).reach;
     double start_gap = std::numeric_limits<double>::infinity();
-    if (touches_at(j, first, start_gap)) return true;
-    if (last > first && touches_at(j, last, start_gap)) return true;
-    for (long k = first + 1; k < last; ++k)
-      if (touches_at(j, k, start_gap)) return true;
+    for (long n = 0; n <= last - first; ++n) {
+      const long k = n == 0 ? first : n == 1 ? last : first + n - 1;
+      if (touches_at(j, k, until, reach, start_gap)) return true;
+    }
     return false;
   };
   // The agent that turned down the last step checked is tried first: a
@@ -398,57 +459,26 @@ bool FootstepPlanner::stands_clear(const FootstepState& state,
 
 bool FootstepPlanner::stands_clear(const FootstepState& state,
                                    detail::SampledAgents& others) const {
-  // Room to turn on the spot, as room_to_turn() asks of static obstacles:
-  // two agents resting face to face a few centimetres apart could never
-  // step again, every turn swinging a shoulder into the other.
-  const std::array<Circle, 3> mine{Circle{state.com, 0.5 * character_.torso_width},
-                                   Circle{state.feet[0], character_.foot_radius},
-                                   Circle{state.feet[1], character_.foot_radius}};
-  double extent = mine.front().radius + kRestRoom;
-  for (const Circle& circle : mine)
-    extent = std::max(extent, distance(circle.center, state.com) + circle.radius);
-  const long first = first_contact_instant(state.time);
-  const auto touches = [&](std::size_t j) {
-    // After its plan ends, the other stands too: the first instant from then
-    // on is the last that can differ.
-    const long last = std::max(first, first_contact_instant(others.plan(j).end_time()));
-    const double span = static_cast<double>(last - first) * kContactDt;
-    const PlanBounds::From& bounds = others.bounds(j);
-    const double near = extent + bounds.reach + 0.5 * bounds.top_speed * kContactDt;
-    if (squared_distance(bounds.com_box, {state.com, state.com}) > near * near) return false;
-    if (distance(others.at(j, first).com, state.com) > near + bounds.top_speed * span) return false;
-    double start_gap = std::numeric_limits<double>::infinity();  // see touching()
-    for (long k = first; k <= last; ++k) {
-      const detail::AgentWhere& them = others.at(j, k);
-      if (!them.present) break;  // gone for good
-      if (distance(them.com, state.com) > near) continue;
-      const detail::AgentShape& shape = others.shape(j, k);
-      const double pad = 0.5 * them.speed * kContactDt;
-      if (k != first && distance(them.com, state.com) - extent - shape.extent - pad > 0.0) continue;
-      // Room kept from those standing still (the torso disc only).
-      const double room = standing_still(0.0, them.speed) ? kRestRoom : 0.0;
-      Gap gap;
-      for (int i = 0; i < shape.count; ++i)
-        for (std::size_t m = 0; m < mine.size(); ++m) {
-          Circle circle = mine[m];
-          if (m == 0) circle.radius += room;
-          gap.add(circle, shape.circles[i], pad);
-        }
-      if (k == first && standing_still(0.0, them.speed)) start_gap = gap.outright;
-      if (touching(gap, start_gap)) return true;
-    }
-    return false;
-  };
+  const StandingCheck check(state, character_);
   // As in touches_agents: the agent that turned down the last check first.
   const std::size_t blocker = others.blocker();
-  if (blocker < others.size() && touches(blocker)) return false;
+  if (blocker < others.size() && check.touches(others, blocker)) return false;
   for (std::size_t j = 0; j < others.size(); ++j) {
-    if (j != blocker && touches(j)) {
+    if (j != blocker && check.touches(others, j)) {
       others.turned_down_by(j);
       return false;
     }
   }
   return true;
+}
+
+std::vector<char> FootstepPlanner::stands_clear_of_each(const FootstepState& state,
+                                                        const MovingObstacles& others) const {
+  detail::SampledAgents& samples = sampled(others, character_, state.time);
+  const StandingCheck check(state, character_);
+  std::vector<char> clear(others.size());
+  for (std::size_t j = 0; j < others.size(); ++j) clear[j] = !check.touches(samples, j);
+  return clear;
 }
 
 bool FootstepPlanner::rests_well(const FootstepState& state, detail::SampledAgents& others,

@@ -75,13 +75,12 @@ class SampledAgents {
   /// Walking others are taken to stand where their plans end for `grace`
   /// only (infinity: for good): their rests are provisional.
   void set_rest_grace(double grace) { rest_grace_ = grace; }
-  /// True if agent j counts at instant k: present, and not past the grace
-  /// of a walking agent's rest.
-  bool counts(std::size_t j, long k) {
-    if (!at(j, k).present) return false;
+  /// Agent j counts at the instants up to this time, while present: those
+  /// past the grace of a walking agent's rest do not. [s]
+  double counted_until(std::size_t j) {
     if (rest_grace_ == std::numeric_limits<double>::infinity() || bounds(j).top_speed == 0.0)
-      return true;
-    return static_cast<double>(k) * kContactDt <= plan(j).end_time() + rest_grace_;
+      return std::numeric_limits<double>::infinity();
+    return plan(j).end_time() + rest_grace_;
   }
 
  private:

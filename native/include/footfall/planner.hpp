@@ -140,6 +140,10 @@ class FootstepPlanner {
   /// 0.1 m against those standing still. A rest complete among `others`
   /// (come_to_rest) stands clear of them.
   bool stands_clear(const FootstepState& state, const MovingObstacles& others) const;
+  /// For each agent of `others`, stands_clear(state, {that agent}): 1 if the
+  /// character keeps clear of that agent's plan alone, 0 if not.
+  std::vector<char> stands_clear_of_each(const FootstepState& state,
+                                         const MovingObstacles& others) const;
   /// True if a character standing with its COM at `com` could turn on the
   /// spot: no static obstacle within half the torso width.
   bool room_to_turn(Vec2 com) const;
