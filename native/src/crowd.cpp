@@ -197,14 +197,17 @@ struct Snapshot {
   std::vector<char> present;
 };
 
-Snapshot snapshot(const std::vector<Walker>& walkers, double t, Workers& workers) {
+/// The snapshot at time t of the agents whose plans `walks` read (one each,
+/// kept from tick to tick: the step under way is found from the last tick's).
+Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& walks, double t,
+                  Workers& workers) {
   Snapshot s{t, std::vector<Vec2>(walkers.size()), std::vector<char>(walkers.size())};
   // Shared out among the threads in parts of kPart agents: otherwise the
   // largest step of a tick outside its searches (the 500 among boxes).
   constexpr std::size_t kPart = 64;
   workers.run((walkers.size() + kPart - 1) / kPart, [&](std::size_t part) {
     for (std::size_t j = part * kPart; j < std::min(walkers.size(), (part + 1) * kPart); ++j) {
-      s.com[j] = com_at(walkers[j].plan, t).position;
+      s.com[j] = walks[j].com_at(t).position;
       s.present[j] = present_at(walkers[j].plan, t);
     }
   });
@@ -681,6 +684,8 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     w.state = w.plan.start;
     w.bounds = PlanBounds(w.plan, planner.character());
   }
+  std::vector<PlanWalk> walks;
+  for (const Walker& w : walkers) walks.emplace_back(w.plan);
   Workers workers(control.threads);
   double reported = 0.0;
   auto last_report = std::chrono::steady_clock::now();
@@ -704,7 +709,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     // A plan that has run into its rest starts again from where that leaves it.
     for (std::size_t i : due)
       if (walkers[i].state.time < t) rest_until(walkers[i], planner, t);
-    const Snapshot at_tick = snapshot(walkers, t, workers);
+    const Snapshot at_tick = snapshot(walkers, walks, t, workers);
     std::vector<Attempt> attempts(due.size());
     std::vector<char> idle(due.size());
     for (std::size_t k = 0; k < due.size(); ++k) idle[k] = nothing_new(walkers, due[k], at_tick);

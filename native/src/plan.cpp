@@ -264,9 +264,12 @@ int collision_circles(const AgentPlan& plan, const CharacterParams& character, d
 
 int PlanWalk::step(double t) {
   // As step_index: the last step that started at or before t (or the first);
-  // searched for the first time only.
+  // searched for only when the last one found cannot lead to it. Steps are
+  // in the order of their start times, so from one that started at or before
+  // t the answer lies ahead.
   const auto& steps = plan_->footsteps;
-  if (step_ < 0) return step_ = step_index(*plan_, t);
+  if (step_ < 0 || step_ >= static_cast<int>(steps.size()) || steps[step_].start_time > t)
+    return step_ = step_index(*plan_, t);
   while (step_ + 1 < static_cast<int>(steps.size()) && steps[step_ + 1].start_time <= t) ++step_;
   return step_;
 }

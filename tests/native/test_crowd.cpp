@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -177,6 +179,33 @@ TEST(Crowd, PlanBoundsHoldWhatTheyBound) {
             << agent.name << " at " << t << " s, from " << from << " s";
       }
     }
+  }
+}
+
+// A walk through a plan answers as com_at and collision_circles do, to the
+// bit, in any order of times and after the plan is cut short and walks on.
+TEST(Crowd, PlanWalkAnswersAsTheSearchOverTheWholePlan) {
+  const Plan plan = plan_scenario(egress_scenario(12, 1));
+  const CharacterParams& character = plan.character;
+  std::mt19937 rng(4);
+  for (AgentPlan agent : plan.agents) {
+    PlanWalk walk(agent);
+    const auto same = [&](double t) {
+      std::array<Circle, 5> walked, searched;
+      const int count = walk.collision_circles(character, t, walked);
+      ASSERT_EQ(count, collision_circles(agent, character, t, searched)) << agent.name << " " << t;
+      for (int i = 0; i < count; ++i) ASSERT_EQ(walked[i].center, searched[i].center);
+      ASSERT_EQ(walk.com_at(t).position, com_at(agent, t).position) << agent.name << " " << t;
+    };
+    std::uniform_real_distribution<double> any(-1.0, agent.end_time() + 1.0);
+    for (double t = 0.0; t <= agent.end_time() + kTick; t += kTick) same(t);  // growing
+    for (int k = 0; k < 50; ++k) same(any(rng));                               // at random
+    // Cut to its first half while the walk stands at the old end.
+    same(agent.end_time());
+    const std::size_t kept = agent.footsteps.size() / 2;
+    if (kept == 0) continue;
+    agent.footsteps.resize(kept);
+    for (double t = agent.end_time() - 1.0; t <= agent.end_time() + 1.0; t += kTick) same(t);
   }
 }
 

@@ -96,9 +96,10 @@ std::vector<Circle> collision_circles(const AgentPlan& plan, const CharacterPara
 int collision_circles(const AgentPlan& plan, const CharacterParams& character, double t,
                       std::array<Circle, 5>& out);
 
-/// com_at and collision_circles of one plan at times that never decrease (a
-/// check walking through its instants), the same to the bit: each step under
-/// way is found from the last, not searched for again.
+/// com_at and collision_circles of one plan, the same to the bit, for times
+/// that mostly grow (a check walking through its instants, the crowd's
+/// ticks): each step under way is found from the last, not searched for
+/// again. An earlier time, or a plan cut short since, is searched for anew.
 class PlanWalk {
  public:
   explicit PlanWalk(const AgentPlan& plan) : plan_(&plan) {}
