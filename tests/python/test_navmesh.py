@@ -26,6 +26,8 @@ def test_navmesh_updates_and_queries(ff):
     assert result["points"][0] == (1, 5) and result["points"][-1] == (9, 5)
     assert result["min_clearance"] >= 0.5 - 1e-9
     assert mesh.find_path((5, 5), (9, 5), 0.5)["status"] == "start_blocked"
+    assert not mesh.line_of_sight((1, 5), (9, 5)) and mesh.line_of_sight((1, 7), (9, 7))
+    assert mesh.clearance_between((1, 7), (9, 7)) == pytest.approx(1.0)
     assert box in mesh
     mesh.remove(box)
     assert box not in mesh
