@@ -121,6 +121,8 @@ struct Walker {
   const AgentSpec* spec = nullptr;
   AgentPlan plan;        ///< Its steps, ending with `resting` provisional rest steps.
   PlanBounds bounds;     ///< Of `plan`, rebuilt whenever it changes.
+  /// Of `plan`, those its commit check took; dropped whenever it changes.
+  detail::PlanSamples samples;
   FootstepState state;   ///< Where the next search starts: before the rest.
   FootstepState rested;  ///< After the rest.
   std::size_t resting = 0;
@@ -272,7 +274,7 @@ void cut_to_rest(const FootstepPlanner& planner, const FootstepState& start,
 bool wishing(const Walker& w) { return !w.wish.empty(); }
 
 /// Agent `w`'s plan, as others keep clear of it.
-MovingObstacle obstacle_of(const Walker& w) { return {&w.plan, &w.bounds}; }
+MovingObstacle obstacle_of(const Walker& w) { return {&w.plan, &w.bounds, &w.samples}; }
 
 /// The plans of agents `which`.
 MovingObstacles plans_of(const std::vector<Walker>& walkers,
@@ -426,6 +428,7 @@ void rest_until(Walker& w, const FootstepPlanner& planner, double t) {
     if (wait.valid()) {
       w.plan.footsteps.push_back(wait.step);
       w.bounds = PlanBounds(w.plan, planner.character());
+      w.samples = {};
       w.state = wait.state;
     }
   }
@@ -547,7 +550,7 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
   // A new place to rest needs room among everyone, seen or not.
   p.new_place = !p.leaving && distance(p.rested.com, rest_of(w).com) > kSamePlace;
   for (const std::size_t j : p.close)
-    p.hits.push_back(p.trial.touches(walkers[j].plan, walkers[j].bounds));
+    p.hits.push_back(p.trial.touches(walkers[j].plan, walkers[j].bounds, &walkers[j].samples));
   p.no_room.assign(p.close.size(), 0);
   if (p.new_place) {
     const std::vector<char> clear = planner.stands_clear_of_each(p.rested, plans_of(walkers, p.close));
@@ -564,7 +567,7 @@ int refusal(const std::vector<Walker>& walkers, Proposal& p, const std::vector<c
   if (p.trial.plan().footsteps.empty()) return -1;
   for (std::size_t c = 0; c < p.close.size(); ++c) {
     const Walker& other = walkers[p.close[c]];
-    if (changed[p.close[c]] ? p.trial.touches(other.plan, other.bounds) : p.hits[c])
+    if (changed[p.close[c]] ? p.trial.touches(other.plan, other.bounds, &other.samples) : p.hits[c])
       return static_cast<int>(c);
   }
   if (!p.new_place) return -1;
@@ -613,6 +616,7 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a, Propo
                                             kNoticeDistance;
                                    }),
                     w.noticed.end());
+    w.samples = p.trial.take_samples();
     w.plan.footsteps = std::move(p.trial.plan().footsteps);
     w.bounds = std::move(p.trial.bounds());
     w.resting = p.steps.size() - a.steps.size();
@@ -627,6 +631,7 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a, Propo
   if (++w.goal == w.spec->goals.size()) {
     w.plan.status = AgentStatus::kReached;
     w.plan.leaves = w.spec->leave_at_goal;
+    w.samples = {};  // taken before it could leave at its goal
     w.done = true;
     return;
   }

@@ -5,6 +5,7 @@
 
 #include "contact.hpp"
 #include "footfall/plan.hpp"
+#include "plan_samples.hpp"
 
 namespace footfall::detail {
 
@@ -44,9 +45,11 @@ void SampledAgents::grow(long k) {
 }
 
 void SampledAgents::fill(std::size_t j, long k, AgentWhere& where) const {
-  const AgentPlan& plan = *(*others_)[j].plan;
+  const MovingObstacle& other = (*others_)[j];
+  const AgentPlan& plan = *other.plan;
   const double t = static_cast<double>(k) * kContactDt;
-  const ComSample com = com_at(plan, t);
+  const PlanSample* known = other.samples != nullptr ? other.samples->taken(k) : nullptr;
+  const ComSample com = known != nullptr && known->sampled ? known->com : com_at(plan, t);
   where.present = present_at(plan, t);
   where.com = com.position;
   where.speed = length(com.velocity);
@@ -54,9 +57,17 @@ void SampledAgents::fill(std::size_t j, long k, AgentWhere& where) const {
 }
 
 void SampledAgents::fill(std::size_t j, long k, AgentShape& shape) {
-  const AgentPlan& plan = *(*others_)[j].plan;
+  const MovingObstacle& other = (*others_)[j];
   const double t = static_cast<double>(k) * kContactDt;
-  shape.count = collision_circles(plan, *character_, t, shape.circles);
+  const PlanSample* known = other.samples != nullptr ? other.samples->taken(k) : nullptr;
+  if (known != nullptr && known->shaped) {
+    shape.count = known->count;
+    shape.circles = known->circles;
+    shape.extent = known->extent;
+    shape.stamp = stamp_;
+    return;
+  }
+  shape.count = collision_circles(*other.plan, *character_, t, shape.circles);
   const Vec2 com = at(j, k).com;  // row k is held already: `shape` stays where it is
   shape.extent = 0.0;
   for (int i = 0; i < shape.count; ++i) {

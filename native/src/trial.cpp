@@ -12,39 +12,17 @@ Trial::Trial(AgentPlan plan, double from, const CharacterParams& character)
       character_(&character),
       bounds_(plan_, character),
       from_(from),
-      bounds_from_(bounds_.from(from)) {
-  // Every instant it can be sampled at, from `from` to where it stands (at()):
-  // one allocation, not one per doubling while it is checked.
-  instants_.resize(static_cast<std::size_t>(first_contact_instant(plan_.end_time()) + 2 -
-                                            first_contact_instant(from_)));
+      bounds_from_(bounds_.from(from)),
+      samples_(plan_, first_contact_instant(from_)) {}
+
+PlanSamples Trial::take_samples() {
+  // Where it stands after its end: searches check it there most.
+  at(first_contact_instant(plan_.end_time()) + 1, true);
+  return std::move(samples_);
 }
 
-const Trial::Instant& Trial::at(long k, bool shaped) {
-  // After its last step it stands, or is gone, as at the first instant past
-  // its end.
-  const long first = first_contact_instant(from_);
-  const long still = first_contact_instant(plan_.end_time()) + 1;
-  const long held = std::min(k, still);
-  Instant& sample = instants_[static_cast<std::size_t>(held - first)];
-  const double t = static_cast<double>(held) * kContactDt;
-  if (!sample.sampled) {
-    sample.com = com_at(plan_, t);
-    sample.sampled = true;
-  }
-  if (shaped && !sample.shaped) {
-    sample.count = collision_circles(plan_, *character_, t, sample.circles);
-    sample.extent = 0.0;
-    for (int i = 0; i < sample.count; ++i) {
-      const Circle& circle = sample.circles[i];
-      sample.extent =
-          std::max(sample.extent, distance(circle.center, sample.com.position) + circle.radius);
-    }
-    sample.shaped = true;
-  }
-  return sample;
-}
-
-bool Trial::touches(const AgentPlan& other, const PlanBounds& bounds) {
+bool Trial::touches(const AgentPlan& other, const PlanBounds& bounds,
+                    const PlanSamples* samples) {
   const double end = std::max(plan_.end_time(), other.end_time()) + kContactDt;
   // While the pair is far apart, instants they cannot close the distance
   // in are skipped (most of those checked are never near).
@@ -62,7 +40,9 @@ bool Trial::touches(const AgentPlan& other, const PlanBounds& bounds) {
   for (long k = first, next = first;; k = next) {
     const double t = static_cast<double>(k) * kContactDt;
     if (t > end) break;
-    const ComSample me = at(k, false).com, them = them_at.com_at(t);
+    const PlanSample* known = samples != nullptr ? samples->taken(k) : nullptr;
+    const ComSample me = at(k, false).com;
+    const ComSample them = known != nullptr && known->sampled ? known->com : them_at.com_at(t);
     const double between = distance(me.position, them.position);
     next = k + 1;
     if (between > near) {
@@ -70,15 +50,17 @@ bool Trial::touches(const AgentPlan& other, const PlanBounds& bounds) {
       continue;
     }
     const double pad = 0.5 * (length(me.velocity) + length(them.velocity)) * kContactDt;
-    const Instant& now = at(k, true);
+    const PlanSample& now = at(k, true);
     // Out of reach of the trial's circles as they are now (after the first
     // instant: its gap is wanted, see touching()).
     if (k != first && between - now.extent - theirs.reach > pad) continue;
     std::array<Circle, 5> circles;
-    const int count = them_at.collision_circles(*character_, t, circles);
+    const bool shaped = known != nullptr && known->shaped;
+    const int count = shaped ? known->count : them_at.collision_circles(*character_, t, circles);
+    const std::array<Circle, 5>& theirs_now = shaped ? known->circles : circles;
     Gap gap;
     for (int i = 0; i < count; ++i)
-      for (int m = 0; m < now.count; ++m) gap.add(now.circles[m], circles[i], pad);
+      for (int m = 0; m < now.count; ++m) gap.add(now.circles[m], theirs_now[i], pad);
     if (k == first && standing_still(length(me.velocity), length(them.velocity)))
       start_gap = gap.outright;
     if (touching(gap, start_gap)) return true;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "footfall/plan.hpp"
+#include "plan_samples.hpp"
 
 namespace footfall::detail {
 
@@ -23,31 +24,26 @@ class Trial {
   /// The plan and its bounds, non-const for the commit to take them.
   AgentPlan& plan() { return plan_; }
   PlanBounds& bounds() { return bounds_; }
+  /// The samples of the plan the checks took, and where it stands after its
+  /// end, for the commit to keep with the plan: taken before the plan.
+  PlanSamples take_samples();
   /// True if the trial, from its time `from` on, touches `other`, whose
-  /// bounds are `bounds`.
-  bool touches(const AgentPlan& other, const PlanBounds& bounds);
+  /// bounds are `bounds` and whose samples, as far as they were taken, are
+  /// `samples` (may be null).
+  bool touches(const AgentPlan& other, const PlanBounds& bounds, const PlanSamples* samples);
 
  private:
-  /// The trial at one instant of the contact grid.
-  struct Instant {
-    bool sampled = false;
-    ComSample com;
-    bool shaped = false;  ///< The circles below are sampled.
-    int count = 0;
-    std::array<Circle, 5> circles;
-    double extent = 0.0;  ///< How far they reach from the COM. [m]
-  };
   /// The trial at instant k (from `from` on), its circles too if `shaped`:
   /// sampled when first wanted, for it is checked against dozens of plans at
   /// the same instants.
-  const Instant& at(long k, bool shaped);
+  const PlanSample& at(long k, bool shaped) { return samples_.at(plan_, *character_, k, shaped); }
 
   AgentPlan plan_;
   const CharacterParams* character_ = nullptr;
   PlanBounds bounds_;
   double from_ = 0.0;
-  PlanBounds::From bounds_from_;   ///< bounds_.from(from_)
-  std::vector<Instant> instants_;  ///< [k - first_contact_instant(from_)]
+  PlanBounds::From bounds_from_;  ///< bounds_.from(from_)
+  PlanSamples samples_;           ///< From first_contact_instant(from_) on.
 };
 
 }  // namespace footfall::detail

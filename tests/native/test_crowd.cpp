@@ -14,6 +14,8 @@
 #include "footfall/plan_io.hpp"
 #include "footfall/scenes.hpp"
 #include "footfall/steersuite.hpp"
+#include "contact.hpp"
+#include "plan_samples.hpp"
 
 namespace footfall {
 namespace {
@@ -206,6 +208,32 @@ TEST(Crowd, PlanWalkAnswersAsTheSearchOverTheWholePlan) {
     if (kept == 0) continue;
     agent.footsteps.resize(kept);
     for (double t = agent.end_time() - 1.0; t <= agent.end_time() + 1.0; t += kTick) same(t);
+  }
+}
+
+// The samples a commit check keeps with a plan are what sampling the plan
+// gives, to the bit, at every instant from the first on, long after its end
+// too; none before the first.
+TEST(Crowd, PlanSamplesHoldWhatThePlanGives) {
+  const Plan plan = plan_scenario(egress_scenario(12, 1));
+  const CharacterParams& character = plan.character;
+  for (const AgentPlan& agent : plan.agents) {
+    const long first = 10, beyond = static_cast<long>(agent.end_time() / kContactDt) + 40;
+    detail::PlanSamples samples(agent, first);
+    for (long k = first; k <= beyond; ++k) samples.at(agent, character, k, k % 3 != 0);
+    EXPECT_EQ(samples.taken(first - 1), nullptr);
+    for (long k = first; k <= beyond; ++k) {
+      const double t = static_cast<double>(k) * kContactDt;
+      const detail::PlanSample* sample = samples.taken(k);
+      ASSERT_NE(sample, nullptr);
+      ASSERT_TRUE(sample->sampled);
+      EXPECT_EQ(sample->com.position, com_at(agent, t).position) << agent.name << " " << k;
+      EXPECT_EQ(sample->com.velocity, com_at(agent, t).velocity) << agent.name << " " << k;
+      if (!sample->shaped) continue;
+      std::array<Circle, 5> circles;
+      ASSERT_EQ(sample->count, collision_circles(agent, character, t, circles));
+      for (int i = 0; i < sample->count; ++i) EXPECT_EQ(sample->circles[i].center, circles[i].center);
+    }
   }
 }
 

@@ -18,6 +18,7 @@ struct AgentPlan;
 class PlanBounds;
 namespace detail {
 class SampledAgents;
+class PlanSamples;
 }
 
 /// Another agent's plan, which a search keeps clear of as a moving obstacle:
@@ -25,12 +26,16 @@ class SampledAgents;
 /// time (section 4). It is taken to share the planner's character.
 struct MovingObstacle {
   /// Implicit: a list of plans alone is a list of moving obstacles.
-  MovingObstacle(const AgentPlan* its_plan, const PlanBounds* its_bounds = nullptr)
-      : plan(its_plan), bounds(its_bounds) {}
+  MovingObstacle(const AgentPlan* its_plan, const PlanBounds* its_bounds = nullptr,
+                 const detail::PlanSamples* its_samples = nullptr)
+      : plan(its_plan), bounds(its_bounds), samples(its_samples) {}
   const AgentPlan* plan;
   /// Its PlanBounds, when the caller keeps them (a crowd does); null: a
   /// search finds the bounds it needs itself.
   const PlanBounds* bounds;
+  /// Samples of the plan already taken, when the caller keeps them (a crowd
+  /// keeps those of its commit check); null: a search samples it itself.
+  const detail::PlanSamples* samples;
 };
 using MovingObstacles = std::vector<MovingObstacle>;
 
