@@ -159,6 +159,19 @@ TEST(Crowd, AnEgressThroughOneDoorClears) {
             plan_to_json(plan_clear_of_each_other(egress, 2)));
 }
 
+// Two blocks of 100 walking through a hall 8 m wide form lanes by keeping
+// right: without keep_right() they met wall to wall and 36 of 200 reached.
+TEST(Crowd, DenseCounterflowFormsLanes) {
+  RunControl control;
+  control.threads = 2;
+  const Plan plan = plan_scenario(two_way_hall_scenario(200, 1, 8.0), control);
+  EXPECT_EQ(measure_plan(plan).overlaps, 0);
+  const auto reached = std::count_if(plan.agents.begin(), plan.agents.end(), [](const AgentPlan& a) {
+    return a.status == AgentStatus::kReached;
+  });
+  EXPECT_GE(reached, 190);
+}
+
 // The crowd's checks take their bounds from PlanBounds, and pass over pairs
 // whose COM boxes keep apart: each must hold what it bounds, or a touch goes
 // unseen. Plans of an egress hold walks, waits, pivots and side steps.
