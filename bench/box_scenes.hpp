@@ -12,7 +12,6 @@
 
 namespace footfall::bench {
 
-inline constexpr double kPi = 3.14159265358979323846;
 
 /// A box scene: the domain and its boxes, each a turned rectangle.
 struct BoxScene {

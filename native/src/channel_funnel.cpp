@@ -10,7 +10,6 @@
 namespace footfall {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// Rounding allowance for an arc reaching out of its fan. [rad]
 constexpr double kArcSlack = 1e-12;
 

@@ -25,6 +25,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "contact.hpp"
@@ -341,6 +342,12 @@ void turn_first(const FootstepState& start, Attempt& a) {
   a.reached = false;
 }
 
+/// Where walker `w`, at `at`, is bound: the way to its current goal (its last
+/// once it has reached them all).
+Vec2 bound_of(const Walker& w, Vec2 at) {
+  return w.spec->goals[std::min(w.goal, w.spec->goals.size() - 1)] - at;
+}
+
 /// The local goal moved to the right of the line from agent i to it (by
 /// kKeepRightShift, else by less, 0.5 m at the least, where it could stand
 /// with room all along the way there), if one it sees walks the other way
@@ -360,10 +367,8 @@ LocalGoal keep_right(const std::vector<Walker>& walkers, std::size_t i, LocalGoa
       return false;
     // Walking this way, and bound this way too: not one stepping back to
     // make room (near a door, all bound the same way).
-    const Walker& other = walkers[j];
-    const std::size_t last = other.spec->goals.size() - 1;
-    const Vec2 bound = other.spec->goals[std::min(other.goal, last)] - now.com[j];
-    return dot(com_at(other.plan, now.t).velocity, ahead) < -kOncomingSpeed &&
+    const Vec2 bound = bound_of(walkers[j], now.com[j]);
+    return dot(com_at(walkers[j].plan, now.t).velocity, ahead) < -kOncomingSpeed &&
            dot(bound, ahead) < -0.5 * length(bound);
   });
   if (!oncoming || (mesh != nullptr && mesh->clearance(from) < kKeepRightRoom)) return target;
@@ -376,6 +381,65 @@ LocalGoal keep_right(const std::vector<Walker>& walkers, std::size_t i, LocalGoa
       return {point, false};
   }
   return target;
+}
+
+/// True if `step` neither moves the COM nor turns the torso from `facing`.
+bool still(const Footstep& step, double facing) {
+  return step.kind == StepKind::kStop && step.phi == facing &&
+         length(step.com_velocity_start) == 0.0 && length(step.com_velocity_end) == 0.0;
+}
+
+/// The nearest place round `state` (in rings 0.75 m apart, up to 2.25 m)
+/// where the agent could stand out of `keep_out`, clear of the obstacles and
+/// of the plans of `others`; of those on one ring, the one with the most room
+/// round it (from the others where they are now). None if there is none.
+std::optional<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_out,
+                               const MovingObstacles& others, const FootstepPlanner& planner,
+                               const NavMesh* mesh) {
+  constexpr int kDirections = 16;
+  std::vector<Vec2> now;
+  for (const MovingObstacle& other : others) now.push_back(com_at(*other.plan, state.time).position);
+  struct Place {
+    FootstepState standing;
+    double ring, room;
+  };
+  std::vector<Place> places;
+  for (double ring = 0.75; ring <= 2.3; ring += 0.75) {
+    for (int k = 0; k < kDirections; ++k) {
+      const Vec2 point = state.com + ring * unit(2.0 * kPi * k / kDirections);
+      double room = std::numeric_limits<double>::infinity();
+      for (const Vec2 where : now) room = std::min(room, distance(where, point));
+      if (room < planner.character().torso_width) continue;  // another stands there now
+      FootstepState there = standing_state(point, state.facing, planner.character());
+      there.time = state.time;
+      if (!planner.room_to_turn(point) || !planner.keeps_out(there, keep_out) ||
+          planner.collides(there) ||
+          (mesh != nullptr && mesh->clearance_between(state.com, point, 0.3) < 0.3))
+        continue;
+      places.push_back({there, ring, room});
+    }
+  }
+  std::stable_sort(places.begin(), places.end(), [](const Place& a, const Place& b) {
+    return a.ring < b.ring || (a.ring == b.ring && a.room > b.room);
+  });
+  std::vector<FootstepState> states;
+  for (const Place& place : places) states.push_back(place.standing);
+  const int first = planner.first_standing_clear(states, others);
+  if (first < 0) return std::nullopt;
+  return states[first].com;
+}
+
+/// True if agent i stands in the wish of one it yields to that is bound
+/// against it (their goals more than 90 degrees apart). Among agents bound
+/// the same way (a queue at a door) the wish passes once those ahead move on.
+bool in_an_oncoming_wish(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now,
+                         const FootstepPlanner& planner) {
+  const Walker& w = walkers[i];
+  const Vec2 bound = bound_of(w, w.state.com);
+  return std::any_of(w.yielding_to.begin(), w.yielding_to.end(), [&](std::size_t j) {
+    return dot(bound_of(walkers[j], now.com[j]), bound) < 0.0 &&
+           !planner.keeps_out(w.state, walkers[j].wish);
+  });
 }
 
 /// Agent i's next search: toward its local goal, among the plans of the
@@ -406,7 +470,20 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   const bool patient = w.state.time - w.improved_at < kJamPatience;
   const SearchOptions options{leaves, keep_out, w.blocked >= 1 && jammed ? kBlockedHorizon : 0,
                               kRestGrace, jammed && patient ? kJamStall : 0};
-  const SearchResult result = planner.plan(w.state, target.point, others, options);
+  SearchResult result = planner.plan(w.state, target.point, others, options);
+  const bool moves = std::any_of(result.footsteps.begin(), result.footsteps.end(),
+                                 [&](const Footstep& step) { return !still(step, w.state.facing); });
+  if (!moves && w.state.standing() && in_an_oncoming_wish(walkers, i, now, planner)) {
+    // In a face-off (two blocks of a counterflow, a knot among boxes) no one
+    // gains on its own way, and waiting only stands in the way: it makes
+    // room, stepping aside out of the wishes it yields to.
+    if (const auto aside = room_aside(w.state, keep_out, others, planner, mesh)) {
+      SearchOptions short_search = options;
+      short_search.horizon = kBlockedHorizon;
+      SearchResult out = planner.plan(w.state, *aside, others, short_search);
+      if (out.status == Status::kSuccess) result = std::move(out);
+    }
+  }
   Attempt a;
   a.from = w.state;
   a.steps = result.footsteps;
@@ -510,12 +587,6 @@ bool stuck(const std::vector<Walker>& walkers, std::size_t i) {
       return false;
   }
   return true;
-}
-
-/// True if `step` neither moves the COM nor turns the torso from `facing`.
-bool still(const Footstep& step, double facing) {
-  return step.kind == StepKind::kStop && step.phi == facing &&
-         length(step.com_velocity_start) == 0.0 && length(step.com_velocity_end) == 0.0;
 }
 
 /// True if `plan` stands still from time `from` on.

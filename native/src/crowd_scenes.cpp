@@ -12,7 +12,6 @@
 namespace footfall {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// Agents start, and stand at their goals, at least this far apart. [m]
 constexpr double kSpacing = 0.9;
 /// Draws per agent before a generator gives up.

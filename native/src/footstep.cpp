@@ -21,7 +21,6 @@ FootstepState state_after(const FootstepState& state, const Footstep& step) {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kIntervalTolerance = 1e-9;  // [rad] bounds this close still meet
 
 const FootLimits& limits_of(const CharacterParams& character, Foot foot) {

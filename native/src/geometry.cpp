@@ -5,7 +5,6 @@
 namespace footfall {
 
 double wrap_angle(double angle) {
-  constexpr double kPi = 3.14159265358979323846;
   // Most angles are within a turn of the range: one addition, no division.
   if (angle > -kPi && angle <= kPi) return angle;
   if (angle > kPi && angle <= 3.0 * kPi) return angle - 2.0 * kPi;

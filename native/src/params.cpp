@@ -4,10 +4,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "footfall/geometry.hpp"
+
 namespace footfall {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Checks lo <(=) value <(=) hi; `open_low` / `open_high` exclude the bound.
 void check_range(double value, const std::string& field, double lo, double hi, bool open_low,

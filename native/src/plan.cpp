@@ -7,7 +7,6 @@
 namespace footfall {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMaxLift = 0.12;        // [m] swing height of a full stride
 constexpr double kLiftPerStride = 0.15;  // swing height per metre of stride
 constexpr double kLeadIn = 0.25;         // [s] longest swing of a foot into a first step

@@ -16,7 +16,6 @@
 namespace footfall {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Two generated states that fall in the same cell of (COM 4 cm, velocity
 // heading 4 degrees, speed 0.1 m/s, standing, last foot) are treated as one:
 // the later one is dropped. This keeps the search from re-expanding
@@ -479,6 +478,15 @@ std::vector<char> FootstepPlanner::stands_clear_of_each(const FootstepState& sta
   std::vector<char> clear(others.size());
   for (std::size_t j = 0; j < others.size(); ++j) clear[j] = !check.touches(samples, j);
   return clear;
+}
+
+int FootstepPlanner::first_standing_clear(const std::vector<FootstepState>& states,
+                                          const MovingObstacles& others) const {
+  if (states.empty()) return -1;
+  detail::SampledAgents& samples = sampled(others, character_, states.front().time);
+  for (std::size_t k = 0; k < states.size(); ++k)
+    if (stands_clear(states[k], samples)) return static_cast<int>(k);
+  return -1;
 }
 
 bool FootstepPlanner::rests_well(const FootstepState& state, detail::SampledAgents& others,

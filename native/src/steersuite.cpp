@@ -17,7 +17,6 @@
 namespace footfall {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kCircleSides = 16;
 constexpr int kPlacementTries = 10000;
 

@@ -15,7 +15,6 @@
 namespace footfall::tools {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 struct Query {
   FootstepState start;

@@ -21,7 +21,6 @@
 namespace footfall::testing {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 /// An axis-aligned bounding box.

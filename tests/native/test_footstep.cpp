@@ -8,7 +8,6 @@
 namespace footfall {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // A character walking at `speed` along `heading`, its last step by `last`.
 FootstepState walking_state(double heading, double speed, Foot last) {

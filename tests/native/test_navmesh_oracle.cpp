@@ -20,7 +20,6 @@ namespace {
 using testing::NavScene;
 using testing::OracleAnswer;
 
-constexpr double kPi = 3.14159265358979323846;
 
 /// Uniform numbers of our own: the standard distributions differ between
 /// libraries, and the cases must not.

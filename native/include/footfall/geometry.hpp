@@ -41,6 +41,8 @@ inline double angle_of(Vec2 a) { return std::atan2(a.y, a.x); }
 /// True if both coordinates are finite numbers.
 inline bool is_finite(Vec2 a) { return std::isfinite(a.x) && std::isfinite(a.y); }
 
+constexpr double kPi = 3.14159265358979323846;
+
 /// Largest coordinate accepted in a scene: far beyond any real scene, and
 /// small enough that sums and grid indices stay exact. [m]
 constexpr double kMaxCoordinate = 1e9;
