@@ -178,6 +178,36 @@ TEST(Crowd, DenseCounterflowFormsLanes) {
   }
 }
 
+// Two blocks of 12 (6 abreast, 2 deep) meet head-on in a corridor 5 m wide:
+// no one can pass on its own way, so those in the way of one bound against
+// them step aside (in_an_oncoming_wish). Waiting instead, 5 of them stood
+// for good (19 of 24 reached); in a corridor 4 m wide with blocks of 15
+// (5 abreast, 3 deep), all 30 did.
+TEST(Crowd, BlocksMeetingHeadOnMakeRoomAndPass) {
+  for (const auto& [width, rows, columns] :
+       {std::array<double, 3>{5.0, 6, 2}, std::array<double, 3>{4.0, 5, 3}}) {
+    Scenario scenario;
+    for (const double side : {-1.0, 1.0}) {
+      const double wall = side * (0.5 * width + 0.15);
+      scenario.obstacles.push_back(box_obstacle({0.0, wall}, {40.0, 0.3}));
+    }
+    for (const double side : {-1.0, 1.0}) {
+      for (int row = 0; row < rows; ++row) {
+        for (int column = 0; column < columns; ++column) {
+          const double y = -0.5 * width + (row + 0.5) * width / rows;
+          AgentSpec agent{std::to_string(scenario.agents.size()), {side * (1.2 + column), y}, 0.0,
+                          {{-side * 18.0, y}}};
+          agent.facing = side > 0 ? kPi : 0.0;
+          agent.leave_at_goal = true;
+          scenario.agents.push_back(agent);
+        }
+      }
+    }
+    SCOPED_TRACE("corridor " + std::to_string(width) + " m wide");
+    plan_clear_of_each_other(scenario, 2);
+  }
+}
+
 // The crowd's checks take their bounds from PlanBounds, and pass over pairs
 // whose COM boxes keep apart: each must hold what it bounds, or a touch goes
 // unseen. Plans of an egress hold walks, waits, pivots and side steps.
