@@ -175,6 +175,12 @@ struct Walker {
   bool done = false;
 };
 
+/// True if walker `w`, searching from `state`, has gained way within
+/// kJamPatience (its search in a jam may stop early).
+bool patient(const Walker& w, const FootstepState& state) {
+  return state.time - w.improved_at < kJamPatience;
+}
+
 /// True if agent `a` goes before agent `b` where their ways cross: the one
 /// with less way left, then the earlier in the scenario.
 bool goes_first(const std::vector<Walker>& walkers, std::size_t a, std::size_t b) {
@@ -467,9 +473,8 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   bool jammed = false;
   for (const std::size_t j : seen)
     jammed = jammed || distance(now.com[j], w.state.com) <= kJamDistance;
-  const bool patient = w.state.time - w.improved_at < kJamPatience;
   const SearchOptions options{leaves, keep_out, w.blocked >= 1 && jammed ? kBlockedHorizon : 0,
-                              kRestGrace, jammed && patient ? kJamStall : 0};
+                              kRestGrace, jammed && patient(w, w.state) ? kJamStall : 0};
   SearchResult result = planner.plan(w.state, target.point, others, options);
   const bool moves = std::any_of(result.footsteps.begin(), result.footsteps.end(),
                                  [&](const Footstep& step) { return !still(step, w.state.facing); });
@@ -609,14 +614,15 @@ bool same_stance(const FootstepState& a, const FootstepState& b) {
 /// gained nothing: it committed nothing but waiting then (a pivot gains no
 /// way, but looks elsewhere), it would start as its last search did (a
 /// search from a walk that found nothing leaves the agent standing where its
-/// rest brought it, with new steps open to it), no one asked it to make room
+/// rest brought it, with new steps open to it) and search as deep (its
+/// patience has not run out since), no one asked it to make room
 /// nor was noticed since, and everyone within kFreezeRadius (or gone from
 /// there) has neither committed since nor moved from then on. In a jam most
 /// agents wait behind others that wait; their searches would cost the most.
 bool nothing_new(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now) {
   const Walker& w = walkers[i];
   if (w.blocked == 0 || w.news_at >= w.searched_at || w.committed_at >= w.searched_at ||
-      !same_stance(w.searched_from, w.state))
+      !same_stance(w.searched_from, w.state) || patient(w, w.searched_from) != patient(w, w.state))
     return false;
   for (std::size_t j = 0; j < walkers.size(); ++j) {
     if (j == i || distance(now.com[j], now.com[i]) > kFreezeRadius) continue;
