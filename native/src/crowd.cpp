@@ -402,7 +402,9 @@ bool still(const Footstep& step, double facing) {
 std::optional<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_out,
                                const MovingObstacles& others, const FootstepPlanner& planner,
                                const NavMesh* mesh) {
-  constexpr int kDirections = 16;
+  constexpr int kDirections = 16, kRings = 3;
+  constexpr double kRingStep = 0.75;  // [m]
+  const double half_torso = 0.5 * planner.character().torso_width;
   std::vector<Vec2> now;
   for (const MovingObstacle& other : others) now.push_back(com_at(*other.plan, state.time).position);
   struct Place {
@@ -410,7 +412,8 @@ std::optional<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_o
     double ring, room;
   };
   std::vector<Place> places;
-  for (double ring = 0.75; ring <= 2.3; ring += 0.75) {
+  for (int r = 1; r <= kRings; ++r) {
+    const double ring = kRingStep * r;
     for (int k = 0; k < kDirections; ++k) {
       const Vec2 point = state.com + ring * unit(2.0 * kPi * k / kDirections);
       double room = std::numeric_limits<double>::infinity();
@@ -420,7 +423,7 @@ std::optional<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_o
       there.time = state.time;
       if (!planner.room_to_turn(point) || !planner.keeps_out(there, keep_out) ||
           planner.collides(there) ||
-          (mesh != nullptr && mesh->clearance_between(state.com, point, 0.3) < 0.3))
+          (mesh != nullptr && mesh->clearance_between(state.com, point, half_torso) < half_torso))
         continue;
       places.push_back({there, ring, room});
     }
