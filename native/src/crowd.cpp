@@ -168,6 +168,9 @@ struct Walker {
   /// if the agents that go after it made room, as the circles it sweeps
   /// (wish_discs; empty: none). Those resting there are asked to keep out.
   KeepOut wish;
+  /// Its wish is the way out of the wishes of others (must_make_room()):
+  /// those in it make room too, whichever way they are bound.
+  bool wish_makes_room = false;
   /// Agents whose wishes this one was asked to keep out of.
   std::vector<std::size_t> yielding_to;
   /// The ways its last search measured (Attempt::ways).
@@ -202,6 +205,7 @@ struct Attempt {
   double way_from = 0.0;  ///< Way left at the start. [m]
   /// The agent's wish (Walker::wish), when it is blocked; empty otherwise.
   KeepOut wish;
+  bool wish_makes_room = false;  ///< Walker::wish_makes_room.
   int nodes_generated = 0, nodes_expanded = 0;
   bool searched = false;
   FootstepState from;  ///< Where the search started.
@@ -439,14 +443,15 @@ std::optional<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_o
 }
 
 /// True if agent i stands in the wish of one it yields to that is bound
-/// against it (their goals more than 90 degrees apart). Among agents bound
-/// the same way (a queue at a door) the wish passes once those ahead move on.
-bool in_an_oncoming_wish(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now,
-                         const FootstepPlanner& planner) {
+/// against it (their goals more than 90 degrees apart), or whose wish makes
+/// room for such a one. Among agents bound the same way (a queue at a door)
+/// a wish passes once those ahead move on.
+bool must_make_room(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now,
+                    const FootstepPlanner& planner) {
   const Walker& w = walkers[i];
   const Vec2 bound = bound_of(w, w.state.com);
   return std::any_of(w.yielding_to.begin(), w.yielding_to.end(), [&](std::size_t j) {
-    return dot(bound_of(walkers[j], now.com[j]), bound) < 0.0 &&
+    return (walkers[j].wish_makes_room || dot(bound_of(walkers[j], now.com[j]), bound) < 0.0) &&
            !planner.keeps_out(w.state, walkers[j].wish);
   });
 }
@@ -481,15 +486,21 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   SearchResult result = planner.plan(w.state, target.point, others, options);
   const bool moves = std::any_of(result.footsteps.begin(), result.footsteps.end(),
                                  [&](const Footstep& step) { return !still(step, w.state.facing); });
-  if (!moves && w.state.standing() && in_an_oncoming_wish(walkers, i, now, planner)) {
+  SearchOptions short_search = options;
+  short_search.horizon = kBlockedHorizon;
+  // Standing where it must make room, with nowhere to go but aside.
+  bool boxed_in = false;
+  if (!moves && w.state.standing() && must_make_room(walkers, i, now, planner)) {
     // In a face-off (two blocks of a counterflow, a knot among boxes) no one
     // gains on its own way, and waiting only stands in the way: it makes
     // room, stepping aside out of the wishes it yields to.
+    boxed_in = true;
     if (const auto aside = room_aside(w.state, keep_out, others, planner, mesh)) {
-      SearchOptions short_search = options;
-      short_search.horizon = kBlockedHorizon;
       SearchResult out = planner.plan(w.state, *aside, others, short_search);
-      if (out.status == Status::kSuccess) result = std::move(out);
+      if (out.status == Status::kSuccess) {
+        result = std::move(out);
+        boxed_in = false;
+      }
     }
   }
   Attempt a;
@@ -527,6 +538,19 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
     // another's, which those behind it make room for first. If only those
     // that go first turned anything down, the search among them alone would
     // find what this one found.
+    // Boxed in where it must make room: its wish is the way aside that those
+    // behind it (who go after it) would leave it, and they make room too.
+    if (boxed_in) {
+      const MovingObstacles ahead = plans_of(walkers, first);
+      if (const auto aside = room_aside(w.state, keep_out, ahead, planner, mesh)) {
+        const SearchResult out = planner.plan(w.state, *aside, ahead, short_search);
+        if (out.status == Status::kSuccess && !out.footsteps.empty()) {
+          a.wish = wish_discs(out.footsteps, planner.character());
+          a.wish_makes_room = true;
+          return a;
+        }
+      }
+    }
     const bool same = std::all_of(result.refused_by.begin(), result.refused_by.end(),
                                   [&](std::size_t k) { return goes_first(walkers, seen[k], i); });
     const SearchResult wish =
@@ -780,9 +804,11 @@ void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a,
   Walker& w = walkers[i];
   if (w.done || w.blocked == 0 || a.wish.empty()) {
     w.wish.clear();
+    w.wish_makes_room = false;
     return;
   }
   w.wish = std::move(a.wish);
+  w.wish_makes_room = a.wish_makes_room;
   for (const std::size_t j : near) {
     Walker& other = walkers[j];
     if (other.done || goes_first(walkers, j, i) || planner.keeps_out(rest_of(other), w.wish))

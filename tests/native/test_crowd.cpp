@@ -180,12 +180,15 @@ TEST(Crowd, DenseCounterflowFormsLanes) {
 
 // Two blocks of 12 (6 abreast, 2 deep) meet head-on in a corridor 5 m wide:
 // no one can pass on its own way, so those in the way of one bound against
-// them step aside (in_an_oncoming_wish). Waiting instead, 5 of them stood
-// for good (19 of 24 reached); in a corridor 4 m wide with blocks of 15
-// (5 abreast, 3 deep), all 30 did.
+// them step aside (must_make_room). Waiting instead, 5 of them stood for
+// good (19 of 24 reached); in a corridor 4 m wide with blocks of 15 (5
+// abreast, 3 deep), all 30 did. In one 3 m wide with blocks of 12 (4
+// abreast, 3 deep) the front rows have no room aside: 21 of 24 stood for
+// good until those behind them made room too (Walker::wish_makes_room).
 TEST(Crowd, BlocksMeetingHeadOnMakeRoomAndPass) {
   for (const auto& [width, rows, columns] :
-       {std::array<double, 3>{5.0, 6, 2}, std::array<double, 3>{4.0, 5, 3}}) {
+       {std::array<double, 3>{5.0, 6, 2}, std::array<double, 3>{4.0, 5, 3},
+        std::array<double, 3>{3.0, 4, 3}}) {
     Scenario scenario;
     for (const double side : {-1.0, 1.0}) {
       const double wall = side * (0.5 * width + 0.15);
