@@ -11,7 +11,9 @@
 // against everyone's rest, so waiting is always clear.
 //
 // Yielding: a blocked agent shows the agents after it (in the order of way
-// left) that rest in its way where it would go; they rest out of it.
+// left) that rest in its way where it would go; they rest out of it. In a
+// face-off, where no one can rest ahead, those in the way of one bound
+// against them step aside to the nearest room (must_make_room()).
 //
 // Determinism: the searches of one tick read a snapshot (every plan as it
 // stood when the tick began) and may run on several threads; their results are
