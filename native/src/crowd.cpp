@@ -307,6 +307,7 @@ MovingObstacle obstacle_of(const Walker& w) { return {&w.plan, &w.bounds, &w.sam
 MovingObstacles plans_of(const std::vector<Walker>& walkers,
                          const std::vector<std::size_t>& which) {
   MovingObstacles plans;
+  plans.reserve(which.size());
   for (const std::size_t j : which) plans.push_back(obstacle_of(walkers[j]));
   return plans;
 }

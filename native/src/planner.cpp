@@ -11,6 +11,7 @@
 #include "contact.hpp"
 #include "footfall/plan.hpp"
 #include "footstep_shape.hpp"
+#include "huge_page_allocator.hpp"
 #include "sampled_agents.hpp"
 
 namespace footfall {
@@ -85,7 +86,7 @@ class KeySet {
       if (key != 0) insert(key);
     }
   }
-  std::vector<std::uint64_t> slots_;  ///< The first used_ are the table.
+  LargeVector<std::uint64_t> slots_;  ///< The first used_ are the table.
   std::vector<std::uint64_t> old_;    ///< The keys being rehashed.
   size_t used_ = kFirstSize;
   size_t size_ = 0;
@@ -196,8 +197,8 @@ struct FootstepPlanner::Search {
       return index > o.index;
     }
   };
-  std::vector<Node> nodes;
-  std::vector<OpenEntry> open;  // a binary heap
+  LargeVector<Node> nodes;
+  LargeVector<OpenEntry> open;  // a binary heap
   KeySet seen;
   detail::SampledAgents others;  // the plans the search avoids
   int generated = 0;
@@ -725,7 +726,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   }
   result.nodes_generated = search.generated;
 
-  const std::vector<Node>& nodes = search.nodes;
+  const auto& nodes = search.nodes;
   int end = goal_node;
   if (goal_node >= 0) {
     result.status = Status::kSuccess;

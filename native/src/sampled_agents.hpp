@@ -15,6 +15,7 @@
 #include "footfall/agent_planner.hpp"
 #include "footfall/plan.hpp"
 #include "footfall/planner.hpp"
+#include "huge_page_allocator.hpp"
 
 namespace footfall::detail {
 
@@ -106,8 +107,8 @@ class SampledAgents {
   long first_ = 0;                 ///< The instant of the first row.
   long rows_ = 0;                  ///< Instants held (this search).
   std::size_t stride_ = 0;         ///< Agents per row: size().
-  std::vector<AgentWhere> where_;  ///< [(k - first_) * stride_ + j]
-  std::vector<AgentShape> shape_;  ///< the same
+  LargeVector<AgentWhere> where_;  ///< [(k - first_) * stride_ + j]
+  LargeVector<AgentShape> shape_;  ///< the same
   std::vector<Bounds> bounds_;     ///< [j]
 };
 
