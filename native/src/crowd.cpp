@@ -54,6 +54,8 @@ constexpr double kCheckDistance = 40.0;
 /// Nodes a blocked agent's search expands at most (after a search that
 /// gained nothing), when one it sees stands within kJamDistance.
 constexpr int kBlockedHorizon = 100;
+/// Places aside an agent making room tries to reach, nearest first.
+constexpr std::size_t kAsideTries = 4;
 constexpr double kJamDistance = 3.0;  ///< [m]
 /// Nodes the search of an agent with someone it sees within kJamDistance
 /// expands without one nearer its goal before it stops (the planner's
@@ -402,13 +404,14 @@ bool still(const Footstep& step, double facing) {
          length(step.com_velocity_start) == 0.0 && length(step.com_velocity_end) == 0.0;
 }
 
-/// The nearest place round `state` (in rings 0.75 m apart, up to 2.25 m)
+/// The nearest places round `state` (in rings 0.75 m apart, up to 2.25 m)
 /// where the agent could stand out of `keep_out`, clear of the obstacles and
-/// of the plans of `others`; of those on one ring, the one with the most room
-/// round it (from the others where they are now). None if there is none.
-std::optional<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_out,
-                               const MovingObstacles& others, const FootstepPlanner& planner,
-                               const NavMesh* mesh) {
+/// of the plans of `others`, nearest first (of those on one ring, the one
+/// with the most room round it, from the others where they are now); at most
+/// kAsideTries of them.
+std::vector<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_out,
+                             const MovingObstacles& others, const FootstepPlanner& planner,
+                             const NavMesh* mesh) {
   constexpr int kDirections = 16, kRings = 3;
   constexpr double kRingStep = 0.75;  // [m]
   const double half_torso = 0.5 * planner.character().torso_width;
@@ -440,9 +443,24 @@ std::optional<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_o
   });
   std::vector<FootstepState> states;
   for (const Place& place : places) states.push_back(place.standing);
-  const int first = planner.first_standing_clear(states, others);
-  if (first < 0) return std::nullopt;
-  return states[first].com;
+  std::vector<Vec2> clear;
+  for (const std::size_t k : planner.standing_clear(states, others, kAsideTries))
+    clear.push_back(states[k].com);
+  return clear;
+}
+
+/// Steps to the nearest place that room_aside() offers and a search of
+/// `options` reaches (the nearest may be behind the very agents it makes
+/// room for); none if no such search succeeds.
+std::optional<SearchResult> step_aside(const FootstepState& state, const KeepOut& keep_out,
+                                       const MovingObstacles& others,
+                                       const FootstepPlanner& planner, const NavMesh* mesh,
+                                       const SearchOptions& options) {
+  for (const Vec2 place : room_aside(state, keep_out, others, planner, mesh)) {
+    SearchResult result = planner.plan(state, place, others, options);
+    if (result.status == Status::kSuccess && !result.footsteps.empty()) return result;
+  }
+  return std::nullopt;
 }
 
 /// True if agent i stands in the wish of one it yields to that is bound
@@ -498,12 +516,9 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
     // gains on its own way, and waiting only stands in the way: it makes
     // room, stepping aside out of the wishes it yields to.
     boxed_in = true;
-    if (const auto aside = room_aside(w.state, keep_out, others, planner, mesh)) {
-      SearchResult out = planner.plan(w.state, *aside, others, short_search);
-      if (out.status == Status::kSuccess) {
-        result = std::move(out);
-        boxed_in = false;
-      }
+    if (auto aside = step_aside(w.state, keep_out, others, planner, mesh, short_search)) {
+      result = std::move(*aside);
+      boxed_in = false;
     }
   }
   Attempt a;
@@ -545,13 +560,10 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
     // behind it (who go after it) would leave it, and they make room too.
     if (boxed_in) {
       const MovingObstacles ahead = plans_of(walkers, first);
-      if (const auto aside = room_aside(w.state, keep_out, ahead, planner, mesh)) {
-        const SearchResult out = planner.plan(w.state, *aside, ahead, short_search);
-        if (out.status == Status::kSuccess && !out.footsteps.empty()) {
-          a.wish = wish_discs(out.footsteps, planner.character());
-          a.wish_makes_room = true;
-          return a;
-        }
+      if (const auto aside = step_aside(w.state, keep_out, ahead, planner, mesh, short_search)) {
+        a.wish = wish_discs(aside->footsteps, planner.character());
+        a.wish_makes_room = true;
+        return a;
       }
     }
     const bool same = std::all_of(result.refused_by.begin(), result.refused_by.end(),

@@ -481,13 +481,15 @@ std::vector<char> FootstepPlanner::stands_clear_of_each(const FootstepState& sta
   return clear;
 }
 
-int FootstepPlanner::first_standing_clear(const std::vector<FootstepState>& states,
-                                          const MovingObstacles& others) const {
-  if (states.empty()) return -1;
+std::vector<std::size_t> FootstepPlanner::standing_clear(const std::vector<FootstepState>& states,
+                                                         const MovingObstacles& others,
+                                                         std::size_t at_most) const {
+  std::vector<std::size_t> clear;
+  if (states.empty()) return clear;
   detail::SampledAgents& samples = sampled(others, character_, states.front().time);
-  for (std::size_t k = 0; k < states.size(); ++k)
-    if (stands_clear(states[k], samples)) return static_cast<int>(k);
-  return -1;
+  for (std::size_t k = 0; k < states.size() && clear.size() < at_most; ++k)
+    if (stands_clear(states[k], samples)) clear.push_back(k);
+  return clear;
 }
 
 bool FootstepPlanner::rests_well(const FootstepState& state, detail::SampledAgents& others,

@@ -155,10 +155,11 @@ class FootstepPlanner {
   /// True if a character standing at `rested` keeps out of every disc of
   /// `keep_out`: none of its five circles overlaps one.
   bool keeps_out(const FootstepState& rested, const KeepOut& keep_out) const;
-  /// The index of the first of `states` (all at one time) that stands clear
-  /// of `others` (stands_clear), sampling their plans once; -1 if none does.
-  int first_standing_clear(const std::vector<FootstepState>& states,
-                           const MovingObstacles& others) const;
+  /// The indices of the first `at_most` of `states` (all at one time) that
+  /// stand clear of `others` (stands_clear), sampling their plans once.
+  std::vector<std::size_t> standing_clear(const std::vector<FootstepState>& states,
+                                          const MovingObstacles& others,
+                                          std::size_t at_most) const;
   /// True if a character standing at `rested` has room to turn and can set
   /// off: one of the tabled walking steps, the side step straight across or
   /// a pivot from there is clear of the static obstacles. A search that ends
