@@ -268,8 +268,8 @@ std::vector<std::size_t> seen_by(const std::vector<Walker>& walkers, std::size_t
       if (in_sight[k]) seen[kept++] = seen[k];
     seen.resize(kept);
   }
-  for (const auto& known : {walkers[i].noticed, walkers[i].yielding_to})
-    for (const std::size_t j : known)
+  for (const auto* known : {&walkers[i].noticed, &walkers[i].yielding_to})
+    for (const std::size_t j : *known)
       if (now.present[j] && std::find(seen.begin(), seen.end(), j) == seen.end()) seen.push_back(j);
   return seen;
 }
@@ -763,7 +763,8 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a, Propo
     w.plan.nodes_expanded += a.nodes_expanded;
   }
   if (refused >= 0) {
-    w.noticed.push_back(p.close[refused]);
+    if (std::find(w.noticed.begin(), w.noticed.end(), p.close[refused]) == w.noticed.end())
+      w.noticed.push_back(p.close[refused]);
     w.news_at = t;
   }
   if (a.steps.empty() || refused >= 0) {
