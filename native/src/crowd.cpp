@@ -65,6 +65,9 @@ constexpr int kJamStall = 15;
 /// An agent whose way has not shortened by min_progress for this long
 /// searches as if alone again, for a way out that a short search misses. [s]
 constexpr double kJamPatience = 5.0;
+/// Searches in a row without progress after which an impatient agent gives
+/// way to all (gives_way()).
+constexpr int kGiveWayBlocked = 6;
 /// Longer ago than any time: "never". [s]
 constexpr double kForever = std::numeric_limits<double>::infinity();
 /// A blocked agent searches again only if something within this changed. [m]
@@ -179,6 +182,8 @@ struct Walker {
   std::vector<std::size_t> yielding_to;
   /// The ways its last search measured (Attempt::ways).
   std::vector<KnownWay> ways;
+  /// It goes after every other (gives_way(), as the tick began).
+  bool giving_way = false;
   bool done = false;
 };
 
@@ -188,10 +193,22 @@ bool patient(const Walker& w, const FootstepState& state) {
   return state.time - w.improved_at < kJamPatience;
 }
 
-/// True if agent `a` goes before agent `b` where their ways cross: the one
-/// with less way left, then the earlier in the scenario.
+/// True if agent `a` goes before agent `b` where their ways cross: one that
+/// gives way goes after one that does not; then the one with less way left,
+/// then the earlier in the scenario.
 bool goes_first(const std::vector<Walker>& walkers, std::size_t a, std::size_t b) {
-  return walkers[a].way < walkers[b].way || (walkers[a].way == walkers[b].way && a < b);
+  const Walker &first = walkers[a], &second = walkers[b];
+  if (first.giving_way != second.giving_way) return second.giving_way;
+  return first.way < second.way || (first.way == second.way && a < b);
+}
+
+/// True if walker `w` gives way to all: blocked kGiveWayBlocked searches in a
+/// row, and its patience run out (its way has not shortened for kJamPatience).
+/// In a knot (agents bound every way in a gap between boxes, all waiting) the
+/// one that goes first may have nowhere to go that the others can make room
+/// for; it then goes last, and the next one's wish is kept clear instead.
+bool gives_way(const Walker& w) {
+  return !w.done && w.blocked >= kGiveWayBlocked && !patient(w, w.state);
 }
 
 /// True if steps that reach the walker's current goal end its walk there.
@@ -888,6 +905,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     // A plan that has run into its rest starts again from where that leaves it.
     for (std::size_t i : due)
       if (walkers[i].state.time < t) rest_until(walkers[i], planner, t);
+    for (Walker& w : walkers) w.giving_way = gives_way(w);
     const Snapshot at_tick = snapshot(walkers, walks, t, workers);
     std::vector<Attempt> attempts(due.size());
     std::vector<char> idle(due.size());
