@@ -202,14 +202,6 @@ bool goes_first(const std::vector<Walker>& walkers, std::size_t a, std::size_t b
   return first.way < second.way || (first.way == second.way && a < b);
 }
 
-/// True if walker `w` gives way to all: blocked kGiveWayBlocked searches in a
-/// row, and its patience run out (its way has not shortened for kJamPatience).
-/// In a knot (agents bound every way in a gap between boxes, all waiting) the
-/// one that goes first may have nowhere to go that the others can make room
-/// for; it then goes last, and the next one's wish is kept clear instead.
-bool gives_way(const Walker& w) {
-  return !w.done && w.blocked >= kGiveWayBlocked && !patient(w, w.state);
-}
 
 /// True if steps that reach the walker's current goal end its walk there.
 bool leaves_now(const Walker& w, bool reached) {
@@ -378,6 +370,26 @@ void turn_first(const FootstepState& start, Attempt& a) {
 /// once it has reached them all).
 Vec2 bound_of(const Walker& w, Vec2 at) {
   return w.spec->goals[std::min(w.goal, w.spec->goals.size() - 1)] - at;
+}
+
+/// True if agent i gives way to all: blocked kGiveWayBlocked searches in a
+/// row, its patience run out (its way has not shortened for kJamPatience),
+/// with one bound against it (their goals more than 90 degrees apart) within
+/// kJamDistance. In a knot (agents bound every way in a gap between boxes,
+/// all waiting) the one that goes first may have nowhere to go that the
+/// others can make room for; it then goes last, and the next one's wish is
+/// kept clear instead. In a queue, all bound one way, the order stands.
+bool gives_way(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now) {
+  const Walker& w = walkers[i];
+  if (w.done || w.blocked < kGiveWayBlocked || patient(w, w.state)) return false;
+  const Vec2 bound = bound_of(w, now.com[i]);
+  for (std::size_t j = 0; j < walkers.size(); ++j) {
+    if (j == i || walkers[j].done || !now.present[j] ||
+        distance(now.com[j], now.com[i]) > kJamDistance)
+      continue;
+    if (dot(bound_of(walkers[j], now.com[j]), bound) < 0.0) return true;
+  }
+  return false;
 }
 
 /// The local goal moved to the right of the line from agent i to it (by
@@ -905,8 +917,9 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     // A plan that has run into its rest starts again from where that leaves it.
     for (std::size_t i : due)
       if (walkers[i].state.time < t) rest_until(walkers[i], planner, t);
-    for (Walker& w : walkers) w.giving_way = gives_way(w);
     const Snapshot at_tick = snapshot(walkers, walks, t, workers);
+    for (std::size_t i = 0; i < walkers.size(); ++i)
+      walkers[i].giving_way = gives_way(walkers, i, at_tick);
     std::vector<Attempt> attempts(due.size());
     std::vector<char> idle(due.size());
     for (std::size_t k = 0; k < due.size(); ++k) idle[k] = nothing_new(walkers, due[k], at_tick);
