@@ -13,7 +13,8 @@
 // Yielding: a blocked agent shows the agents after it (in the order of way
 // left) that rest in its way where it would go; they rest out of it. In a
 // face-off, where no one can rest ahead, those in the way of one bound
-// against them step aside to the nearest room (must_make_room()).
+// against them step aside to the nearest room (must_make_room()). One stalled
+// there, with one bound against it near, goes last (gives_way()).
 //
 // Determinism: the searches of one tick read a snapshot (every plan as it
 // stood when the tick began) and may run on several threads; their results are
@@ -201,7 +202,6 @@ bool goes_first(const std::vector<Walker>& walkers, std::size_t a, std::size_t b
   if (first.giving_way != second.giving_way) return second.giving_way;
   return first.way < second.way || (first.way == second.way && a < b);
 }
-
 
 /// True if steps that reach the walker's current goal end its walk there.
 bool leaves_now(const Walker& w, bool reached) {
