@@ -651,14 +651,16 @@ void progress(Walker& w, double way_left, const FootstepPlanner& planner) {
 /// True if agent `i` is stuck: its way has not shortened by min_progress for
 /// kStuckAfter, and neither has that of any agent within kQueueDistance. One
 /// waiting behind others that move is queueing (at a crowded exit, for
-/// longer than kStuckAfter), not stuck; a deadlock does not move at all.
+/// longer than kStuckAfter), not stuck; a deadlock does not move at all. One
+/// that has just reached its goal there counts as moving: it may have stood
+/// in the way until then.
 bool stuck(const std::vector<Walker>& walkers, std::size_t i) {
   const Walker& w = walkers[i];
   const double since = w.state.time - kStuckAfter;
   if (w.improved_at >= since) return false;
   for (std::size_t j = 0; j < walkers.size(); ++j) {
     const Walker& other = walkers[j];
-    if (j != i && !other.done && other.improved_at >= since &&
+    if (j != i && other.improved_at >= since &&
         distance(other.state.com, w.state.com) <= kQueueDistance)
       return false;
   }
