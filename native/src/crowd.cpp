@@ -31,6 +31,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "agent_grid.hpp"
 #include "contact.hpp"
 #include "footfall/agent_planner.hpp"
 #include "footfall/plan.hpp"
@@ -73,6 +74,9 @@ constexpr int kGiveWayBlocked = 6;
 constexpr double kForever = std::numeric_limits<double>::infinity();
 /// A blocked agent searches again only if something within this changed. [m]
 constexpr double kFreezeRadius = 5.0;
+/// The side of the cells the snapshot buckets agents in (at least: fewer
+/// cells than agents), about the nearest of the distances asked about. [m]
+constexpr double kGridCell = 5.0;
 /// Rests closer than this are the same place. [m]
 constexpr double kSamePlace = 0.01;
 /// Noticed agents are kept in mind while they are this near. [m]
@@ -235,13 +239,14 @@ struct Snapshot {
   double t = 0.0;
   std::vector<Vec2> com;
   std::vector<char> present;
+  AgentGrid grid;  ///< com, for the agents near one (present or not).
 };
 
 /// The snapshot at time t of the agents whose plans `walks` read (one each,
 /// kept from tick to tick: the step under way is found from the last tick's).
 Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& walks, double t,
                   Workers& workers) {
-  Snapshot s{t, std::vector<Vec2>(walkers.size()), std::vector<char>(walkers.size())};
+  Snapshot s{t, std::vector<Vec2>(walkers.size()), std::vector<char>(walkers.size()), {}};
   // Shared out among the threads in parts of kPart agents: otherwise the
   // largest step of a tick outside its searches (the 500 among boxes).
   constexpr std::size_t kPart = 64;
@@ -251,6 +256,7 @@ Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& wal
       s.present[j] = present_at(walkers[j].plan, t);
     }
   });
+  s.grid = AgentGrid(s.com, kGridCell);
   return s;
 }
 
@@ -263,7 +269,9 @@ std::vector<std::size_t> seen_by(const std::vector<Walker>& walkers, std::size_t
   const Vec2 ahead = unit(facing_at(walkers[i].plan, now.t));
   std::vector<std::size_t> seen;
   std::vector<Vec2> where;
-  for (std::size_t j = 0; j < walkers.size(); ++j) {
+  std::vector<std::size_t> around;
+  now.grid.around(eye, kViewDistance, around);
+  for (const std::size_t j : around) {
     if (j == i || !now.present[j]) continue;
     const Vec2 d = now.com[j] - eye;
     if (dot(d, d) > kViewDistance * kViewDistance || dot(d, ahead) <= 0.0) continue;
@@ -383,7 +391,9 @@ bool gives_way(const std::vector<Walker>& walkers, std::size_t i, const Snapshot
   const Walker& w = walkers[i];
   if (w.done || w.blocked < kGiveWayBlocked || patient(w, w.state)) return false;
   const Vec2 bound = bound_of(w, now.com[i]);
-  for (std::size_t j = 0; j < walkers.size(); ++j) {
+  std::vector<std::size_t> around;
+  now.grid.around(now.com[i], kJamDistance, around);
+  for (const std::size_t j : around) {
     if (j == i || walkers[j].done || !now.present[j] ||
         distance(now.com[j], now.com[i]) > kJamDistance)
       continue;
@@ -610,10 +620,10 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
 
 /// Every other agent within kCheckDistance of agent `i` at the snapshot's
 /// time, seen or not.
-std::vector<std::size_t> near(const std::vector<Walker>& walkers, std::size_t i,
-                              const Snapshot& now) {
-  std::vector<std::size_t> out;
-  for (std::size_t j = 0; j < walkers.size(); ++j) {
+std::vector<std::size_t> near(std::size_t i, const Snapshot& now) {
+  std::vector<std::size_t> around, out;
+  now.grid.around(now.com[i], kCheckDistance, around);
+  for (const std::size_t j : around) {
     if (j != i && now.present[j] && distance(now.com[j], now.com[i]) <= kCheckDistance)
       out.push_back(j);
   }
@@ -697,7 +707,9 @@ bool nothing_new(const std::vector<Walker>& walkers, std::size_t i, const Snapsh
   if (w.blocked == 0 || w.news_at >= w.searched_at || w.committed_at >= w.searched_at ||
       !same_stance(w.searched_from, w.state) || patient(w, w.searched_from) != patient(w, w.state))
     return false;
-  for (std::size_t j = 0; j < walkers.size(); ++j) {
+  std::vector<std::size_t> around;
+  now.grid.around(now.com[i], kFreezeRadius, around);
+  for (const std::size_t j : around) {
     if (j == i || distance(now.com[j], now.com[i]) > kFreezeRadius) continue;
     if (walkers[j].committed_at >= w.searched_at || !still_from(walkers[j].plan, w.searched_at))
       return false;
@@ -944,7 +956,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
         seconds[k] =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
       }
-      proposals[k] = propose(walkers, i, attempts[k], planner, near(walkers, i, at_tick));
+      proposals[k] = propose(walkers, i, attempts[k], planner, near(i, at_tick));
       job_seconds[k] =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     });
