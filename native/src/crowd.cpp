@@ -14,7 +14,8 @@
 // left) that rest in its way where it would go; they rest out of it. In a
 // face-off, where no one can rest ahead, those in the way of one bound
 // against them step aside to the nearest room (must_make_room()). One stalled
-// there, with one bound against it near, goes last (gives_way()).
+// there, with one bound against it near, goes last (gives_way()). One stuck
+// (stuck()) sleeps until one near it moves (wake_near()).
 //
 // Determinism: the searches of one tick read a snapshot (every plan as it
 // stood when the tick began) and may run on several threads; their results are
@@ -189,6 +190,9 @@ struct Walker {
   std::vector<KnownWay> ways;
   /// It goes after every other (gives_way(), as the tick began).
   bool giving_way = false;
+  /// Stuck (stuck()): it stands where its plan ends and replans no more,
+  /// until one near it moves on or asks it to make room (wake()).
+  bool dormant = false;
   bool done = false;
 };
 
@@ -389,12 +393,12 @@ Vec2 bound_of(const Walker& w, Vec2 at) {
 /// kept clear instead. In a queue, all bound one way, the order stands.
 bool gives_way(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now) {
   const Walker& w = walkers[i];
-  if (w.done || w.blocked < kGiveWayBlocked || patient(w, w.state)) return false;
+  if (w.done || w.dormant || w.blocked < kGiveWayBlocked || patient(w, w.state)) return false;
   const Vec2 bound = bound_of(w, now.com[i]);
   std::vector<std::size_t> around;
   now.grid.around(now.com[i], kJamDistance, around);
   for (const std::size_t j : around) {
-    if (j == i || walkers[j].done || !now.present[j] ||
+    if (j == i || walkers[j].done || walkers[j].dormant || !now.present[j] ||
         distance(now.com[j], now.com[i]) > kJamDistance)
       continue;
     if (dot(bound_of(walkers[j], now.com[j]), bound) < 0.0) return true;
@@ -631,22 +635,45 @@ std::vector<std::size_t> near(std::size_t i, const Snapshot& now) {
 }
 
 /// Lets the agent's provisional rest happen (it is no longer provisional),
-/// and if it would then stand before time `t`, has it stand until `t`: the
+/// and if it would then stand before time `t`, has it stand until `t` (in
+/// waits of kMaxWait at most: one woken after long stuck waits many): the
 /// next steps start now, not in the past.
 void rest_until(Walker& w, const FootstepPlanner& planner, double t) {
   if (w.resting > 0) {
     w.state = w.rested;
     w.resting = 0;
   }
-  if (w.state.time < t) {
+  bool waited = false;
+  while (w.state.time < t) {
     const StepResult wait = planner.stop_step(w.state, std::min(t - w.state.time, kMaxWait));
-    if (wait.valid()) {
-      w.plan.footsteps.push_back(wait.step);
-      w.bounds = PlanBounds(w.plan, planner.character());
-      w.samples = {};
-      w.state = wait.state;
-    }
+    if (!wait.valid()) break;
+    w.plan.footsteps.push_back(wait.step);
+    w.state = wait.state;
+    waited = true;
   }
+  if (waited) {
+    w.bounds = PlanBounds(w.plan, planner.character());
+    w.samples = {};
+  }
+}
+
+/// Wakes a dormant (stuck) agent: it replans from the next tick on, with
+/// kStuckAfter again to gain way.
+void wake(Walker& w, double t) {
+  w.dormant = false;
+  w.plan.reason.clear();
+  w.retry_at = t;
+  w.improved_at = t;
+}
+
+/// Wakes the dormant agents within kFreezeRadius of agent `i`, which has
+/// just committed steps that move: what held them may have moved on.
+void wake_near(std::vector<Walker>& walkers, std::size_t i, const Snapshot& now) {
+  std::vector<std::size_t> around;
+  now.grid.around(now.com[i], kFreezeRadius, around);
+  for (const std::size_t j : around)
+    if (walkers[j].dormant && distance(now.com[j], now.com[i]) <= kFreezeRadius)
+      wake(walkers[j], now.t);
 }
 
 /// Notes the way left, and when it last shortened by min_progress.
@@ -874,6 +901,7 @@ void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a,
       continue;
     if (std::find(other.yielding_to.begin(), other.yielding_to.end(), i) != other.yielding_to.end())
       continue;  // asked before
+    if (other.dormant) wake(other, t);
     other.yielding_to.push_back(i);
     other.retry_at = std::min(other.retry_at, t);
     other.news_at = t;
@@ -916,7 +944,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     std::vector<std::size_t> due;
     bool active = false;
     for (std::size_t i = 0; i < walkers.size(); ++i) {
-      if (walkers[i].done) continue;
+      if (walkers[i].done || walkers[i].dormant) continue;
       active = true;
       if (walkers[i].state.time - t <= kReplanLead && t >= walkers[i].retry_at) due.push_back(i);
     }
@@ -924,7 +952,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     const bool cancelled = control.cancelled();
     if (cancelled || t > planner.params().max_time) {
       for (Walker& w : walkers)
-        if (!w.done) w.plan.reason = cancelled ? "cancelled" : "time limit";
+        if (!w.done && !w.dormant) w.plan.reason = cancelled ? "cancelled" : "time limit";
       break;
     }
     if (due.empty()) continue;
@@ -977,6 +1005,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       const int refused = refusal(walkers, proposals[k], changed, planner);
       commit(walkers, i, a, proposals[k], refused, planner, t);
       changed[i] = 1;
+      if (w.committed_at == t) wake_near(walkers, i, at_tick);
       if (a.searched) {
         w.ways = std::move(attempts[k].ways);
         w.searched_at = t;
@@ -988,7 +1017,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       show_wish(walkers, i, attempts[k], planner, t, proposals[k].close);
       if (!w.done && stuck(walkers, i)) {
         w.plan.reason = "stuck";
-        w.done = true;
+        w.dormant = true;
       }
     }
     const auto now = std::chrono::steady_clock::now();

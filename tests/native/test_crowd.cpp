@@ -211,6 +211,20 @@ TEST(Crowd, BlocksMeetingHeadOnMakeRoomAndPass) {
   }
 }
 
+// Seed 28 of the table-1 crowd among boxes: agent347, waiting in a gap
+// between boxes at (9.2, 16.4), counts as stuck at 31.9 s. Standing there
+// for good, it held agent206 until that one was stuck too (498 of 500
+// reached). Stuck agents now only sleep: when one within 5 m commits steps
+// that move, agent347 searches again (at 33.9 s) and walks on.
+TEST(Crowd, AStuckAgentTriesAgainWhenOneNearMoves) {
+  RunControl control;
+  control.threads = 2;
+  const Plan plan = plan_scenario(box_field_crowd_scenario(500, 700, 28), control);
+  for (const AgentPlan& agent : plan.agents)
+    EXPECT_EQ(agent.status, AgentStatus::kReached) << agent.name << ": " << agent.reason;
+  EXPECT_EQ(measure_plan(plan).overlaps, 0);
+}
+
 // The crowd's checks take their bounds from PlanBounds, and pass over pairs
 // whose COM boxes keep apart: each must hold what it bounds, or a touch goes
 // unseen. Plans of an egress hold walks, waits, pivots and side steps.

@@ -90,8 +90,10 @@ inline bool present_at(const AgentPlan& plan, double t) {
 /// way to step out of it (yielding, docs/footstep-model.md). A reached last goal
 /// ends in a stop step, or for an agent that leaves at it, in the step that
 /// reaches it; an agent whose way has not shortened by min_progress
-/// for 15 s is "stuck"; the walk also ends at max_time ("time limit") or on
-/// cancel ("cancelled"). Deterministic, whatever `control.threads`.
+/// for 15 s is stuck: it waits until an agent near it moves, then tries
+/// again, and one still waiting when no one else walks on is "stuck"; the
+/// walk also ends at max_time ("time limit") or on cancel ("cancelled").
+/// Deterministic, whatever `control.threads`.
 std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
                                    const FootstepPlanner& planner, const NavMesh* mesh = nullptr,
                                    const RunControl& control = {});

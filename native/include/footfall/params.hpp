@@ -75,8 +75,8 @@ struct PlannerParams {
   /// Largest COM travel between two collision samples; circles are padded by
   /// half of it, so a thin obstacle is never stepped through. [m] [0.005, 0.05]
   double collision_sample_spacing = 0.05;
-  /// Three searches in a row that shorten the agent's way to its goal by less
-  /// than this mean "stuck"; the agent then stops. [m] (0, 10]
+  /// A search that shortens the agent's way to its goal by less than this
+  /// gains nothing; in a crowd, 15 s without a gain means stuck. [m] (0, 10]
   double min_progress = 0.05;
   /// Gaits tried at every expansion. Three are enough with the goal-directed
   /// phi (section 4); more cost time, not quality. [non-empty, at most 16]
