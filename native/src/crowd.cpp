@@ -244,13 +244,20 @@ struct Snapshot {
   std::vector<Vec2> com;
   std::vector<char> present;
   AgentGrid grid;  ///< com, for the agents near one (present or not).
+  /// Every plan's bounds from `bounds_from` on, read in a row by the commit
+  /// checks of the tick's trials from that time on (Trial::apart()), rather
+  /// than from each plan's own bounds. [s]
+  double bounds_from = 0.0;
+  std::vector<PlanBounds::From> bounds;
 };
 
 /// The snapshot at time t of the agents whose plans `walks` read (one each,
-/// kept from tick to tick: the step under way is found from the last tick's).
+/// kept from tick to tick: the step under way is found from the last tick's),
+/// with their bounds from `bounds_from` on.
 Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& walks, double t,
-                  Workers& workers) {
-  Snapshot s{t, std::vector<Vec2>(walkers.size()), std::vector<char>(walkers.size()), {}};
+                  double bounds_from, Workers& workers) {
+  Snapshot s{t,   std::vector<Vec2>(walkers.size()), std::vector<char>(walkers.size()), {},
+             bounds_from, std::vector<PlanBounds::From>(walkers.size())};
   // Shared out among the threads in parts of kPart agents: otherwise the
   // largest step of a tick outside its searches (the 500 among boxes).
   constexpr std::size_t kPart = 64;
@@ -258,6 +265,7 @@ Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& wal
     for (std::size_t j = part * kPart; j < std::min(walkers.size(), (part + 1) * kPart); ++j) {
       s.com[j] = walks[j].com_at(t).position;
       s.present[j] = present_at(walkers[j].plan, t);
+      s.bounds[j] = walkers[j].bounds.from(bounds_from);
     }
   });
   s.grid = AgentGrid(s.com, kGridCell);
@@ -765,7 +773,8 @@ struct Proposal {
 /// The trial that agent i's attempt makes, and its check against the plans
 /// of the agents `close` as they stand now.
 Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attempt& a,
-                 const FootstepPlanner& planner, std::vector<std::size_t> close) {
+                 const FootstepPlanner& planner, std::vector<std::size_t> close,
+                 const Snapshot& now) {
   const Walker& w = walkers[i];
   Proposal p;
   p.close = std::move(close);
@@ -790,8 +799,10 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
   p.trial = detail::Trial(std::move(plan), from, planner.character());
   // A new place to rest needs room among everyone, seen or not.
   p.new_place = !p.leaving && distance(p.rested.com, rest_of(w).com) > kSamePlace;
+  const bool bounded = p.trial.from() >= now.bounds_from;
   for (const std::size_t j : p.close)
-    p.hits.push_back(p.trial.touches(walkers[j].plan, walkers[j].bounds, &walkers[j].samples));
+    p.hits.push_back(!(bounded && p.trial.apart(now.bounds[j])) &&
+                     p.trial.touches(walkers[j].plan, walkers[j].bounds, &walkers[j].samples));
   p.no_room.assign(p.close.size(), 0);
   if (p.new_place) {
     const std::vector<char> clear = planner.stands_clear_of_each(p.rested, plans_of(walkers, p.close));
@@ -959,7 +970,15 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     // A plan that has run into its rest starts again from where that leaves it.
     for (std::size_t i : due)
       if (walkers[i].state.time < t) rest_until(walkers[i], planner, t);
-    const Snapshot at_tick = snapshot(walkers, walks, t, workers);
+    // The tick's trials differ from their agents' plans from the start of
+    // the last step each keeps on (propose()).
+    double trials_from = kForever;
+    for (const std::size_t i : due) {
+      const Walker& w = walkers[i];
+      const std::size_t kept = w.plan.footsteps.size() - w.resting;
+      trials_from = std::min(trials_from, kept > 0 ? w.plan.footsteps[kept - 1].start_time : w.state.time);
+    }
+    const Snapshot at_tick = snapshot(walkers, walks, t, trials_from, workers);
     for (std::size_t i = 0; i < walkers.size(); ++i)
       walkers[i].giving_way = gives_way(walkers, i, at_tick);
     std::vector<Attempt> attempts(due.size());
@@ -984,7 +1003,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
         seconds[k] =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
       }
-      proposals[k] = propose(walkers, i, attempts[k], planner, near(i, at_tick));
+      proposals[k] = propose(walkers, i, attempts[k], planner, near(i, at_tick), at_tick);
       job_seconds[k] =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     });

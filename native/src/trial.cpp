@@ -21,18 +21,25 @@ PlanSamples Trial::take_samples() {
   return std::move(samples_);
 }
 
+Trial::Reach Trial::reach_to(const PlanBounds::From& theirs) const {
+  const double closing = (bounds_from_.top_speed + theirs.top_speed) * kContactDt;
+  return {closing, bounds_from_.reach + theirs.reach + 0.5 * closing};
+}
+
+bool Trial::apart(const PlanBounds::From& theirs) const {
+  // Their COMs keep farther apart than `near` throughout: none is near.
+  const double near = reach_to(theirs).near;
+  return squared_distance(bounds_from_.com_box, theirs.com_box) > near * near;
+}
+
 bool Trial::touches(const AgentPlan& other, const PlanBounds& bounds,
                     const PlanSamples* samples) {
   const double end = std::max(plan_.end_time(), other.end_time()) + kContactDt;
+  const PlanBounds::From theirs = bounds.from(from_);
+  if (apart(theirs)) return false;
   // While the pair is far apart, instants they cannot close the distance
   // in are skipped (most of those checked are never near).
-  const PlanBounds::From& mine = bounds_from_;
-  const PlanBounds::From theirs = bounds.from(from_);
-  const double closing = (mine.top_speed + theirs.top_speed) * kContactDt;
-  // Farther apart than this, no circles of the pair come within the padding.
-  const double near = mine.reach + theirs.reach + 0.5 * closing;
-  // Their COMs keep farther apart than that throughout: none is near.
-  if (squared_distance(mine.com_box, theirs.com_box) > near * near) return false;
+  const auto [closing, near] = reach_to(theirs);
   // The gap where the trial starts (see touching()).
   double start_gap = std::numeric_limits<double>::infinity();
   const long first = first_contact_instant(from_);

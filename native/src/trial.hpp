@@ -31,12 +31,26 @@ class Trial {
   /// bounds are `bounds` and whose samples, as far as they were taken, are
   /// `samples` (may be null).
   bool touches(const AgentPlan& other, const PlanBounds& bounds, const PlanSamples* samples);
+  /// True if the trial keeps clear of any plan whose bounds from `from()` on
+  /// lie within `theirs`: touches() passes such a plan over at once. Bounds
+  /// from an earlier time hold those from a later one, so one `theirs` per
+  /// agent serves every trial from its time on.
+  bool apart(const PlanBounds::From& theirs) const;
+  /// The time from which the trial differs from the agent's plan. [s]
+  double from() const { return from_; }
 
  private:
   /// The trial at instant k (from `from` on), its circles too if `shaped`:
   /// sampled when first wanted, for it is checked against dozens of plans at
   /// the same instants.
   const PlanSample& at(long k, bool shaped) { return samples_.at(plan_, *character_, k, shaped); }
+  /// How far the trial and a plan with bounds `theirs` close in on each
+  /// other per instant at most, and how near they come before any circles of
+  /// the pair come within the padding.
+  struct Reach {
+    double closing, near;
+  };
+  Reach reach_to(const PlanBounds::From& theirs) const;
 
   AgentPlan plan_;
   const CharacterParams* character_ = nullptr;

@@ -227,7 +227,9 @@ TEST(Crowd, AStuckAgentTriesAgainWhenOneNearMoves) {
 
 // The crowd's checks take their bounds from PlanBounds, and pass over pairs
 // whose COM boxes keep apart: each must hold what it bounds, or a touch goes
-// unseen. Plans of an egress hold walks, waits, pivots and side steps.
+// unseen; and the bounds from a time hold those from any later time, as a
+// tick's checks take one agent's bounds for all its trials (Trial::apart).
+// Plans of an egress hold walks, waits, pivots and side steps.
 TEST(Crowd, PlanBoundsHoldWhatTheyBound) {
   const Plan plan = plan_scenario(egress_scenario(12, 1));
   const CharacterParams& character = plan.character;
@@ -246,6 +248,15 @@ TEST(Crowd, PlanBoundsHoldWhatTheyBound) {
         ASSERT_EQ(squared_distance(box, {com, com}), 0.0)
             << agent.name << " at " << t << " s, from " << from << " s";
       }
+    }
+    std::sort(times.begin(), times.end());
+    for (std::size_t k = 0; k + 1 < times.size(); ++k) {
+      const PlanBounds::From earlier = bounds.from(times[k]), later = bounds.from(times[k + 1]);
+      EXPECT_GE(earlier.top_speed, later.top_speed) << agent.name << " from " << times[k];
+      EXPECT_GE(earlier.reach, later.reach) << agent.name << " from " << times[k];
+      for (const Vec2 corner : {later.com_box.min, later.com_box.max})
+        EXPECT_EQ(squared_distance(earlier.com_box, {corner, corner}), 0.0)
+            << agent.name << " from " << times[k];
     }
   }
 }
