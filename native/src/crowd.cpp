@@ -256,8 +256,12 @@ struct Snapshot {
 /// with their bounds from `bounds_from` on.
 Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& walks, double t,
                   double bounds_from, Workers& workers) {
-  Snapshot s{t,   std::vector<Vec2>(walkers.size()), std::vector<char>(walkers.size()), {},
-             bounds_from, std::vector<PlanBounds::From>(walkers.size())};
+  Snapshot s{t,
+             std::vector<Vec2>(walkers.size()),
+             std::vector<char>(walkers.size()),
+             {},
+             bounds_from,
+             std::vector<PlanBounds::From>(walkers.size())};
   // Shared out among the threads in parts of kPart agents: otherwise the
   // largest step of a tick outside its searches (the 500 among boxes).
   constexpr std::size_t kPart = 64;
@@ -976,7 +980,8 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     for (const std::size_t i : due) {
       const Walker& w = walkers[i];
       const std::size_t kept = w.plan.footsteps.size() - w.resting;
-      trials_from = std::min(trials_from, kept > 0 ? w.plan.footsteps[kept - 1].start_time : w.state.time);
+      const double from = kept > 0 ? w.plan.footsteps[kept - 1].start_time : w.state.time;
+      trials_from = std::min(trials_from, from);
     }
     const Snapshot at_tick = snapshot(walkers, walks, t, trials_from, workers);
     for (std::size_t i = 0; i < walkers.size(); ++i)
