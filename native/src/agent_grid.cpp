@@ -14,8 +14,9 @@ AgentGrid::AgentGrid(const std::vector<Vec2>& positions, double cell) : agents_(
     low_ = {std::min(low_.x, p.x), std::min(low_.y, p.y)};
     high = {std::max(high.x, p.x), std::max(high.y, p.y)};
   }
-  // No more cells than agents: a crowd spread thin over kilometres would
-  // otherwise fill millions of empty cells at every tick.
+  // Cells no smaller than the crowd's area shared out among its agents: a
+  // crowd spread thin over kilometres would otherwise fill millions of empty
+  // cells at every tick.
   const double area = std::max(high.x - low_.x, cell) * std::max(high.y - low_.y, cell);
   cell_ = std::max(cell, std::sqrt(area / static_cast<double>(positions.size())));
   columns_ = static_cast<long>((high.x - low_.x) / cell_) + 1;

@@ -15,7 +15,8 @@ class AgentGrid {
  public:
   AgentGrid() = default;
   /// Buckets `positions` (one per agent, finite) in cells of side `cell`,
-  /// or larger where the crowd is sparse: about one agent a cell at most. [m]
+  /// or larger where the crowd is sparse: no smaller than the area the
+  /// positions span shared out among them. [m]
   AgentGrid(const std::vector<Vec2>& positions, double cell);
 
   /// Every agent in a cell that the square of half side `radius` round

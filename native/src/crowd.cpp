@@ -75,8 +75,9 @@ constexpr int kGiveWayBlocked = 6;
 constexpr double kForever = std::numeric_limits<double>::infinity();
 /// A blocked agent searches again only if something within this changed. [m]
 constexpr double kFreezeRadius = 5.0;
-/// The side of the cells the snapshot buckets agents in (at least: fewer
-/// cells than agents), about the nearest of the distances asked about. [m]
+/// The side of the cells the snapshot buckets agents in (at least; larger
+/// where they are spread thin), about the nearest of the distances asked
+/// about. [m]
 constexpr double kGridCell = 5.0;
 /// Rests closer than this are the same place. [m]
 constexpr double kSamePlace = 0.01;
