@@ -139,10 +139,10 @@ struct KnownWay {
 /// (the mesh does not change while the agents plan, so it would come out the
 /// same), else measured anew.
 Way way_toward(const std::vector<KnownWay>& known, const NavMesh* mesh,
-               const CharacterParams& character, Vec2 from, Vec2 goal) {
+               const CharacterParams& character, Vec2 from, Vec2 goal, bool roomy) {
   for (const KnownWay& k : known)
     if (k.from == from && k.goal == goal) return k.way;
-  return way_toward(mesh, character, from, goal);
+  return way_toward(mesh, character, from, goal, roomy);
 }
 
 /// One agent as the driver keeps it.
@@ -194,6 +194,9 @@ struct Walker {
   /// Stuck (stuck()): it stands where its plan ends and replans no more,
   /// until one near it moves on or asks it to make room (wake()).
   bool dormant = false;
+  /// Its ways to the current goal are the roomiest there are: it was stuck
+  /// once on the usual ones (take_roomy_ways()).
+  bool roomy = false;
   bool done = false;
 };
 
@@ -542,7 +545,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
                const NavMesh* mesh, const std::vector<std::size_t>& seen, const Snapshot& now) {
   const Walker& w = walkers[i];
   const Vec2 goal = w.spec->goals[w.goal];
-  const Way way = way_toward(w.ways, mesh, planner.character(), w.state.com, goal);
+  const Way way = way_toward(w.ways, mesh, planner.character(), w.state.com, goal, w.roomy);
   const LocalGoal target =
       keep_right(walkers, i, local_goal(planner, mesh, way), seen, now, planner, mesh);
   // One that leaves at this goal needs no room to rest there.
@@ -587,7 +590,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, others, keep_out, a);
   a.ways.push_back({w.state.com, goal, way});
   if (!a.reached) {
-    Way left = way_toward(w.ways, mesh, planner.character(), a.end.com, goal);
+    Way left = way_toward(w.ways, mesh, planner.character(), a.end.com, goal, w.roomy);
     a.way_left = left.length;
     a.ways.push_back({a.end.com, goal, std::move(left)});
   }
@@ -715,6 +718,22 @@ bool stuck(const std::vector<Walker>& walkers, std::size_t i) {
       return false;
   }
   return true;
+}
+
+/// A stuck agent (stuck()) tries once more, for another kStuckAfter, on the
+/// roomiest way there is (way_toward()). The tightest way, with room only to
+/// side-step, passes any gap the torso's circle fits through, but the
+/// footsteps need more (their checks pad the torso, and it turns at the
+/// corners): among boxes, agents stood for good where their ways led into
+/// slots 0.37 m wide. Its next search is news (nothing_new()).
+void take_roomy_ways(Walker& w, double t) {
+  w.roomy = true;
+  w.ways.clear();
+  // Its way is measured anew: a way round may be longer than the one it
+  // was stuck on, and still gain.
+  w.best_way = std::numeric_limits<double>::infinity();
+  w.improved_at = w.state.time;
+  w.news_at = t;
 }
 
 /// True if `plan` stands still from time `from` on.
@@ -896,6 +915,7 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a, Propo
   w.first_way = 0.0;
   w.best_way = std::numeric_limits<double>::infinity();
   w.improved_at = w.state.time;
+  w.roomy = false;
 }
 
 /// Shows agent i's wish, if its attempt found one and it is still blocked,
@@ -1041,8 +1061,12 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       }
       show_wish(walkers, i, attempts[k], planner, t, proposals[k].close);
       if (!w.done && stuck(walkers, i)) {
-        w.plan.reason = "stuck";
-        w.dormant = true;
+        if (!w.roomy) {
+          take_roomy_ways(w, t);
+        } else {
+          w.plan.reason = "stuck";
+          w.dormant = true;
+        }
       }
     }
     const auto now = std::chrono::steady_clock::now();

@@ -46,14 +46,17 @@ bool in_sight(const NavMesh* mesh, const CharacterParams& character, Vec2 from, 
 /// room to walk upright with a margin for the sway, just upright (half the
 /// torso width), or only to side-step (the torso circle), as through a gap
 /// narrower than the shoulders. With no way at all, the straight line, along
-/// which the local search finds what it can.
-Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal) {
+/// which the local search finds what it can. A `roomy` way (for an agent
+/// stuck once) is the first of the two with room to walk upright that there
+/// is, however long.
+Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal,
+               bool roomy) {
   Way way{{from, goal}, distance(from, goal)};
   if (mesh == nullptr) return way;
   const double upright = 0.5 * character.torso_width;
-  const auto roomy_enough = [](const PathResult& roomy, double tight_length) {
-    return roomy.status == PathStatus::kFound &&
-           roomy.length <= kRoomyDetour * tight_length + kRoomyExtra;
+  const auto roomy_enough = [roomy](const PathResult& path, double tight_length) {
+    return path.status == PathStatus::kFound &&
+           (roomy || path.length <= kRoomyDetour * tight_length + kRoomyExtra);
   };
   // The tight way is no shorter than the straight line: a roomiest way that
   // is not much longer than the line needs no tight way to compare with

@@ -18,7 +18,10 @@ struct Way {
 /// The way on `mesh`: the roomiest of three clearances (room to walk upright
 /// with a margin for the sway, just upright, or only to side-step) that is not
 /// much longer than the tightest; with no mesh or no path, the straight line.
-Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal);
+/// `roomy`: the roomier of the first two that has a way, however long (else
+/// as above).
+Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal,
+               bool roomy = false);
 
 /// Where the next search aims, and whether that is the goal itself.
 struct LocalGoal {

@@ -228,6 +228,26 @@ TEST(Crowd, AStuckAgentTriesAgainWhenOneNearMoves) {
   EXPECT_EQ(plan_to_json(plan_scenario(scenario)), plan_to_json(plan));
 }
 
+// A wall across the way with a slot 0.32 m wide: the torso circle (0.3 m
+// across) fits through, so the tightest way leads there, 6 m long, and the way
+// round the wall's end is far too long to be taken instead; but no footsteps
+// pass (a side step needs some 0.36 m). Stuck at the slot, the agent tries
+// the way round, and gets there.
+TEST(Crowd, AnAgentStuckAtASlotTooNarrowForItsStepsGoesRound) {
+  Scenario scenario;
+  const double slot = 0.32, half = 0.5 * slot;
+  scenario.obstacles.push_back(box_obstacle({-10.0 - half, 0.0}, {20.0, 0.5}));
+  scenario.obstacles.push_back(box_obstacle({10.0 + half, 0.0}, {20.0, 0.5}));
+  scenario.agents.push_back({"walker", {0.0, -3.0}, 0.5 * kPi, {{0.0, 3.0}}});
+  const Plan plan = plan_clear_of_each_other(scenario);
+  const AgentPlan& walker = plan.agents.front();
+  // It went round a wall's end.
+  double farthest = 0.0;
+  for (const Footstep& step : walker.footsteps)
+    farthest = std::max(farthest, std::fabs(step.com_end.x));
+  EXPECT_GT(farthest, 20.0);
+}
+
 // The crowd's checks take their bounds from PlanBounds, and pass over pairs
 // whose COM boxes keep apart: each must hold what it bounds, or a touch goes
 // unseen; and the bounds from a time hold those from any later time, as a
