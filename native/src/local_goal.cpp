@@ -14,9 +14,13 @@ constexpr double kSightBackOff = 0.6;
 /// ...down to this far along the way, past a corner or not. [m]
 constexpr double kMinAhead = 1.5;
 /// A roomier way is taken if it is at most this much longer than the
-/// tightest: kRoomyDetour times, plus kRoomyExtra.
-constexpr double kRoomyDetour = 1.25;
-constexpr double kRoomyExtra = 2.0;  // [m]
+/// tightest: kRoomyDetour times, plus kRoomyExtra. The tightest is dear and
+/// chancy for the footsteps (a side step through a gap narrower than the
+/// shoulders takes some 140 nodes, and a slot a little wider than the torso
+/// circle may pass none): a detour of up to 1.25 times plus 2 m left twice
+/// as many agents stuck among boxes (docs/footstep-model.md).
+constexpr double kRoomyDetour = 2.0;
+constexpr double kRoomyExtra = 6.0;  // [m]
 /// Room beside the shoulders, where there is room, for the body's sway. [m]
 constexpr double kSwayMargin = 0.25;
 
