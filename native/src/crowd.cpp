@@ -6,16 +6,14 @@
 // No overlaps: every plan ends with the agent coming to rest (a provisional
 // rest, replaced when the agent replans; an agent that leaves at its last goal
 // is gone after it instead), and a new plan is committed only if it keeps
-// clear of every other agent's plan, rest included, seen or not; otherwise
-// the agent waits where its rest leaves it. Every committed plan was checked
-// against everyone's rest, so waiting is always clear.
+// clear of every other agent's plan, rest included, seen or not
+// (crowd_commit.hpp); otherwise the agent waits where its rest leaves it.
+// Every committed plan was checked against everyone's rest, so waiting is
+// always clear.
 //
-// Yielding: a blocked agent shows the agents after it (in the order of way
-// left) that rest in its way where it would go; they rest out of it. In a
-// face-off, where no one can rest ahead, those in the way of one bound
-// against them step aside to the nearest room (must_make_room()). One stalled
-// there, with one bound against it near, goes last (gives_way()). One stuck
-// (stuck()) sleeps until one near it moves (wake_near()).
+// Making way: blocked agents ask those after them to rest out of their way
+// (crowd_yielding.hpp). One stuck (stuck()) sleeps until one near it moves
+// (wake_near()).
 //
 // Determinism: the searches of one tick read a snapshot (every plan as it
 // stood when the tick began) and may run on several threads; their results are
@@ -33,89 +31,19 @@
 #include <stdexcept>
 
 #include "agent_grid.hpp"
-#include "contact.hpp"
+#include "crowd_commit.hpp"
+#include "crowd_walker.hpp"
+#include "crowd_yielding.hpp"
 #include "footfall/agent_planner.hpp"
 #include "footfall/plan.hpp"
 #include "local_goal.hpp"
-#include "trial.hpp"
 #include "workers.hpp"
 
 namespace footfall {
-namespace {
 
-constexpr double kTick = 0.05;       ///< The scheduling tick (20 Hz). [s]
-constexpr double kReplanLead = 1.0;  ///< An agent replans when this little of its plan is left. [s]
-constexpr double kViewDistance = 30.0;  ///< Agents farther away are not seen. [m]
-/// An agent whose way has not shortened by min_progress for this long, nor
-/// that of any agent within kQueueDistance, is stuck. [s]
-constexpr double kStuckAfter = 15.0;
-constexpr double kQueueDistance = 4.0;     ///< [m]
-constexpr double kProgressInterval = 0.2;  ///< Between progress reports. [s]
-/// A new plan is checked against the agents this near now; none farther can
-/// reach it within a plan's few seconds. [m]
-constexpr double kCheckDistance = 40.0;
-/// Nodes a blocked agent's search expands at most (after a search that
-/// gained nothing), when one it sees stands within kJamDistance.
-constexpr int kBlockedHorizon = 100;
-/// Places aside an agent making room tries to reach, nearest first.
-constexpr std::size_t kAsideTries = 4;
-constexpr double kJamDistance = 3.0;  ///< [m]
-/// Nodes the search of an agent with someone it sees within kJamDistance
-/// expands without one nearer its goal before it stops (the planner's
-/// stall_expansions, 300, is for one held up by obstacles): in a jam, a way
-/// forward shows within a few nodes or is not there yet.
-constexpr int kJamStall = 15;
-/// An agent whose way has not shortened by min_progress for this long
-/// searches as if alone again, for a way out that a short search misses. [s]
-constexpr double kJamPatience = 5.0;
-/// Searches in a row without progress after which an impatient agent gives
-/// way to all (gives_way()).
-constexpr int kGiveWayBlocked = 6;
-/// Longer ago than any time: "never". [s]
-constexpr double kForever = std::numeric_limits<double>::infinity();
-/// A blocked agent searches again only if something within this changed. [m]
-constexpr double kFreezeRadius = 5.0;
-/// The side of the cells the snapshot buckets agents in (at least; larger
-/// where they are spread thin), about the nearest of the distances asked
-/// about. [m]
-constexpr double kGridCell = 5.0;
-/// Rests closer than this are the same place. [m]
-constexpr double kSamePlace = 0.01;
-/// Noticed agents are kept in mind while they are this near. [m]
-constexpr double kNoticeDistance = 3.0;
-/// Searches take walking agents to stand where their plans end for this
-/// long only: they will plan on (SearchOptions::rest_grace). [s]
-constexpr double kRestGrace = 1.0;
-/// Longest single wait step. [s]
-constexpr double kMaxWait = 5.0;
-/// An agent whose search found nothing it could commit tries again this much
-/// later, not at every tick: a blocked agent's searches would cost the most;
-/// after each further failure in a row it waits twice as long, up to
-/// kRetryAfter * 2^kMaxBackoff (someone queueing at an exit need not look
-/// for a way out ten times a second). [s]
-constexpr double kRetryAfter = 0.1;
-constexpr int kMaxBackoff = 3;
-/// How far along its wish a blocked agent asks others to make room. [m]
-constexpr double kWishReach = 2.5;
-/// About as far as an agent's circles reach from its COM. [m]
-constexpr double kBodyLength = 1.0;
-/// Room to pass that the others leave beside a wish (more than a search's
-/// padding between samples). [m]
-constexpr double kWishPad = 0.05;
-/// Keeping right in counterflow (keep_right()): an agent with kKeepRightRoom
-/// round it that sees one walking the other way (at kOncomingSpeed or faster
-/// against the line to its local goal, and bound that way) within
-/// kKeepRightAhead ahead and kKeepRightBand beside that line moves its local
-/// goal up to kKeepRightShift to its right, where there is kKeepRightRoom all
-/// along the way there (not through a door). The room is a little less than
-/// a torso's width (0.6 m): with 1.5 m, those walking near a wall, the ones
-/// most in the way, never kept right, and a hall 8 m wide jammed for 3 seeds
-/// of 8 (of 30 seeds, 26 now reach 200 of 200).
-constexpr double kKeepRightAhead = 30.0;  ///< [m]
-constexpr double kKeepRightBand = 2.0;    ///< [m]
-constexpr double kOncomingSpeed = 0.8;    ///< [m/s]
-constexpr double kKeepRightShift = 3.0;   ///< [m]
-constexpr double kKeepRightRoom = 0.5;    ///< [m]
+using namespace crowd;
+
+namespace {
 
 void check_agent(const AgentSpec& agent) {
   if (agent.goals.empty()) throw std::invalid_argument("agent " + agent.name + ": has no goals");
@@ -129,12 +57,6 @@ void check_agent(const AgentSpec& agent) {
   }
 }
 
-/// A way measured on the navigation mesh, from where to which goal.
-struct KnownWay {
-  Vec2 from, goal;
-  Way way;
-};
-
 /// The way from `from` to `goal`: one of `known` if it starts and ends there
 /// (the mesh does not change while the agents plan, so it would come out the
 /// same), else measured anew.
@@ -142,118 +64,8 @@ Way way_toward(const std::vector<KnownWay>& known, const NavMesh* mesh,
                const CharacterParams& character, Vec2 from, Vec2 goal, bool roomy) {
   for (const KnownWay& k : known)
     if (k.from == from && k.goal == goal) return k.way;
-  return way_toward(mesh, character, from, goal, roomy);
+  return footfall::way_toward(mesh, character, from, goal, roomy);
 }
-
-/// One agent as the driver keeps it.
-struct Walker {
-  const AgentSpec* spec = nullptr;
-  AgentPlan plan;        ///< Its steps, ending with `resting` provisional rest steps.
-  PlanBounds bounds;     ///< Of `plan`, rebuilt whenever it changes.
-  /// Of `plan`, those its commit check took; dropped whenever it changes.
-  detail::PlanSamples samples;
-  FootstepState state;   ///< Where the next search starts: before the rest.
-  FootstepState rested;  ///< After the rest.
-  std::size_t resting = 0;
-  std::size_t goal = 0;
-  double retry_at = 0.0;            ///< No search before this time. [s]
-  int failures = 0;                 ///< Searches in a row that gave nothing to commit.
-  int blocked = 0;                  ///< Searches in a row that committed no progress.
-  double searched_at = -kForever;   ///< Tick of its last search. [s]
-  FootstepState searched_from;      ///< Where its last search started.
-  double committed_at = -kForever;  ///< Tick its plan last changed by a commit. [s]
-  /// Tick it was last asked to make room, or noticed an agent. [s]
-  double news_at = -kForever;
-  /// Seconds its last search and check took: a guess at the next one's cost
-  /// (only the order in which a tick's jobs start depends on it).
-  double last_cost = 0.0;
-  double first_way = 0.0;  ///< Way to the current goal when it was first measured. [m]
-  double best_way = std::numeric_limits<double>::infinity();  ///< Shortest way left so far. [m]
-  double improved_at = 0.0;  ///< Plan time when best_way last shortened by min_progress. [s]
-  /// Agents a plan of this one's was refused for touching (or for resting
-  /// too close to), while they stay within kNoticeDistance: seen or not, its
-  /// searches avoid them (it has bumped into them). Without them, an agent
-  /// that does not see who is in its way finds the same refused plan again
-  /// at every retry.
-  std::vector<std::size_t> noticed;
-  /// Way left from `state`, at its last search: who goes first. [m]
-  double way = std::numeric_limits<double>::infinity();
-  /// While blocked, its wish: the first kWishReach of the way it would take
-  /// if the agents that go after it made room, as the circles it sweeps
-  /// (wish_discs; empty: none). Those resting there are asked to keep out.
-  KeepOut wish;
-  /// Its wish is the way out of the wishes of others (must_make_room()):
-  /// those in it make room too, whichever way they are bound.
-  bool wish_makes_room = false;
-  /// Agents whose wishes this one was asked to keep out of.
-  std::vector<std::size_t> yielding_to;
-  /// The ways its last search measured (Attempt::ways).
-  std::vector<KnownWay> ways;
-  /// It goes after every other (gives_way(), as the tick began).
-  bool giving_way = false;
-  /// Stuck (stuck()): it stands where its plan ends and replans no more,
-  /// until one near it moves on or asks it to make room (wake()).
-  bool dormant = false;
-  /// Its ways to the current goal are the roomiest there are: it was stuck
-  /// once on the usual ones (take_roomy_ways()).
-  bool roomy = false;
-  bool done = false;
-};
-
-/// True if walker `w`, searching from `state`, has gained way within
-/// kJamPatience (its search in a jam may stop early).
-bool patient(const Walker& w, const FootstepState& state) {
-  return state.time - w.improved_at < kJamPatience;
-}
-
-/// True if agent `a` goes before agent `b` where their ways cross: one that
-/// gives way goes after one that does not; then the one with less way left,
-/// then the earlier in the scenario.
-bool goes_first(const std::vector<Walker>& walkers, std::size_t a, std::size_t b) {
-  const Walker &first = walkers[a], &second = walkers[b];
-  if (first.giving_way != second.giving_way) return second.giving_way;
-  return first.way < second.way || (first.way == second.way && a < b);
-}
-
-/// True if steps that reach the walker's current goal end its walk there.
-bool leaves_now(const Walker& w, bool reached) {
-  return reached && w.spec->leave_at_goal && w.goal + 1 == w.spec->goals.size();
-}
-
-/// What one search gave, before it is committed.
-struct Attempt {
-  std::vector<Footstep> steps;
-  FootstepState end;
-  Rest rest;             ///< After the steps, among the agents the search saw.
-  bool reached = false;  ///< The steps reach the current goal itself.
-  double way_left = 0.0;
-  double way_from = 0.0;  ///< Way left at the start. [m]
-  /// The agent's wish (Walker::wish), when it is blocked; empty otherwise.
-  KeepOut wish;
-  bool wish_makes_room = false;  ///< Walker::wish_makes_room.
-  int nodes_generated = 0, nodes_expanded = 0;
-  bool searched = false;
-  FootstepState from;  ///< Where the search started.
-  /// The ways it measured, from where it started and, unless the steps reach
-  /// the goal, from their end: the agent's next search mostly starts at one
-  /// of them (among boxes, measuring ways took a ninth of the planning).
-  std::vector<KnownWay> ways;
-};
-
-/// Where every agent is at a tick's time t, and whether it is still there.
-/// The tick's commits change plans only from t on (a due agent's plan runs
-/// to t or beyond before it searches), so this holds for the whole tick.
-struct Snapshot {
-  double t = 0.0;
-  std::vector<Vec2> com;
-  std::vector<char> present;
-  AgentGrid grid;  ///< com, for the agents near one (present or not).
-  /// Every plan's bounds from `bounds_from` on, read in a row by the commit
-  /// checks of the tick's trials from that time on (Trial::apart()), rather
-  /// than from each plan's own bounds. [s]
-  double bounds_from = 0.0;
-  std::vector<PlanBounds::From> bounds;
-};
 
 /// The snapshot at time t of the agents whose plans `walks` read (one each,
 /// kept from tick to tick: the step under way is found from the last tick's),
@@ -336,44 +148,6 @@ void cut_to_rest(const FootstepPlanner& planner, const FootstepState& start,
   a.reached = false;
 }
 
-/// True while agent `w` shows a wish.
-bool wishing(const Walker& w) { return !w.wish.empty(); }
-
-/// Agent `w`'s plan, as others keep clear of it.
-MovingObstacle obstacle_of(const Walker& w) { return {&w.plan, &w.bounds, &w.samples}; }
-
-/// The plans of agents `which`.
-MovingObstacles plans_of(const std::vector<Walker>& walkers,
-                         const std::vector<std::size_t>& which) {
-  MovingObstacles plans;
-  plans.reserve(which.size());
-  for (const std::size_t j : which) plans.push_back(obstacle_of(walkers[j]));
-  return plans;
-}
-
-/// What a wish along `steps` keeps others out of, until its COM is
-/// kWishReach from where it set off: the torso circles every kContactDt and
-/// the planted feet, grown by kWishPad (room to pass); and where the steps
-/// end, if within reach, room to rest.
-KeepOut wish_discs(const std::vector<Footstep>& steps, const CharacterParams& character) {
-  KeepOut discs;
-  const Vec2 from = steps.front().com_start;
-  for (const Footstep& step : steps) {
-    discs.push_back({step.foot_position, character.foot_radius + kWishPad});
-    for (long k = first_contact_instant(step.start_time);
-         static_cast<double>(k) * kContactDt <= step.end_time; ++k) {
-      const Vec2 com = com_at(step, static_cast<double>(k) * kContactDt).position;
-      if (distance(com, from) > kWishReach) return discs;
-      for (Circle circle : torso_circles(com, step.phi, character)) {
-        circle.radius += kWishPad;
-        discs.push_back(circle);
-      }
-    }
-  }
-  discs.push_back({steps.back().com_end, 0.5 * character.torso_width + kRestRoom});
-  return discs;
-}
-
 /// Keeps only the attempt's leading pivots, if it has any: a character that
 /// starts with its back to where it is going has not seen who is there (it
 /// sees only in front of its torso), so it turns first and plans the rest
@@ -392,148 +166,6 @@ void turn_first(const FootstepState& start, Attempt& a) {
   a.steps.resize(pivots);
   a.end = state;
   a.reached = false;
-}
-
-/// Where walker `w`, at `at`, is bound: the way to its current goal (its last
-/// once it has reached them all).
-Vec2 bound_of(const Walker& w, Vec2 at) {
-  return w.spec->goals[std::min(w.goal, w.spec->goals.size() - 1)] - at;
-}
-
-/// True if agent i gives way to all: blocked kGiveWayBlocked searches in a
-/// row, its patience run out (its way has not shortened for kJamPatience),
-/// with one bound against it (their goals more than 90 degrees apart) within
-/// kJamDistance. In a knot (agents bound every way in a gap between boxes,
-/// all waiting) the one that goes first may have nowhere to go that the
-/// others can make room for; it then goes last, and the next one's wish is
-/// kept clear instead. In a queue, all bound one way, the order stands.
-bool gives_way(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now) {
-  const Walker& w = walkers[i];
-  if (w.done || w.dormant || w.blocked < kGiveWayBlocked || patient(w, w.state)) return false;
-  const Vec2 bound = bound_of(w, now.com[i]);
-  std::vector<std::size_t> around;
-  now.grid.around(now.com[i], kJamDistance, around);
-  for (const std::size_t j : around) {
-    if (j == i || walkers[j].done || walkers[j].dormant || !now.present[j] ||
-        distance(now.com[j], now.com[i]) > kJamDistance)
-      continue;
-    if (dot(bound_of(walkers[j], now.com[j]), bound) < 0.0) return true;
-  }
-  return false;
-}
-
-/// The local goal moved to the right of the line from agent i to it (by
-/// kKeepRightShift, else by less, 0.5 m at the least, where it could stand
-/// with room all along the way there), if one it sees walks the other way
-/// ahead near that line and it has room round it; `target` otherwise. Lanes
-/// form before two blocks of agents meet: in a hall 8 m wide, two hundred
-/// walking both ways stood wall to wall in the middle without it.
-LocalGoal keep_right(const std::vector<Walker>& walkers, std::size_t i, LocalGoal target,
-                     const std::vector<std::size_t>& seen, const Snapshot& now,
-                     const FootstepPlanner& planner, const NavMesh* mesh) {
-  const Vec2 from = walkers[i].state.com, to = target.point - from;
-  if (target.is_goal || length(to) < 1e-6) return target;
-  const Vec2 ahead = unit(angle_of(to));
-  const bool oncoming = std::any_of(seen.begin(), seen.end(), [&](std::size_t j) {
-    const Vec2 d = now.com[j] - from;
-    const double along = dot(d, ahead);
-    if (along <= 0.0 || along > kKeepRightAhead || std::fabs(cross(ahead, d)) > kKeepRightBand)
-      return false;
-    // Walking this way, and bound this way too: not one stepping back to
-    // make room (near a door, all bound the same way).
-    const Vec2 bound = bound_of(walkers[j], now.com[j]);
-    return dot(com_at(walkers[j].plan, now.t).velocity, ahead) < -kOncomingSpeed &&
-           dot(bound, ahead) < -0.5 * length(bound);
-  });
-  if (!oncoming || (mesh != nullptr && mesh->clearance(from) < kKeepRightRoom)) return target;
-  for (double shift = kKeepRightShift; shift >= 0.5; shift -= 0.5) {
-    const Vec2 point = target.point - shift * perp(ahead);
-    if (planner.room_to_turn(point) &&
-        !planner.collides(standing_state(point, angle_of(to), planner.character())) &&
-        (mesh == nullptr ||
-         mesh->clearance_between(from, point, kKeepRightRoom) >= kKeepRightRoom))
-      return {point, false};
-  }
-  return target;
-}
-
-/// True if `step` neither moves the COM nor turns the torso from `facing`.
-bool still(const Footstep& step, double facing) {
-  return step.kind == StepKind::kStop && step.phi == facing &&
-         length(step.com_velocity_start) == 0.0 && length(step.com_velocity_end) == 0.0;
-}
-
-/// The nearest places round `state` (in rings 0.75 m apart, up to 2.25 m)
-/// where the agent could stand out of `keep_out`, clear of the obstacles and
-/// of the plans of `others`, nearest first (of those on one ring, the one
-/// with the most room round it, from the others where they are now); at most
-/// kAsideTries of them.
-std::vector<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_out,
-                             const MovingObstacles& others, const FootstepPlanner& planner,
-                             const NavMesh* mesh) {
-  constexpr int kDirections = 16, kRings = 3;
-  constexpr double kRingStep = 0.75;  // [m]
-  const double half_torso = 0.5 * planner.character().torso_width;
-  std::vector<Vec2> now;
-  for (const MovingObstacle& other : others) now.push_back(com_at(*other.plan, state.time).position);
-  struct Place {
-    FootstepState standing;
-    double ring, room;
-  };
-  std::vector<Place> places;
-  for (int r = 1; r <= kRings; ++r) {
-    const double ring = kRingStep * r;
-    for (int k = 0; k < kDirections; ++k) {
-      const Vec2 point = state.com + ring * unit(2.0 * kPi * k / kDirections);
-      double room = std::numeric_limits<double>::infinity();
-      for (const Vec2 where : now) room = std::min(room, distance(where, point));
-      if (room < planner.character().torso_width) continue;  // another stands there now
-      FootstepState there = standing_state(point, state.facing, planner.character());
-      there.time = state.time;
-      if (!planner.room_to_turn(point) || !planner.keeps_out(there, keep_out) ||
-          planner.collides(there) ||
-          (mesh != nullptr && mesh->clearance_between(state.com, point, half_torso) < half_torso))
-        continue;
-      places.push_back({there, ring, room});
-    }
-  }
-  std::stable_sort(places.begin(), places.end(), [](const Place& a, const Place& b) {
-    return a.ring < b.ring || (a.ring == b.ring && a.room > b.room);
-  });
-  std::vector<FootstepState> states;
-  for (const Place& place : places) states.push_back(place.standing);
-  std::vector<Vec2> clear;
-  for (const std::size_t k : planner.standing_clear(states, others, kAsideTries))
-    clear.push_back(states[k].com);
-  return clear;
-}
-
-/// Steps to the nearest place that room_aside() offers and a search of
-/// `options` reaches (the nearest may be behind the very agents it makes
-/// room for); none if no such search succeeds.
-std::optional<SearchResult> step_aside(const FootstepState& state, const KeepOut& keep_out,
-                                       const MovingObstacles& others,
-                                       const FootstepPlanner& planner, const NavMesh* mesh,
-                                       const SearchOptions& options) {
-  for (const Vec2 place : room_aside(state, keep_out, others, planner, mesh)) {
-    SearchResult result = planner.plan(state, place, others, options);
-    if (result.status == Status::kSuccess && !result.footsteps.empty()) return result;
-  }
-  return std::nullopt;
-}
-
-/// True if agent i stands in the wish of one it yields to that is bound
-/// against it (their goals more than 90 degrees apart), or whose wish makes
-/// room for such a one. Among agents bound the same way (a queue at a door)
-/// a wish passes once those ahead move on.
-bool must_make_room(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now,
-                    const FootstepPlanner& planner) {
-  const Walker& w = walkers[i];
-  const Vec2 bound = bound_of(w, w.state.com);
-  return std::any_of(w.yielding_to.begin(), w.yielding_to.end(), [&](std::size_t j) {
-    return (walkers[j].wish_makes_room || dot(bound_of(walkers[j], now.com[j]), bound) < 0.0) &&
-           !planner.keeps_out(w.state, walkers[j].wish);
-  });
 }
 
 /// Agent i's next search: toward its local goal, among the plans of the
@@ -564,8 +196,9 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   const SearchOptions options{leaves, keep_out, w.blocked >= 1 && jammed ? kBlockedHorizon : 0,
                               kRestGrace, jammed && patient(w, w.state) ? kJamStall : 0};
   SearchResult result = planner.plan(w.state, target.point, others, options);
-  const bool moves = std::any_of(result.footsteps.begin(), result.footsteps.end(),
-                                 [&](const Footstep& step) { return !still(step, w.state.facing); });
+  const bool moves =
+      std::any_of(result.footsteps.begin(), result.footsteps.end(),
+                  [&](const Footstep& step) { return !still(step, w.state.facing); });
   SearchOptions short_search = options;
   short_search.horizon = kBlockedHorizon;
   // Standing where it must make room, with nowhere to go but aside.
@@ -650,38 +283,6 @@ std::vector<std::size_t> near(std::size_t i, const Snapshot& now) {
   return out;
 }
 
-/// Lets the agent's provisional rest happen (it is no longer provisional),
-/// and if it would then stand before time `t`, has it stand until `t` (in
-/// waits of kMaxWait at most: one woken after long stuck waits many): the
-/// next steps start now, not in the past.
-void rest_until(Walker& w, const FootstepPlanner& planner, double t) {
-  if (w.resting > 0) {
-    w.state = w.rested;
-    w.resting = 0;
-  }
-  bool waited = false;
-  while (w.state.time < t) {
-    const StepResult wait = planner.stop_step(w.state, std::min(t - w.state.time, kMaxWait));
-    if (!wait.valid()) break;
-    w.plan.footsteps.push_back(wait.step);
-    w.state = wait.state;
-    waited = true;
-  }
-  if (waited) {
-    w.bounds = PlanBounds(w.plan, planner.character());
-    w.samples = {};
-  }
-}
-
-/// Wakes a dormant (stuck) agent: it replans from the next tick on, with
-/// kStuckAfter again to gain way.
-void wake(Walker& w, double t) {
-  w.dormant = false;
-  w.plan.reason.clear();
-  w.retry_at = t;
-  w.improved_at = t;
-}
-
 /// Wakes the dormant agents within kFreezeRadius of agent `i`, which has
 /// just committed steps that move: what held them may have moved on.
 void wake_near(std::vector<Walker>& walkers, std::size_t i, const Snapshot& now) {
@@ -690,15 +291,6 @@ void wake_near(std::vector<Walker>& walkers, std::size_t i, const Snapshot& now)
   for (const std::size_t j : around)
     if (walkers[j].dormant && distance(now.com[j], now.com[i]) <= kFreezeRadius)
       wake(walkers[j], now.t);
-}
-
-/// Notes the way left, and when it last shortened by min_progress.
-void progress(Walker& w, double way_left, const FootstepPlanner& planner) {
-  if (w.first_way == 0.0) w.first_way = way_left;
-  if (way_left < w.best_way - planner.params().min_progress) {
-    w.best_way = way_left;
-    w.improved_at = w.state.time;
-  }
 }
 
 /// True if agent `i` is stuck: its way has not shortened by min_progress for
@@ -774,174 +366,6 @@ bool nothing_new(const std::vector<Walker>& walkers, std::size_t i, const Snapsh
       return false;
   }
   return true;
-}
-
-/// The state agent `w` stands in after its plan.
-const FootstepState& rest_of(const Walker& w) { return w.resting > 0 ? w.rested : w.state; }
-
-/// An attempt as it would stand in its agent's plan, and what the commit
-/// check finds against each agent near as the tick began. Made for every
-/// due agent at once (on the workers): in the agents' order, only the plans
-/// committed before it in the same tick need checking again (refusal()).
-struct Proposal {
-  std::vector<Footstep> steps;     ///< The attempt's steps, then (unless it leaves) its rest.
-  FootstepState rested;            ///< Where they leave the agent.
-  bool leaving = false;            ///< It walks on through its last goal.
-  detail::Trial trial;             ///< The plan with them in place of the old rest.
-  bool new_place = false;          ///< It rests somewhere new: it needs room there.
-  std::vector<std::size_t> close;  ///< The agents near (near()).
-  std::vector<char> hits;          ///< Per close: the trial touches its plan.
-  std::vector<char> no_room;       ///< Per close: no room to rest beside it (new_place).
-};
-
-/// The trial that agent i's attempt makes, and its check against the plans
-/// of the agents `close` as they stand now.
-Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attempt& a,
-                 const FootstepPlanner& planner, std::vector<std::size_t> close,
-                 const Snapshot& now) {
-  const Walker& w = walkers[i];
-  Proposal p;
-  p.close = std::move(close);
-  p.steps = a.steps;
-  p.rested = a.end;
-  // One that leaves at its last goal walks on through it; the others come to rest.
-  p.leaving = leaves_now(w, a.reached);
-  if (!p.leaving) {
-    p.steps.insert(p.steps.end(), a.rest.steps.begin(), a.rest.steps.end());
-    p.rested = a.rest.state;
-  }
-  if (a.steps.empty()) return p;
-  AgentPlan plan;
-  plan.leaves = p.leaving;
-  plan.start = w.plan.start;
-  const std::size_t kept = w.plan.footsteps.size() - w.resting;
-  plan.footsteps.assign(w.plan.footsteps.begin(), w.plan.footsteps.begin() + kept);
-  plan.footsteps.insert(plan.footsteps.end(), p.steps.begin(), p.steps.end());
-  // During the last kept step the free foot swings toward the next step's
-  // foot (feet_at): that step's circles change with the new steps too.
-  const double from = kept > 0 ? plan.footsteps[kept - 1].start_time : a.steps.front().start_time;
-  p.trial = detail::Trial(std::move(plan), from, planner.character());
-  // A new place to rest needs room among everyone, seen or not.
-  p.new_place = !p.leaving && distance(p.rested.com, rest_of(w).com) > kSamePlace;
-  const bool bounded = p.trial.from() >= now.bounds_from;
-  for (const std::size_t j : p.close)
-    p.hits.push_back(!(bounded && p.trial.apart(now.bounds[j])) &&
-                     p.trial.touches(walkers[j].plan, walkers[j].bounds, &walkers[j].samples));
-  p.no_room.assign(p.close.size(), 0);
-  if (p.new_place) {
-    const std::vector<char> clear = planner.stands_clear_of_each(p.rested, plans_of(walkers, p.close));
-    for (std::size_t c = 0; c < clear.size(); ++c) p.no_room[c] = !clear[c];
-  }
-  return p;
-}
-
-/// The index in p.close of the agent the trial is refused for: the first it
-/// touches, else (resting somewhere new) the first it has no room beside;
-/// -1 if none. The plans of agents `changed` this tick are checked anew.
-int refusal(const std::vector<Walker>& walkers, Proposal& p, const std::vector<char>& changed,
-            const FootstepPlanner& planner) {
-  if (p.trial.plan().footsteps.empty()) return -1;
-  for (std::size_t c = 0; c < p.close.size(); ++c) {
-    const Walker& other = walkers[p.close[c]];
-    if (changed[p.close[c]] ? p.trial.touches(other.plan, other.bounds, &other.samples) : p.hits[c])
-      return static_cast<int>(c);
-  }
-  if (!p.new_place) return -1;
-  for (std::size_t c = 0; c < p.close.size(); ++c) {
-    if (changed[p.close[c]] ? !planner.stands_clear(p.rested, {obstacle_of(walkers[p.close[c]])})
-                            : p.no_room[c])
-      return static_cast<int>(c);
-  }
-  return -1;
-}
-
-/// Adds the attempt's steps and a provisional rest after them to agent i's
-/// plan, in place of its old rest, unless the proposal was refused (for
-/// p.close[refused]); then the old rest happens and the agent waits there.
-/// Then goals reached and progress.
-void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a, Proposal& p, int refused,
-            const FootstepPlanner& planner, double t) {
-  Walker& w = walkers[i];
-  if (a.searched) {
-    ++w.plan.searches;
-    w.plan.nodes_generated += a.nodes_generated;
-    w.plan.nodes_expanded += a.nodes_expanded;
-  }
-  if (refused >= 0) {
-    if (std::find(w.noticed.begin(), w.noticed.end(), p.close[refused]) == w.noticed.end())
-      w.noticed.push_back(p.close[refused]);
-    w.news_at = t;
-  }
-  if (a.steps.empty() || refused >= 0) {
-    rest_until(w, planner, t);
-    w.retry_at = t + kRetryAfter * (1 << std::min(w.failures++, kMaxBackoff));
-    if (!(a.reached && a.steps.empty())) {  // at the goal already, or waiting
-      progress(w, w.best_way, planner);
-      return;
-    }
-  } else {
-    // Waiting on where it stands is no news to the others.
-    if (!std::all_of(p.steps.begin(), p.steps.end(),
-                     [&](const Footstep& step) { return still(step, w.state.facing); }))
-      w.committed_at = t;
-    w.failures = 0;
-    // Those noticed stay in mind while they are near.
-    const Vec2 here = com_at(w.plan, t).position;
-    w.noticed.erase(std::remove_if(w.noticed.begin(), w.noticed.end(),
-                                   [&](std::size_t j) {
-                                     return distance(com_at(walkers[j].plan, t).position, here) >
-                                            kNoticeDistance;
-                                   }),
-                    w.noticed.end());
-    w.samples = p.trial.take_samples();
-    w.plan.footsteps = std::move(p.trial.plan().footsteps);
-    w.bounds = std::move(p.trial.bounds());
-    w.resting = p.steps.size() - a.steps.size();
-    w.state = a.end;
-    w.rested = p.rested;
-  }
-  if (!a.reached) {
-    progress(w, a.way_left, planner);
-    return;
-  }
-  ++w.plan.goals_reached;
-  if (++w.goal == w.spec->goals.size()) {
-    w.plan.status = AgentStatus::kReached;
-    w.plan.leaves = w.spec->leave_at_goal;
-    w.samples = {};  // taken before it could leave at its goal
-    w.done = true;
-    return;
-  }
-  w.first_way = 0.0;
-  w.best_way = std::numeric_limits<double>::infinity();
-  w.improved_at = w.state.time;
-  w.roomy = false;
-}
-
-/// Shows agent i's wish, if its attempt found one and it is still blocked,
-/// to the agents `near` that go after it and rest in it: they keep out of it,
-/// searching again at the next tick. Otherwise withdraws it.
-void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a,
-               const FootstepPlanner& planner, double t, const std::vector<std::size_t>& near) {
-  Walker& w = walkers[i];
-  if (w.done || w.blocked == 0 || a.wish.empty()) {
-    w.wish.clear();
-    w.wish_makes_room = false;
-    return;
-  }
-  w.wish = std::move(a.wish);
-  w.wish_makes_room = a.wish_makes_room;
-  for (const std::size_t j : near) {
-    Walker& other = walkers[j];
-    if (other.done || goes_first(walkers, j, i) || planner.keeps_out(rest_of(other), w.wish))
-      continue;
-    if (std::find(other.yielding_to.begin(), other.yielding_to.end(), i) != other.yielding_to.end())
-      continue;  // asked before
-    if (other.dormant) wake(other, t);
-    other.yielding_to.push_back(i);
-    other.retry_at = std::min(other.retry_at, t);
-    other.news_at = t;
-  }
 }
 
 /// How far the walker is: its goals reached, and the way to the current one.
