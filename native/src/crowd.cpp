@@ -24,9 +24,11 @@
 // threads too, with the search (propose()); only plans changed earlier in the
 // tick are checked in order (refusal()).
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 
@@ -69,26 +71,23 @@ Way way_toward(const std::vector<KnownWay>& known, const NavMesh* mesh,
 
 /// The snapshot at time t of the agents whose plans `walks` read (one each,
 /// kept from tick to tick: the step under way is found from the last tick's),
-/// with their bounds from `bounds_from` on.
+/// with their bounds from `bounds_from` on, and who gives way.
 Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& walks, double t,
-                  double bounds_from, Workers& workers) {
+                  double bounds_from) {
   Snapshot s{t,
              std::vector<Vec2>(walkers.size()),
              std::vector<char>(walkers.size()),
              {},
              bounds_from,
-             std::vector<PlanBounds::From>(walkers.size())};
-  // Shared out among the threads in parts of kPart agents: otherwise the
-  // largest step of a tick outside its searches (the 500 among boxes).
-  constexpr std::size_t kPart = 64;
-  workers.run((walkers.size() + kPart - 1) / kPart, [&](std::size_t part) {
-    for (std::size_t j = part * kPart; j < std::min(walkers.size(), (part + 1) * kPart); ++j) {
-      s.com[j] = walks[j].com_at(t).position;
-      s.present[j] = present_at(walkers[j].plan, t);
-      s.bounds[j] = walkers[j].bounds.from(bounds_from);
-    }
-  });
+             std::vector<PlanBounds::From>(walkers.size()),
+             std::vector<char>(walkers.size())};
+  for (std::size_t j = 0; j < walkers.size(); ++j) {
+    s.com[j] = walks[j].com_at(t).position;
+    s.present[j] = present_at(walkers[j].plan, t);
+    s.bounds[j] = walkers[j].bounds->from(bounds_from);
+  }
   s.grid = AgentGrid(s.com, kGridCell);
+  for (std::size_t j = 0; j < walkers.size(); ++j) s.giving_way[j] = gives_way(walkers, j, s);
   return s;
 }
 
@@ -237,7 +236,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   std::vector<std::size_t> first;
   bool asks_someone = false;
   for (const std::size_t j : seen) {
-    if (goes_first(walkers, j, i))
+    if (goes_first(walkers, now, j, i))
       first.push_back(j);
     else
       asks_someone = asks_someone || distance(now.com[j], now.com[i]) <= kWishReach + kBodyLength;
@@ -259,7 +258,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
       }
     }
     const bool same = std::all_of(result.refused_by.begin(), result.refused_by.end(),
-                                  [&](std::size_t k) { return goes_first(walkers, seen[k], i); });
+                                  [&](std::size_t k) { return goes_first(walkers, now, seen[k], i); });
     const SearchResult wish =
         same ? result : planner.plan(w.state, target.point, plans_of(walkers, first), options);
     const Vec2 from = w.state.com, to = wish.end_state.com;
@@ -284,13 +283,18 @@ std::vector<std::size_t> near(std::size_t i, const Snapshot& now) {
 }
 
 /// Wakes the dormant agents within kFreezeRadius of agent `i`, which has
-/// just committed steps that move: what held them may have moved on.
-void wake_near(std::vector<Walker>& walkers, std::size_t i, const Snapshot& now) {
+/// just committed steps that move: what held them may have moved on. Those
+/// woken go into `woken`.
+void wake_near(std::vector<Walker>& walkers, std::size_t i, const Snapshot& now,
+               std::vector<std::size_t>& woken) {
   std::vector<std::size_t> around;
   now.grid.around(now.com[i], kFreezeRadius, around);
-  for (const std::size_t j : around)
-    if (walkers[j].dormant && distance(now.com[j], now.com[i]) <= kFreezeRadius)
+  for (const std::size_t j : around) {
+    if (walkers[j].dormant && distance(now.com[j], now.com[i]) <= kFreezeRadius) {
       wake(walkers[j], now.t);
+      woken.push_back(j);
+    }
+  }
 }
 
 /// True if agent `i` is stuck: its way has not shortened by min_progress for
@@ -377,6 +381,20 @@ double progress_of(const Walker& w) {
   return (static_cast<double>(w.goal) + current) / static_cast<double>(w.spec->goals.size());
 }
 
+/// One tick's searches and checks, run on the workers, committed a tick later.
+struct TickJobs {
+  double t = 0.0;
+  std::vector<std::size_t> due;  ///< The agents that replan, in their order.
+  Snapshot at;
+  std::vector<char> idle;            ///< Per due: nothing_new(), no search.
+  std::vector<std::size_t> order;    ///< The jobs' order: indices into `due`.
+  std::vector<Attempt> attempts;     ///< Per due.
+  std::vector<Proposal> proposals;   ///< Per due.
+  std::vector<double> seconds;       ///< Per due: the search's time. [s]
+  std::vector<double> job_seconds;   ///< Per due: the search's and check's. [s]
+  std::uint64_t batch = 0;           ///< Its batch on the workers.
+};
+
 }  // namespace
 
 std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
@@ -392,98 +410,57 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     w.plan.name = agents[i].name;
     w.plan.start = standing_state(agents[i].position, agents[i].facing, planner.character());
     w.state = w.plan.start;
-    w.bounds = PlanBounds(w.plan, planner.character());
+    w.bounds = std::make_shared<const PlanBounds>(w.plan, planner.character());
   }
   std::vector<PlanWalk> walks;
   for (const Walker& w : walkers) walks.emplace_back(w.plan);
-  Workers workers(control.threads);
-  double reported = 0.0;
-  auto last_report = std::chrono::steady_clock::now();
-  for (long tick = 0;; ++tick) {
-    const double t = static_cast<double>(tick) * kTick;
-    std::vector<std::size_t> due;
-    bool active = false;
-    for (std::size_t i = 0; i < walkers.size(); ++i) {
-      if (walkers[i].done || walkers[i].dormant) continue;
-      active = true;
-      if (walkers[i].state.time - t <= kReplanLead && t >= walkers[i].retry_at) due.push_back(i);
+  // A tick's searches read a copy of the walkers (a view) as they stood when
+  // the tick began, so that the commits of the tick before are made while
+  // they run, and the next tick's searches fill what is left of this one's.
+  // Two views, one per tick in flight; each is brought up to date from the
+  // walkers changed since it last was.
+  std::array<std::vector<Walker>, 2> views{walkers, walkers};
+  std::array<std::uint64_t, 2> synced{0, 0};
+  std::uint64_t epoch = 1;
+  std::vector<std::uint64_t> changed_at(walkers.size(), 0);
+  const auto touch = [&](std::size_t i) { changed_at[i] = epoch; };
+  std::vector<char> in_flight(walkers.size(), 0);
+  std::unique_ptr<TickJobs> pending, current;
+  Workers workers(control.threads);  // after what its jobs read: it ends first
+  // The tick's results, committed in the agents' order against the walkers
+  // as they now stand.
+  const auto commit_tick = [&](TickJobs& jobs) {
+    workers.finish(jobs.batch);
+    const double t = jobs.t;
+    for (std::size_t k = 0; k < jobs.due.size(); ++k) {
+      if (!jobs.idle[k]) walkers[jobs.due[k]].last_cost = jobs.job_seconds[k];
+      if (control.search_seconds != nullptr) *control.search_seconds += jobs.seconds[k];
     }
-    if (!active) break;
-    const bool cancelled = control.cancelled();
-    if (cancelled || t > planner.params().max_time) {
-      for (Walker& w : walkers)
-        if (!w.done && !w.dormant) w.plan.reason = cancelled ? "cancelled" : "time limit";
-      break;
-    }
-    if (due.empty()) continue;
-    // A plan that has run into its rest starts again from where that leaves it.
-    for (std::size_t i : due)
-      if (walkers[i].state.time < t) rest_until(walkers[i], planner, t);
-    // The tick's trials differ from their agents' plans from the start of
-    // the last step each keeps on (propose()).
-    double trials_from = kForever;
-    for (const std::size_t i : due) {
-      const Walker& w = walkers[i];
-      const std::size_t kept = w.plan.footsteps.size() - w.resting;
-      const double from = kept > 0 ? w.plan.footsteps[kept - 1].start_time : w.state.time;
-      trials_from = std::min(trials_from, from);
-    }
-    const Snapshot at_tick = snapshot(walkers, walks, t, trials_from, workers);
-    for (std::size_t i = 0; i < walkers.size(); ++i)
-      walkers[i].giving_way = gives_way(walkers, i, at_tick);
-    std::vector<Attempt> attempts(due.size());
-    std::vector<char> idle(due.size());
-    for (std::size_t k = 0; k < due.size(); ++k) idle[k] = nothing_new(walkers, due[k], at_tick);
-    // The dearest-looking jobs start first (those that search, by what their
-    // last ones took), so that threads finish the tick together; results go
-    // by index, so the order changes nothing else.
-    std::vector<std::size_t> order(due.size());
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-    const auto cost = [&](std::size_t k) { return idle[k] ? 0.0 : walkers[due[k]].last_cost; };
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return cost(a) > cost(b); });
-    std::vector<double> seconds(due.size()), job_seconds(due.size());
-    std::vector<Proposal> proposals(due.size());
-    workers.run(due.size(), [&](std::size_t job) {
-      const std::size_t k = order[job], i = due[k];
-      const auto begin = std::chrono::steady_clock::now();
-      if (!idle[k]) {
-        attempts[k] =
-            search(walkers, i, planner, mesh, seen_by(walkers, i, at_tick, mesh), at_tick);
-        seconds[k] =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-      }
-      proposals[k] = propose(walkers, i, attempts[k], planner, near(i, at_tick), at_tick);
-      job_seconds[k] =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-    });
-    for (std::size_t k = 0; k < due.size(); ++k)
-      if (!idle[k]) walkers[due[k]].last_cost = job_seconds[k];
-    if (control.search_seconds != nullptr)
-      for (const double s : seconds) *control.search_seconds += s;
-    // Plans changed in this tick so far (by a commit, or a wait).
-    std::vector<char> changed(walkers.size(), 0);
-    for (std::size_t k = 0; k < due.size(); ++k) {
-      const std::size_t i = due[k];
+    std::vector<std::size_t> others;  // changed by a commit besides its own agent
+    for (std::size_t k = 0; k < jobs.due.size(); ++k) {
+      const std::size_t i = jobs.due[k];
       Walker& w = walkers[i];
+      in_flight[i] = 0;
+      touch(i);
       // Those it yielded to and that no longer wish are let go.
       w.yielding_to.erase(std::remove_if(w.yielding_to.begin(), w.yielding_to.end(),
                                          [&](std::size_t r) { return !wishing(walkers[r]); }),
                           w.yielding_to.end());
-      const Attempt& a = attempts[k];
-      const int refused = refusal(walkers, proposals[k], changed, planner);
-      commit(walkers, i, a, proposals[k], refused, planner, t);
-      changed[i] = 1;
-      if (w.committed_at == t) wake_near(walkers, i, at_tick);
+      const Attempt& a = jobs.attempts[k];
+      const int refused = refusal(walkers, jobs.proposals[k], planner);
+      commit(walkers, i, a, jobs.proposals[k], refused, planner, t);
+      others.clear();
+      if (w.committed_at == t) wake_near(walkers, i, jobs.at, others);
       if (a.searched) {
-        w.ways = std::move(attempts[k].ways);
+        w.ways = std::move(jobs.attempts[k].ways);
         w.searched_at = t;
         w.searched_from = a.from;
         w.way = a.way_from;
         const bool gained = a.reached || a.way_left <= a.way_from - planner.params().min_progress;
         w.blocked = w.failures == 0 && gained ? 0 : w.blocked + 1;
       }
-      show_wish(walkers, i, attempts[k], planner, t, proposals[k].close);
+      show_wish(walkers, i, jobs.attempts[k], planner, jobs.at, jobs.proposals[k].close, others);
+      for (const std::size_t j : others) touch(j);
       if (!w.done && stuck(walkers, i)) {
         if (!w.roomy) {
           take_roomy_ways(w, t);
@@ -493,6 +470,88 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
         }
       }
     }
+  };
+  double reported = 0.0;
+  auto last_report = std::chrono::steady_clock::now();
+  for (long tick = 0;; ++tick) {
+    const double t = static_cast<double>(tick) * kTick;
+    std::vector<std::size_t> due;
+    bool active = false;
+    for (std::size_t i = 0; i < walkers.size(); ++i) {
+      if (walkers[i].done || walkers[i].dormant) continue;
+      active = true;
+      if (!in_flight[i] && walkers[i].state.time - t <= kReplanLead && t >= walkers[i].retry_at)
+        due.push_back(i);
+    }
+    if (!active) break;  // none in flight either
+    const bool cancelled = control.cancelled();
+    if (cancelled || t > planner.params().max_time) {
+      if (pending) commit_tick(*pending);
+      for (Walker& w : walkers)
+        if (!w.done && !w.dormant) w.plan.reason = cancelled ? "cancelled" : "time limit";
+      break;
+    }
+    if (!due.empty()) {
+      current = std::make_unique<TickJobs>();
+      TickJobs& jobs = *current;
+      jobs.t = t;
+      jobs.due = std::move(due);
+      // A plan that has run into its rest starts again from where that leaves it.
+      for (const std::size_t i : jobs.due) {
+        if (walkers[i].state.time < t) {
+          rest_until(walkers[i], planner, t);
+          touch(i);
+        }
+        in_flight[i] = 1;
+      }
+      // The tick's trials differ from their agents' plans from the start of
+      // the last step each keeps on (propose()).
+      double trials_from = kForever;
+      for (const std::size_t i : jobs.due) {
+        const Walker& w = walkers[i];
+        const std::size_t kept = w.plan.footsteps.size() - w.resting;
+        const double from = kept > 0 ? w.plan.footsteps[kept - 1].start_time : w.state.time;
+        trials_from = std::min(trials_from, from);
+      }
+      jobs.at = snapshot(walkers, walks, t, trials_from);
+      const std::size_t n = jobs.due.size();
+      jobs.idle.resize(n);
+      for (std::size_t k = 0; k < n; ++k) jobs.idle[k] = nothing_new(walkers, jobs.due[k], jobs.at);
+      std::vector<Walker>& view = views[static_cast<std::size_t>(tick % 2)];
+      std::uint64_t& view_synced = synced[static_cast<std::size_t>(tick % 2)];
+      for (std::size_t j = 0; j < walkers.size(); ++j)
+        if (changed_at[j] > view_synced) view[j] = walkers[j];
+      view_synced = epoch++;
+      // The dearest-looking jobs start first (those that search, by what
+      // their last ones took), so that threads finish together; results go
+      // by index, so the order changes nothing else.
+      jobs.order.resize(n);
+      for (std::size_t k = 0; k < n; ++k) jobs.order[k] = k;
+      const auto cost = [&](std::size_t k) {
+        return jobs.idle[k] ? 0.0 : walkers[jobs.due[k]].last_cost;
+      };
+      std::stable_sort(jobs.order.begin(), jobs.order.end(),
+                       [&](std::size_t a, std::size_t b) { return cost(a) > cost(b); });
+      jobs.attempts.resize(n);
+      jobs.proposals.resize(n);
+      jobs.seconds.assign(n, 0.0);
+      jobs.job_seconds.assign(n, 0.0);
+      jobs.batch = workers.launch(n, [&jobs, &view, &planner, mesh](std::size_t job) {
+        const std::size_t k = jobs.order[job], i = jobs.due[k];
+        const auto begin = std::chrono::steady_clock::now();
+        if (!jobs.idle[k]) {
+          jobs.attempts[k] =
+              search(view, i, planner, mesh, seen_by(view, i, jobs.at, mesh), jobs.at);
+          jobs.seconds[k] =
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+        }
+        jobs.proposals[k] = propose(view, i, jobs.attempts[k], planner, near(i, jobs.at), jobs.at);
+        jobs.job_seconds[k] =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+      });
+    }
+    if (pending) commit_tick(*pending);
+    pending = std::move(current);
     const auto now = std::chrono::steady_clock::now();
     if (control.progress &&
         std::chrono::duration<double>(now - last_report).count() >= kProgressInterval) {

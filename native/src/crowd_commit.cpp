@@ -19,8 +19,9 @@ void rest_until(Walker& w, const FootstepPlanner& planner, double t) {
     waited = true;
   }
   if (waited) {
-    w.bounds = PlanBounds(w.plan, planner.character());
-    w.samples = {};
+    w.bounds = std::make_shared<const PlanBounds>(w.plan, planner.character());
+    w.samples = nullptr;
+    ++w.version;
   }
 }
 
@@ -60,9 +61,10 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
   // A new place to rest needs room among everyone, seen or not.
   p.new_place = !p.leaving && distance(p.rested.com, rest_of(w).com) > kSamePlace;
   const bool bounded = p.trial.from() >= now.bounds_from;
+  for (const std::size_t j : p.close) p.versions.push_back(walkers[j].version);
   for (const std::size_t j : p.close)
     p.hits.push_back(!(bounded && p.trial.apart(now.bounds[j])) &&
-                     p.trial.touches(walkers[j].plan, walkers[j].bounds, &walkers[j].samples));
+                     p.trial.touches(walkers[j].plan, *walkers[j].bounds, walkers[j].samples.get()));
   p.no_room.assign(p.close.size(), 0);
   if (p.new_place) {
     const std::vector<char> clear =
@@ -72,18 +74,18 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
   return p;
 }
 
-int refusal(const std::vector<Walker>& walkers, Proposal& p, const std::vector<char>& changed,
-            const FootstepPlanner& planner) {
+int refusal(const std::vector<Walker>& walkers, Proposal& p, const FootstepPlanner& planner) {
   if (p.trial.plan().footsteps.empty()) return -1;
+  const auto changed = [&](std::size_t c) { return walkers[p.close[c]].version != p.versions[c]; };
   for (std::size_t c = 0; c < p.close.size(); ++c) {
     const Walker& other = walkers[p.close[c]];
-    if (changed[p.close[c]] ? p.trial.touches(other.plan, other.bounds, &other.samples) : p.hits[c])
+    if (changed(c) ? p.trial.touches(other.plan, *other.bounds, other.samples.get()) : p.hits[c])
       return static_cast<int>(c);
   }
   if (!p.new_place) return -1;
   for (std::size_t c = 0; c < p.close.size(); ++c) {
-    if (changed[p.close[c]] ? !planner.stands_clear(p.rested, {obstacle_of(walkers[p.close[c]])})
-                            : p.no_room[c])
+    if (changed(c) ? !planner.stands_clear(p.rested, {obstacle_of(walkers[p.close[c]])})
+                   : p.no_room[c])
       return static_cast<int>(c);
   }
   return -1;
@@ -123,9 +125,10 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a, Propo
                                             kNoticeDistance;
                                    }),
                     w.noticed.end());
-    w.samples = p.trial.take_samples();
+    w.samples = std::make_shared<const detail::PlanSamples>(p.trial.take_samples());
     w.plan.footsteps = std::move(p.trial.plan().footsteps);
-    w.bounds = std::move(p.trial.bounds());
+    w.bounds = std::make_shared<const PlanBounds>(std::move(p.trial.bounds()));
+    ++w.version;
     w.resting = p.steps.size() - a.steps.size();
     w.state = a.end;
     w.rested = p.rested;
@@ -138,7 +141,8 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a, Propo
   if (++w.goal == w.spec->goals.size()) {
     w.plan.status = AgentStatus::kReached;
     w.plan.leaves = w.spec->leave_at_goal;
-    w.samples = {};  // taken before it could leave at its goal
+    ++w.version;
+    w.samples = nullptr;  // taken before it could leave at its goal
     w.done = true;
     return;
   }

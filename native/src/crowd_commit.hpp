@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "crowd_walker.hpp"
@@ -26,7 +27,7 @@ void progress(Walker& w, double way_left, const FootstepPlanner& planner);
 /// An attempt as it would stand in its agent's plan, and what the commit
 /// check finds against each agent near as the tick began. Made for every
 /// due agent at once (on the workers): in the agents' order, only the plans
-/// committed before it in the same tick need checking again (refusal()).
+/// changed since need checking again (refusal()).
 struct Proposal {
   std::vector<Footstep> steps;     ///< The attempt's steps, then (unless it leaves) its rest.
   FootstepState rested;            ///< Where they leave the agent.
@@ -36,6 +37,7 @@ struct Proposal {
   std::vector<std::size_t> close;  ///< The agents near (near()).
   std::vector<char> hits;          ///< Per close: the trial touches its plan.
   std::vector<char> no_room;       ///< Per close: no room to rest beside it (new_place).
+  std::vector<std::uint64_t> versions;  ///< Per close: the version of the plan checked.
 };
 
 /// The trial that agent i's attempt makes, and its check against the plans
@@ -46,9 +48,8 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
 
 /// The index in p.close of the agent the trial is refused for: the first it
 /// touches, else (resting somewhere new) the first it has no room beside;
-/// -1 if none. The plans of agents `changed` this tick are checked anew.
-int refusal(const std::vector<Walker>& walkers, Proposal& p, const std::vector<char>& changed,
-            const FootstepPlanner& planner);
+/// -1 if none. The plans changed since the proposal was made are checked anew.
+int refusal(const std::vector<Walker>& walkers, Proposal& p, const FootstepPlanner& planner);
 
 /// Adds the attempt's steps and a provisional rest after them to agent i's
 /// plan, in place of its old rest, unless the proposal was refused (for

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "agent_grid.hpp"
@@ -101,9 +103,16 @@ struct KnownWay {
 struct Walker {
   const AgentSpec* spec = nullptr;
   AgentPlan plan;     ///< Its steps, ending with `resting` provisional rest steps.
-  PlanBounds bounds;  ///< Of `plan`, rebuilt whenever it changes.
-  /// Of `plan`, those its commit check took; dropped whenever it changes.
-  detail::PlanSamples samples;
+  /// Counts the changes of `plan` (its steps, or whether it leaves): a check
+  /// made against one version holds while it stands.
+  std::uint64_t version = 0;
+  /// Of `plan`, rebuilt whenever it changes. Bounds and samples are never
+  /// changed in place, only replaced: the views of the walkers that a tick's
+  /// searches read share them.
+  std::shared_ptr<const PlanBounds> bounds;
+  /// Of `plan`, those its commit check took (none: null); dropped whenever
+  /// it changes.
+  std::shared_ptr<const detail::PlanSamples> samples;
   FootstepState state;   ///< Where the next search starts: before the rest.
   FootstepState rested;  ///< After the rest.
   std::size_t resting = 0;
@@ -141,8 +150,6 @@ struct Walker {
   std::vector<std::size_t> yielding_to;
   /// The ways its last search measured (Attempt::ways).
   std::vector<KnownWay> ways;
-  /// It goes after every other (gives_way(), as the tick began).
-  bool giving_way = false;
   /// Stuck (stuck()): it stands where its plan ends and replans no more,
   /// until one near it moves on or asks it to make room (wake()).
   bool dormant = false;
@@ -156,15 +163,6 @@ struct Walker {
 /// kJamPatience (its search in a jam may stop early).
 inline bool patient(const Walker& w, const FootstepState& state) {
   return state.time - w.improved_at < kJamPatience;
-}
-
-/// True if agent `a` goes before agent `b` where their ways cross: one that
-/// gives way goes after one that does not; then the one with less way left,
-/// then the earlier in the scenario.
-inline bool goes_first(const std::vector<Walker>& walkers, std::size_t a, std::size_t b) {
-  const Walker &first = walkers[a], &second = walkers[b];
-  if (first.giving_way != second.giving_way) return second.giving_way;
-  return first.way < second.way || (first.way == second.way && a < b);
 }
 
 /// True if steps that reach the walker's current goal end its walk there.
@@ -205,13 +203,27 @@ struct Snapshot {
   /// than from each plan's own bounds. [s]
   double bounds_from = 0.0;
   std::vector<PlanBounds::From> bounds;
+  /// Per agent: it goes after every other (gives_way()).
+  std::vector<char> giving_way;
 };
+
+/// True if agent `a` goes before agent `b` where their ways cross: one that
+/// gives way (as of `now`) goes after one that does not; then the one with
+/// less way left, then the earlier in the scenario.
+inline bool goes_first(const std::vector<Walker>& walkers, const Snapshot& now, std::size_t a,
+                       std::size_t b) {
+  if (now.giving_way[a] != now.giving_way[b]) return now.giving_way[b] != 0;
+  const Walker &first = walkers[a], &second = walkers[b];
+  return first.way < second.way || (first.way == second.way && a < b);
+}
 
 /// True while agent `w` shows a wish.
 inline bool wishing(const Walker& w) { return !w.wish.empty(); }
 
 /// Agent `w`'s plan, as others keep clear of it.
-inline MovingObstacle obstacle_of(const Walker& w) { return {&w.plan, &w.bounds, &w.samples}; }
+inline MovingObstacle obstacle_of(const Walker& w) {
+  return {&w.plan, w.bounds.get(), w.samples.get()};
+}
 
 /// The plans of agents `which`.
 inline MovingObstacles plans_of(const std::vector<Walker>& walkers,

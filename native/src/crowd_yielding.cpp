@@ -142,7 +142,9 @@ bool must_make_room(const std::vector<Walker>& walkers, std::size_t i, const Sna
 }
 
 void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a,
-               const FootstepPlanner& planner, double t, const std::vector<std::size_t>& near) {
+               const FootstepPlanner& planner, const Snapshot& now,
+               const std::vector<std::size_t>& near, std::vector<std::size_t>& asked) {
+  const double t = now.t;
   Walker& w = walkers[i];
   if (w.done || w.blocked == 0 || a.wish.empty()) {
     w.wish.clear();
@@ -153,7 +155,7 @@ void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a,
   w.wish_makes_room = a.wish_makes_room;
   for (const std::size_t j : near) {
     Walker& other = walkers[j];
-    if (other.done || goes_first(walkers, j, i) || planner.keeps_out(rest_of(other), w.wish))
+    if (other.done || goes_first(walkers, now, j, i) || planner.keeps_out(rest_of(other), w.wish))
       continue;
     if (std::find(other.yielding_to.begin(), other.yielding_to.end(), i) != other.yielding_to.end())
       continue;  // asked before
@@ -161,6 +163,7 @@ void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a,
     other.yielding_to.push_back(i);
     other.retry_at = std::min(other.retry_at, t);
     other.news_at = t;
+    asked.push_back(j);
   }
 }
 

@@ -57,9 +57,11 @@ bool must_make_room(const std::vector<Walker>& walkers, std::size_t i, const Sna
                     const FootstepPlanner& planner);
 
 /// Shows agent i's wish, if its attempt found one and it is still blocked,
-/// to the agents `near` that go after it and rest in it: they keep out of it,
-/// searching again at the next tick. Otherwise withdraws it.
+/// to the agents `near` that go after it (as of `now`, the tick of its
+/// search) and rest in it: they keep out of it, searching again at the next
+/// tick, and go into `asked`. Otherwise withdraws it.
 void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a,
-               const FootstepPlanner& planner, double t, const std::vector<std::size_t>& near);
+               const FootstepPlanner& planner, const Snapshot& now,
+               const std::vector<std::size_t>& near, std::vector<std::size_t>& asked);
 
 }  // namespace footfall::crowd

@@ -7,8 +7,8 @@
 namespace footfall {
 namespace {
 
-/// How long a thread spins for the next batch, or for the end of one, before
-/// it sleeps: longer than the driver's work between two ticks' batches.
+/// How long a thread spins for the next job, or for the end of a batch,
+/// before it sleeps: longer than the driver's work between two ticks' batches.
 constexpr std::chrono::microseconds kSpin{500};
 
 /// Spins until `done()`, for at most kSpin; returns done().
@@ -22,8 +22,6 @@ bool spin_until(const Done& done) {
   }
 }
 
-std::uint32_t batch_of(std::uint64_t ticket) { return static_cast<std::uint32_t>(ticket >> 32); }
-
 }  // namespace
 
 Workers::Workers(int count) {
@@ -32,8 +30,12 @@ Workers::Workers(int count) {
 
 Workers::~Workers() {
   {
+    // Jobs not yet taken are dropped (a caller that threw is not waiting
+    // for them); those running finish first.
     std::lock_guard<std::mutex> lock(mutex_);
     stopping_ = true;
+    queue_.clear();
+    queued_ = 0;
   }
   wake_.notify_all();
   for (std::thread& t : threads_) t.join();
@@ -41,70 +43,83 @@ Workers::~Workers() {
 
 void Workers::run(std::size_t n, const std::function<void(std::size_t)>& job) {
   if (n == 0) return;
-  if (n >= 0xFFFFFFFFu) throw std::length_error("Workers::run: too many jobs in one batch");
-  // The last batch is done, every job of it taken. Closed first, so that a
-  // thread that sees the new count before the new batch cannot take a job.
-  const std::uint32_t last = batch_of(ticket_.load(std::memory_order_relaxed));
-  ticket_.store(static_cast<std::uint64_t>(last) << 32 | 0xFFFFFFFFu, std::memory_order_seq_cst);
-  job_.store(&job, std::memory_order_relaxed);
-  unfinished_.store(n, std::memory_order_relaxed);
-  count_.store(n, std::memory_order_release);
-  const std::uint32_t batch = last + 1;
-  {
-    // Under the lock, so that a thread about to sleep sees the new batch.
-    std::lock_guard<std::mutex> lock(mutex_);
-    error_ = nullptr;
-    ticket_.store(static_cast<std::uint64_t>(batch) << 32, std::memory_order_release);
-  }
+  finish(launch(n, job));
+}
+
+std::uint64_t Workers::launch(std::size_t n, std::function<void(std::size_t)> job) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto batch = std::make_unique<Batch>();
+  batch->number = ++launched_;
+  batch->job = std::move(job);
+  batch->unfinished = n;
+  for (std::size_t k = 0; k < n; ++k) queue_.push_back({batch.get(), k});
+  queued_.fetch_add(n, std::memory_order_release);
+  batches_.push_back(std::move(batch));
   wake_.notify_all();
-  drain(batch);
-  const auto finished = [this] { return unfinished_.load(std::memory_order_acquire) == 0; };
-  if (!spin_until(finished)) {
-    std::unique_lock<std::mutex> lock(mutex_);
-    finished_.wait(lock, finished);
+  return launched_;
+}
+
+void Workers::finish(std::uint64_t number) {
+  Batch* batch = nullptr;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (batches_.empty() || batches_.front()->number != number)
+      throw std::logic_error("Workers::finish: batches must be finished in launch order");
+    batch = batches_.front().get();
+  }
+  const auto done = [batch] { return batch->unfinished.load(std::memory_order_acquire) == 0; };
+  // Its own jobs first (they are queued ahead of later batches'), then the
+  // next batches' while the pool's threads finish the last of its own.
+  while (!done()) {
+    if (run_one()) continue;
+    if (!spin_until([&] { return done() || queued_.load(std::memory_order_acquire) > 0; })) {
+      std::unique_lock<std::mutex> lock(mutex_);
+      finished_.wait(lock, [&] { return done() || !queue_.empty(); });
+    }
   }
   std::exception_ptr error;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    error = error_;
+    error = batch->error;
+    batches_.pop_front();
   }
   if (error) std::rethrow_exception(error);
 }
 
-void Workers::drain(std::uint32_t batch) {
-  std::uint64_t ticket = ticket_.load(std::memory_order_acquire);
-  for (;;) {
-    const std::uint64_t k = ticket & 0xFFFFFFFFu;
-    if (batch_of(ticket) != batch || k >= count_.load(std::memory_order_acquire)) return;
-    if (!ticket_.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acq_rel)) continue;
-    try {
-      (*job_.load(std::memory_order_relaxed))(static_cast<std::size_t>(k));
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (!error_) error_ = std::current_exception();
-    }
-    if (unfinished_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
-      { std::lock_guard<std::mutex> lock(mutex_); }  // the caller waits on it or sees 0
-      finished_.notify_all();
-    }
-    ticket = ticket_.load(std::memory_order_acquire);
+bool Workers::run_one() {
+  Item item{};
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (queue_.empty()) return false;
+    item = queue_.front();
+    queue_.pop_front();
+    queued_.fetch_sub(1, std::memory_order_relaxed);
   }
+  try {
+    item.batch->job(item.k);
+  } catch (...) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!item.batch->error) item.batch->error = std::current_exception();
+  }
+  if (item.batch->unfinished.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+    { std::lock_guard<std::mutex> lock(mutex_); }  // a caller waits on it or sees 0
+    finished_.notify_all();
+  }
+  return true;
 }
 
 void Workers::work() {
-  std::uint32_t seen = 0;
-  const auto news = [&] {
+  const auto news = [this] {
     return stopping_.load(std::memory_order_acquire) ||
-           batch_of(ticket_.load(std::memory_order_acquire)) != seen;
+           queued_.load(std::memory_order_acquire) > 0;
   };
   for (;;) {
     if (!spin_until(news)) {
       std::unique_lock<std::mutex> lock(mutex_);
-      wake_.wait(lock, news);
+      wake_.wait(lock, [&] { return stopping_.load() || !queue_.empty(); });
     }
     if (stopping_.load(std::memory_order_acquire)) return;
-    seen = batch_of(ticket_.load(std::memory_order_acquire));
-    drain(seen);
+    run_one();
   }
 }
 

@@ -1,13 +1,16 @@
-// Footfall — a small pool of threads that runs one batch of independent jobs
-// at a time (the searches of one scheduling tick).
+// Footfall — a small pool of threads that runs batches of independent jobs:
+// one at a time (run()), or queued one behind the other (launch(), finish()),
+// so that a batch's jobs start while the caller still waits for the last one.
 #pragma once
 
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -27,26 +30,42 @@ class Workers {
   /// rethrown here.
   void run(std::size_t n, const std::function<void(std::size_t)>& job);
 
+  /// Queues job(k) for every k in [0, n), in that order, behind every job
+  /// queued before; the pool's threads take them at once. Returns the
+  /// batch's number, for finish().
+  std::uint64_t launch(std::size_t n, std::function<void(std::size_t)> job);
+  /// Runs queued jobs on the calling thread, oldest first, until every job
+  /// of batch `batch` has finished; then rethrows the first exception one of
+  /// them threw. Every launched batch must be finished, in launch order.
+  void finish(std::uint64_t batch);
+
  private:
+  struct Batch {
+    std::uint64_t number = 0;
+    std::function<void(std::size_t)> job;
+    std::atomic<std::size_t> unfinished{0};
+    std::exception_ptr error;  ///< Under mutex_.
+  };
+  struct Item {
+    Batch* batch;
+    std::size_t k;
+  };
   void work();
-  /// Takes jobs of batch `batch` until none is left.
-  void drain(std::uint32_t batch);
+  /// Takes the oldest queued job and runs it; false if none was queued.
+  bool run_one();
 
   std::vector<std::thread> threads_;
-  /// The batch (high 32 bits) and its next job to take (low 32): a thread
-  /// takes job k of the batch it saw by raising k, so that one which sees a
-  /// batch late never takes a job of the next.
-  std::atomic<std::uint64_t> ticket_{0};
-  std::atomic<const std::function<void(std::size_t)>*> job_{nullptr};
-  std::atomic<std::size_t> count_{0};
-  std::atomic<std::size_t> unfinished_{0};  ///< Jobs of the batch not yet done.
-  std::atomic<bool> stopping_{false};
-  // Sleeping, for a thread that found nothing to do for a while: spinning
-  // through the few hundred microseconds between ticks keeps the threads from
-  // paying a wake-up each tick.
   std::mutex mutex_;
+  std::deque<Item> queue_;                      ///< Under mutex_.
+  std::deque<std::unique_ptr<Batch>> batches_;  ///< Launched, not yet finished; under mutex_.
+  std::uint64_t launched_ = 0;                  ///< Under mutex_.
+  /// Jobs queued and not yet taken: read without the lock, by threads
+  /// spinning for work. Sleeping, for a thread that found nothing to do for
+  /// a while: spinning through the few hundred microseconds between ticks
+  /// keeps the threads from paying a wake-up each tick.
+  std::atomic<std::size_t> queued_{0};
+  std::atomic<bool> stopping_{false};
   std::condition_variable wake_, finished_;
-  std::exception_ptr error_;  ///< Under mutex_.
 };
 
 }  // namespace footfall
