@@ -15,14 +15,18 @@
 // (crowd_yielding.hpp). One stuck (stuck()) sleeps until one near it moves
 // (wake_near()).
 //
-// Determinism: the searches of one tick read a snapshot (every plan as it
-// stood when the tick began) and may run on several threads; their results are
-// committed one agent after another in the agents' order, each checked against
-// the plans as they then stand. So the plans do not depend on the number of
-// threads or their timing. The check against a plan no commit of the tick has
-// changed yet gives what it gave against the snapshot, so it is made on the
-// threads too, with the search (propose()); only plans changed earlier in the
-// tick are checked in order (refusal()).
+// Threads and determinism: a tick's searches read a view, a copy of the
+// walkers as they stood when the tick's searches were set going, before the
+// commits of the tick before. Those commits are made while this tick's
+// searches run, and the next tick's searches fill the threads while this
+// tick's last ones finish: agents see others' new plans a tick (50 ms) later
+// than had each tick waited for the last. A tick's results are committed a
+// tick later, one agent after another in the agents' order, each checked
+// against the plans as they then stand. The check against a plan unchanged
+// since the view gives what it gave against the view, so it is made on the
+// threads, with the search (propose()); only plans changed since are checked
+// again, in order (refusal(), by each plan's version). Nothing a search reads
+// depends on the number of threads or their timing, nor then do the plans.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -257,8 +261,9 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
         return a;
       }
     }
-    const bool same = std::all_of(result.refused_by.begin(), result.refused_by.end(),
-                                  [&](std::size_t k) { return goes_first(walkers, now, seen[k], i); });
+    const bool same =
+        std::all_of(result.refused_by.begin(), result.refused_by.end(),
+                    [&](std::size_t k) { return goes_first(walkers, now, seen[k], i); });
     const SearchResult wish =
         same ? result : planner.plan(w.state, target.point, plans_of(walkers, first), options);
     const Vec2 from = w.state.com, to = wish.end_state.com;
@@ -386,13 +391,13 @@ struct TickJobs {
   double t = 0.0;
   std::vector<std::size_t> due;  ///< The agents that replan, in their order.
   Snapshot at;
-  std::vector<char> idle;            ///< Per due: nothing_new(), no search.
-  std::vector<std::size_t> order;    ///< The jobs' order: indices into `due`.
-  std::vector<Attempt> attempts;     ///< Per due.
-  std::vector<Proposal> proposals;   ///< Per due.
-  std::vector<double> seconds;       ///< Per due: the search's time. [s]
-  std::vector<double> job_seconds;   ///< Per due: the search's and check's. [s]
-  std::uint64_t batch = 0;           ///< Its batch on the workers.
+  std::vector<char> idle;           ///< Per due: nothing_new(), no search.
+  std::vector<std::size_t> order;   ///< The jobs' order: indices into `due`.
+  std::vector<Attempt> attempts;    ///< Per due.
+  std::vector<Proposal> proposals;  ///< Per due.
+  std::vector<double> seconds;      ///< Per due: the search's time. [s]
+  std::vector<double> job_seconds;  ///< Per due: the search's and check's. [s]
+  std::uint64_t batch = 0;          ///< Its batch on the workers.
 };
 
 }  // namespace
@@ -414,11 +419,9 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
   }
   std::vector<PlanWalk> walks;
   for (const Walker& w : walkers) walks.emplace_back(w.plan);
-  // A tick's searches read a copy of the walkers (a view) as they stood when
-  // the tick began, so that the commits of the tick before are made while
-  // they run, and the next tick's searches fill what is left of this one's.
-  // Two views, one per tick in flight; each is brought up to date from the
-  // walkers changed since it last was.
+  // Two views (see the top of this file), one per tick in flight; each is
+  // brought up to date from the walkers changed since it last was. Bounds
+  // and samples are shared with the walkers, not copied.
   std::array<std::vector<Walker>, 2> views{walkers, walkers};
   std::array<std::uint64_t, 2> synced{0, 0};
   std::uint64_t epoch = 1;

@@ -63,8 +63,9 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
   const bool bounded = p.trial.from() >= now.bounds_from;
   for (const std::size_t j : p.close) p.versions.push_back(walkers[j].version);
   for (const std::size_t j : p.close)
-    p.hits.push_back(!(bounded && p.trial.apart(now.bounds[j])) &&
-                     p.trial.touches(walkers[j].plan, *walkers[j].bounds, walkers[j].samples.get()));
+    p.hits.push_back(
+        !(bounded && p.trial.apart(now.bounds[j])) &&
+        p.trial.touches(walkers[j].plan, *walkers[j].bounds, walkers[j].samples.get()));
   p.no_room.assign(p.close.size(), 0);
   if (p.new_place) {
     const std::vector<char> clear =

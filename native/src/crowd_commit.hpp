@@ -1,9 +1,9 @@
 // Footfall — committing the crowd's new plans (crowd.cpp). A new plan is
 // committed only if it keeps clear of every other agent's plan, rest
 // included, seen or not; otherwise the agent waits where its rest leaves it.
-// The check against the plans as the tick began is made on the threads, with
-// the search (propose()); only the plans changed earlier in the tick are
-// checked again, in the agents' order (refusal()).
+// The check against the plans of the view the search read is made on the
+// threads, with the search (propose()); only the plans changed since (by a
+// commit, or a wait) are checked again, in the agents' order (refusal()).
 #pragma once
 
 #include <cstddef>
@@ -25,18 +25,18 @@ void rest_until(Walker& w, const FootstepPlanner& planner, double t);
 void progress(Walker& w, double way_left, const FootstepPlanner& planner);
 
 /// An attempt as it would stand in its agent's plan, and what the commit
-/// check finds against each agent near as the tick began. Made for every
+/// check finds against each agent near, in the view its search read. Made for every
 /// due agent at once (on the workers): in the agents' order, only the plans
 /// changed since need checking again (refusal()).
 struct Proposal {
-  std::vector<Footstep> steps;     ///< The attempt's steps, then (unless it leaves) its rest.
-  FootstepState rested;            ///< Where they leave the agent.
-  bool leaving = false;            ///< It walks on through its last goal.
-  detail::Trial trial;             ///< The plan with them in place of the old rest.
-  bool new_place = false;          ///< It rests somewhere new: it needs room there.
-  std::vector<std::size_t> close;  ///< The agents near (near()).
-  std::vector<char> hits;          ///< Per close: the trial touches its plan.
-  std::vector<char> no_room;       ///< Per close: no room to rest beside it (new_place).
+  std::vector<Footstep> steps;          ///< The attempt's steps, then (unless it leaves) its rest.
+  FootstepState rested;                 ///< Where they leave the agent.
+  bool leaving = false;                 ///< It walks on through its last goal.
+  detail::Trial trial;                  ///< The plan with them in place of the old rest.
+  bool new_place = false;               ///< It rests somewhere new: it needs room there.
+  std::vector<std::size_t> close;       ///< The agents near (near()).
+  std::vector<char> hits;               ///< Per close: the trial touches its plan.
+  std::vector<char> no_room;            ///< Per close: no room to rest beside it (new_place).
   std::vector<std::uint64_t> versions;  ///< Per close: the version of the plan checked.
 };
 

@@ -102,7 +102,7 @@ struct KnownWay {
 /// One agent as the driver keeps it.
 struct Walker {
   const AgentSpec* spec = nullptr;
-  AgentPlan plan;     ///< Its steps, ending with `resting` provisional rest steps.
+  AgentPlan plan;  ///< Its steps, ending with `resting` provisional rest steps.
   /// Counts the changes of `plan` (its steps, or whether it leaves): a check
   /// made against one version holds while it stands.
   std::uint64_t version = 0;
@@ -190,9 +190,11 @@ struct Attempt {
   std::vector<KnownWay> ways;
 };
 
-/// Where every agent is at a tick's time t, and whether it is still there.
-/// The tick's commits change plans only from t on (a due agent's plan runs
-/// to t or beyond before it searches), so this holds for the whole tick.
+/// Where every agent is at a tick's time t, and whether it is still there,
+/// as their plans stood when the tick's searches were set going: the
+/// commits of the tick before, made while they run, change plans from that
+/// tick's time on (a due agent's plan runs to it or beyond before it
+/// searches), so those agents' places are up to a tick old.
 struct Snapshot {
   double t = 0.0;
   std::vector<Vec2> com;

@@ -110,8 +110,7 @@ bool Workers::run_one() {
 
 void Workers::work() {
   const auto news = [this] {
-    return stopping_.load(std::memory_order_acquire) ||
-           queued_.load(std::memory_order_acquire) > 0;
+    return stopping_.load(std::memory_order_acquire) || queued_.load(std::memory_order_acquire) > 0;
   };
   for (;;) {
     if (!spin_until(news)) {
