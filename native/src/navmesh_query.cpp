@@ -234,6 +234,12 @@ class ChannelSearch {
     if (searched_[here].beyond[exit] < 0) {
       const Face f = searched_[here].face, next = f->neighbor(exit);
       const int entry = next->index(f);
+      // A node's face is expanded soon after it is met: ask for the records
+      // that reads (its far corner and the faces beyond its exits) now, so
+      // that their cache misses overlap with other work.
+      __builtin_prefetch(&*next->vertex(entry));
+      __builtin_prefetch(&*next->neighbor(Cdt::cw(entry)));
+      __builtin_prefetch(&*next->neighbor(Cdt::ccw(entry)));
       const int there = slot(next);  // may move searched_
       searched_[here].beyond[exit] = there;
       searched_[here].back[exit] = static_cast<std::int8_t>(entry);
@@ -252,6 +258,10 @@ class ChannelSearch {
           push(index, exit, exit_gate(f, exit), true, true, node.root, node.g);
       return;
     }
+    // The tests of both exits read the corners of the faces beyond them.
+    for (const int exit : {Cdt::cw(node.entry), Cdt::ccw(node.entry)})
+      for (int corner = 0; corner < 3; ++corner)
+        __builtin_prefetch(&*f->neighbor(exit)->vertex(corner));
     const Vec2 at_left = node.interval.left, at_right = node.interval.right;
     const Vec2 to_left = at_left - node.root, to_right = at_right - node.root;
     // A root on the interval's line (the start on an edge, or rounding)
