@@ -234,8 +234,8 @@ class ChannelSearch {
     if (searched_[here].beyond[exit] < 0) {
       const Face f = searched_[here].face, next = f->neighbor(exit);
       const int entry = next->index(f);
-      // A node's face is expanded soon after it is met: ask for the records
-      // that reads (its far corner and the faces beyond its exits) now, so
+      // A face is expanded soon after it is met: ask now for the records its
+      // expansion reads (its far corner and the faces beyond its exits), so
       // that their cache misses overlap with other work.
       __builtin_prefetch(&*next->vertex(entry));
       __builtin_prefetch(&*next->neighbor(Cdt::cw(entry)));
