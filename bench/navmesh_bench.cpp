@@ -11,9 +11,9 @@
 #include <random>
 #include <vector>
 
-#include "box_scenes.hpp"
-#include "channel_funnel.hpp"
-#include "footfall/navmesh.hpp"
+#include "footfall/scenes/box_scenes.hpp"
+#include "navmesh/channel_funnel.hpp"
+#include "footfall/navmesh/navmesh.hpp"
 
 namespace footfall {
 namespace {

@@ -1,6 +1,6 @@
 #include "bindings.hpp"
-#include "footfall/footstep.hpp"
-#include "footfall/status.hpp"
+#include "footfall/model/footstep.hpp"
+#include "footfall/model/status.hpp"
 
 namespace py = pybind11;
 

@@ -1,7 +1,8 @@
 // footfall._native: the navigation mesh.
 #include "bindings.hpp"
-#include "footfall/navmesh.hpp"
-#include "footfall/scenario.hpp"
+#include "footfall/crowd/scenario.hpp"
+#include "footfall/io/path_json.hpp"
+#include "footfall/navmesh/navmesh.hpp"
 
 namespace py = pybind11;
 

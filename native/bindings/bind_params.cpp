@@ -1,5 +1,5 @@
 #include "bindings.hpp"
-#include "footfall/params.hpp"
+#include "footfall/model/params.hpp"
 
 namespace py = pybind11;
 

@@ -1,9 +1,9 @@
 #include <limits>
 
 #include "bindings.hpp"
-#include "footfall/agent_planner.hpp"
-#include "footfall/plan.hpp"
-#include "footfall/planner.hpp"
+#include "footfall/crowd/crowd_planner.hpp"
+#include "footfall/plan/plan.hpp"
+#include "footfall/planner/planner.hpp"
 
 namespace py = pybind11;
 

@@ -2,12 +2,13 @@
 #include <optional>
 
 #include "bindings.hpp"
-#include "footfall/metrics.hpp"
-#include "footfall/plan.hpp"
-#include "footfall/plan_io.hpp"
-#include "footfall/scenario.hpp"
-#include "footfall/scenes.hpp"
-#include "footfall/steersuite.hpp"
+#include "footfall/crowd/scenario.hpp"
+#include "footfall/io/plan_file.hpp"
+#include "footfall/io/scenario_file.hpp"
+#include "footfall/io/steersuite.hpp"
+#include "footfall/plan/metrics.hpp"
+#include "footfall/plan/plan.hpp"
+#include "footfall/scenes/scenes.hpp"
 
 namespace py = pybind11;
 

@@ -5,7 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "footfall/geometry.hpp"
+#include "footfall/model/geometry.hpp"
 
 namespace footfall::bindings {
 

@@ -1,6 +1,6 @@
 // footfall._native: the planning core for Python and Blender.
 #include "bindings.hpp"
-#include "footfall/status.hpp"
+#include "footfall/model/status.hpp"
 
 PYBIND11_MODULE(_native, m) {
   m.doc() =

@@ -8,9 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "footfall/plan.hpp"
-#include "footfall/planner.hpp"
-#include "footfall/scenes.hpp"
+#include "footfall/plan/plan.hpp"
+#include "footfall/planner/planner.hpp"
+#include "footfall/scenes/scenes.hpp"
+#include "util/seeded_random.hpp"
 
 namespace footfall::tools {
 namespace {
@@ -37,7 +38,7 @@ Workload box_field_workload() {
   Workload workload{"field of 700 boxes", box_field(700, 80.0, 7), {}};
   const ObstacleMap map(workload.obstacles);
   const FootstepPlanner planner(CharacterParams{}, PlannerParams{}, map);
-  SceneRandom random(11);
+  SeededRandom random(11);
   while (workload.queries.size() < 100) {
     const Vec2 from{random.uniform(-30.0, 30.0), random.uniform(-30.0, 30.0)};
     const Vec2 to = from + 10.0 * unit(random.uniform(-kPi, kPi));

@@ -15,12 +15,14 @@
 #include <vector>
 
 #include "bench_command.hpp"
-#include "footfall/metrics.hpp"
-#include "footfall/navmesh.hpp"
-#include "footfall/plan.hpp"
-#include "footfall/plan_io.hpp"
-#include "footfall/scenes.hpp"
-#include "footfall/steersuite.hpp"
+#include "footfall/io/path_json.hpp"
+#include "footfall/io/plan_file.hpp"
+#include "footfall/io/scenario_file.hpp"
+#include "footfall/io/steersuite.hpp"
+#include "footfall/navmesh/navmesh.hpp"
+#include "footfall/plan/metrics.hpp"
+#include "footfall/plan/plan.hpp"
+#include "footfall/scenes/scenes.hpp"
 
 namespace {
 

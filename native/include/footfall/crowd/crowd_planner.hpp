@@ -1,0 +1,69 @@
+// Footfall — agents' whole walks: repeated short-horizon searches toward each
+// of their goals in turn, among each other's plans, until the last goal is
+// reached, the agent is stuck, or the time limit passes (crowd_planner.cpp).
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "footfall/model/footstep.hpp"
+#include "footfall/navmesh/navmesh.hpp"
+#include "footfall/plan/plan.hpp"
+#include "footfall/planner/planner.hpp"
+
+namespace footfall {
+
+/// An agent to plan: where it stands and where it goes.
+struct AgentSpec {
+  std::string name;         ///< Unique name.
+  Vec2 position;            ///< Standing position of the COM. [m]
+  double facing = 0;        ///< Initial facing. [rad]
+  std::vector<Vec2> goals;  ///< Goals, visited in order. [m] [non-empty]
+  /// Walks through its last goal and leaves the scene there, as SteerSuite's
+  /// agents do, instead of coming to rest on it.
+  bool leave_at_goal = false;
+};
+
+/// Lets a caller follow and stop a long run.
+struct RunControl {
+  /// Called with the fraction done, in [0, 1], at most a few times a second.
+  std::function<void(double)> progress;
+  /// When set and true, the run stops at the next tick and reports kCancelled.
+  const std::atomic<bool>* cancel = nullptr;
+  /// Threads the searches of one tick run on; the plans do not depend on it. [1, 64]
+  int threads = 1;
+  /// When set, the seconds spent in footstep searches (each agent's way, its
+  /// local goal, the search and the cut to a rest) are added to it, summed
+  /// over threads: the planner's own time, beside the run's wall time.
+  double* search_seconds = nullptr;
+  /// True if the caller asked to stop.
+  bool cancelled() const { return cancel != nullptr && cancel->load(std::memory_order_relaxed); }
+};
+
+/// Plans `agents` together, each walking through its goals in turn. Each
+/// agent's way to its goal is its path on `mesh` (with room to walk upright,
+/// else to side-step; the straight line without a mesh or a path), and each
+/// search aims at a local goal up to local_goal_distance along it, in sight.
+/// Agents plan among the plans of the agents they see (within 30 m, in front
+/// of the torso, with a clear line of sight), which they keep clear of as
+/// moving obstacles, and replan 1 s before their plan runs out (0.1 s after a
+/// search that gave nothing to commit); a 20 Hz tick decides who replans when. Waiting is a valid
+/// answer; a blocked agent asks those with more way left that stand in its
+/// way to step out of it (yielding, docs/footstep-model.md). A reached last goal
+/// ends in a stop step, or for an agent that leaves at it, in the step that
+/// reaches it; an agent whose way has not shortened by min_progress
+/// for 15 s is stuck: it waits until an agent near it moves, then tries
+/// again, and one still waiting when no one else walks on is "stuck"; the
+/// walk also ends at max_time ("time limit") or on cancel ("cancelled").
+/// Deterministic, whatever `control.threads`.
+std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
+                                   const FootstepPlanner& planner, const NavMesh* mesh = nullptr,
+                                   const RunControl& control = {});
+
+/// One agent's walk alone (plan_agents with no one else).
+AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
+                     const NavMesh* mesh = nullptr, const RunControl& control = {});
+
+}  // namespace footfall

@@ -1,0 +1,39 @@
+// Footfall — the scenario: obstacles, agents and parameters as plain data
+// (read from files by io/scenario_file.hpp), and planning it whole.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "footfall/crowd/crowd_planner.hpp"
+#include "footfall/navmesh/navmesh.hpp"
+#include "footfall/model/obstacles.hpp"
+#include "footfall/model/params.hpp"
+#include "footfall/plan/plan.hpp"
+
+namespace footfall {
+
+/// Everything needed to plan a scene: plain data.
+struct Scenario {
+  std::vector<Obstacle> obstacles;  ///< Static obstacles.
+  std::vector<AgentSpec> agents;    ///< Agents, each planned on its own.
+  CharacterParams character;        ///< Shared character parameters.
+  PlannerParams planner;            ///< Shared planner parameters.
+};
+
+/// Checks what the parser cannot: parameter ranges, obstacle polygons, unique
+/// agent names, agents and goals clear of obstacles. Throws
+/// std::invalid_argument with the field path ("agents[1].position: ...").
+void validate(const Scenario& scenario);
+
+/// Plans every agent of a scenario together on its navigation mesh
+/// (plan_agents). Deterministic: the same scenario gives bit-identical plans,
+/// whatever the number of threads.
+Plan plan_scenario(const Scenario& scenario, const RunControl& control = {});
+
+/// The navigation mesh of a scenario. The domain is the bounding box of its
+/// obstacles, agent positions and goals, grown by `margin` on every side;
+/// obstacle i gets id i. [m] [margin > 0]
+NavMesh navmesh_of(const Scenario& scenario, double margin = 5.0);
+
+}  // namespace footfall

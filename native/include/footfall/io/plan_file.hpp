@@ -1,0 +1,24 @@
+// Footfall — the plan file (JSON, "footfall-plan" version 1).
+#pragma once
+
+#include <string>
+
+#include "footfall/plan/plan.hpp"
+
+namespace footfall {
+
+/// The plan as JSON text.
+std::string plan_to_json(const Plan& plan);
+
+/// Parses plan JSON (as written by plan_to_json, or by hand). Errors are
+/// std::invalid_argument: "SOURCE: FIELD.PATH: what is wrong".
+Plan parse_plan(const std::string& text, const std::string& source = "<string>");
+
+/// Writes the plan file atomically: to a temporary file beside `path`, then
+/// renamed, so a failure leaves no half-written file. Throws footfall::Error.
+void write_plan_file(const Plan& plan, const std::string& path);
+
+/// Reads a plan file (errors as parse_plan).
+Plan load_plan(const std::string& path);
+
+}  // namespace footfall

@@ -1,0 +1,152 @@
+// Footfall — a planned scene (every agent's footsteps) and its analytic
+// evaluation at any time.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <string>
+
+#include "footfall/model/footstep.hpp"
+#include "footfall/model/obstacles.hpp"
+#include "footfall/model/params.hpp"
+#include "footfall/model/status.hpp"
+
+namespace footfall {
+
+/// How an agent's plan ended.
+enum class AgentStatus {
+  kReached,  ///< Every goal was reached; the agent stands at the last one.
+  kPartial,  ///< The walk ended early; `AgentPlan::reason` says why.
+};
+/// "reached" or "partial".
+const char* to_string(AgentStatus status);
+
+/// The plan of one agent: its start and its timed footsteps.
+struct AgentPlan {
+  std::string name;                            ///< The agent's name.
+  AgentStatus status = AgentStatus::kPartial;  ///< Reached or partial.
+  /// Empty when reached; otherwise "stuck", "time limit" or "cancelled".
+  std::string reason;
+  Vec2 stuck_at;                    ///< Where the agent stopped, when partial. [m]
+  FootstepState start;              ///< Standing start state.
+  std::vector<Footstep> footsteps;  ///< The timed footsteps, in order.
+  int goals_reached = 0;            ///< Goals reached, in order.
+  /// The agent walked through its last goal and is gone after its last step
+  /// (present_at): no one can meet it there.
+  bool leaves = false;
+  int searches = 0;               ///< Footstep searches run.
+  long long nodes_generated = 0;  ///< Summed over the searches.
+  long long nodes_expanded = 0;   ///< Summed over the searches.
+
+  /// Sum of the step costs. [J]
+  double total_cost() const;
+  /// Time at the end of the last step. [s] (Inline: crowd checks ask it
+  /// at every sample.)
+  double end_time() const { return footsteps.empty() ? 0.0 : footsteps.back().end_time; }
+};
+
+/// False once an agent that leaves has taken its last step.
+inline bool present_at(const AgentPlan& plan, double t) {
+  return !plan.leaves || t <= plan.end_time();
+}
+
+/// The plan of a whole scenario.
+struct Plan {
+  std::vector<AgentPlan> agents;     ///< One per scenario agent, in the same order.
+  CharacterParams character;         ///< The character the plan was made for.
+  std::vector<Obstacle> obstacles;   ///< The scenario's static obstacles, for measuring the plan.
+  Status status = Status::kSuccess;  ///< kCancelled if the run was stopped.
+};
+
+/// A foot at one instant.
+struct FootPose {
+  Vec2 position;           ///< [m]
+  double orientation = 0;  ///< [rad]
+  double lift = 0;         ///< Height of the sole above the ground. [m]
+  bool planted = true;     ///< On the ground (stance), or swinging.
+};
+
+/// COM of the agent at time `t` (before the first step: the start; after the
+/// last: where it ends).
+ComSample com_at(const AgentPlan& plan, double t);
+/// The largest COM speed of the plan from time `from` on (a step's is
+/// greatest at one of its ends): a bound for skipping ahead while two plans
+/// are far apart. [m/s]
+double top_com_speed(const AgentPlan& plan, double from);
+
+/// How far from the COM the plan's collision circles (collision_circles)
+/// reach from time `from` on, bounded step by step: the torso's, and each
+/// planted foot's from the step's chord ends plus its sway. [m]
+double circle_reach(const AgentPlan& plan, const CharacterParams& character, double from);
+
+/// top_com_speed, circle_reach and a box round the COM path of one plan,
+/// from any time on, found in O(log steps): kept per step as maxima over the
+/// steps from there on. A crowd checks every plan against dozens of others
+/// at every commit and search; scanning each plan's steps for these cost more
+/// than the checks they skip. A copy of what it needs: rebuild it whenever
+/// the plan changes.
+class PlanBounds {
+ public:
+  /// The plan's bounds from a time on.
+  struct From {
+    double top_speed = 0.0;  ///< top_com_speed(plan, from), the same to the bit. [m/s]
+    double reach = 0.0;      ///< circle_reach(plan, character, from), the same to the bit. [m]
+    /// Holds the COM: the chords of the steps from the one under way on,
+    /// grown by their sway (and the start, before the first step).
+    Box com_box;
+  };
+
+  PlanBounds() = default;
+  PlanBounds(const AgentPlan& plan, const CharacterParams& character);
+  /// The bounds from time `from` on.
+  From from(double from) const;
+
+ private:
+  /// The steps' start times, searched apart from the bounds: a crowd asks
+  /// for the bounds of dozens of plans at every commit. [s]
+  std::vector<double> starts_;
+  std::vector<From> suffix_;  ///< [i]: from step i on (the start's feet left out).
+  From start_;  ///< Standing at the start: circle_reach's feet term, and the start COM.
+};
+
+/// Both feet at time `t`, indexed by Foot. The foot of the current step is
+/// planted; the other swings from where it was planted to where the next step
+/// plants it, on an arc whose height grows with the stride (a foot that does
+/// not move stays planted). The foot of a first step, or of a step from
+/// standing by the foot that stopped last, swings in a lead-in of at most
+/// 0.25 s (half the step) at the start of its step instead. No foot ever jumps.
+std::array<FootPose, 2> feet_at(const AgentPlan& plan, double t);
+
+/// Torso facing at time `t`: phi of the current step. [rad]
+double facing_at(const AgentPlan& plan, double t);
+
+/// The collision circles of figure 1c at time `t`: three torso circles, then
+/// one per planted foot (so four while a foot swings, five when both are down);
+/// none once an agent that leaves is gone.
+std::vector<Circle> collision_circles(const AgentPlan& plan, const CharacterParams& character,
+                                      double t);
+
+/// The same circles without allocating (crowd checks ask for millions):
+/// they go to `out`, and the count is returned.
+int collision_circles(const AgentPlan& plan, const CharacterParams& character, double t,
+                      std::array<Circle, 5>& out);
+
+/// com_at and collision_circles of one plan, the same to the bit, for times
+/// that mostly grow (a check walking through its instants, the crowd's
+/// ticks): each step under way is found from the last, not searched for
+/// again. An earlier time, or a plan cut short since, is searched for anew.
+class PlanWalk {
+ public:
+  explicit PlanWalk(const AgentPlan& plan) : plan_(&plan) {}
+  ComSample com_at(double t);
+  int collision_circles(const CharacterParams& character, double t, std::array<Circle, 5>& out);
+
+ private:
+  /// The step under way at t, as com_at(plan, t) finds it.
+  int step(double t);
+  const AgentPlan* plan_;
+  int step_ = -1;  ///< None yet.
+};
+
+}  // namespace footfall

@@ -1,0 +1,120 @@
+// Footfall — the crowd workloads of the footstep paper's table 1, from seeded
+// generators: an egress through a door, a two-way hall, a crowd among boxes.
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "footfall/planner/planner.hpp"
+#include "footfall/scenes/scenes.hpp"
+#include "util/seeded_random.hpp"
+
+namespace footfall {
+namespace {
+
+/// Agents start, and stand at their goals, at least this far apart. [m]
+constexpr double kSpacing = 0.9;
+/// Draws per agent before a generator gives up.
+constexpr int kMaxAttempts = 100000;
+
+/// Where standing characters fit: clear of the obstacles, free to set off,
+/// and away from the points kept before.
+class Room {
+ public:
+  explicit Room(const Scenario& scenario)
+      : character_(scenario.character),
+        map_(scenario.obstacles),
+        planner_(scenario.character, scenario.planner, map_) {}
+
+  bool fits(Vec2 p, double facing) const {
+    // Free to set off too: a character wedged between boxes could never step.
+    const FootstepState standing = standing_state(p, facing, character_);
+    if (planner_.collides(standing) || !planner_.free_to_set_off(standing)) return false;
+    for (const Vec2 q : kept_)
+      if (distance(p, q) < kSpacing) return false;
+    return true;
+  }
+  void keep(Vec2 p) { kept_.push_back(p); }
+
+ private:
+  CharacterParams character_;
+  ObstacleMap map_;
+  FootstepPlanner planner_;
+  std::vector<Vec2> kept_;
+};
+
+/// Adds `count` agents whose start and goal `draw` returns, drawing again
+/// while the start (facing its goal) does not fit among the starts, or the
+/// goal among the goals (only when `goals_apart`: agents that leave may
+/// share their exit). Every agent leaves at its goal.
+template <typename Draw>
+void add_agents(Scenario& scenario, int count, bool goals_apart, Draw draw) {
+  Room starts(scenario), goals(scenario);
+  for (int i = 0; i < count; ++i) {
+    for (int attempt = 0;; ++attempt) {
+      if (attempt == kMaxAttempts)
+        throw std::invalid_argument("no room for agent " + std::to_string(i) +
+                                    ": the generator's region is too small for the crowd");
+      const auto [start, goal] = draw();
+      const double facing = angle_of(goal - start);
+      if (!starts.fits(start, facing) || (goals_apart && !goals.fits(goal, facing))) continue;
+      starts.keep(start);
+      goals.keep(goal);
+      scenario.agents.push_back({"agent" + std::to_string(i), start, facing, {goal}, true});
+      break;
+    }
+  }
+}
+
+}  // namespace
+
+Scenario egress_scenario(int agents, std::uint64_t seed) {
+  Scenario scenario;
+  // A 10 x 10 m room; the door, 1.2 m wide, in the middle of its east wall.
+  scenario.obstacles = wall_with_door(5.0, 1.2, 0.0, 5.2);
+  scenario.obstacles.push_back(box_obstacle({-5.0, 0.0}, {0.2, 10.4}, 2.5));
+  scenario.obstacles.push_back(box_obstacle({0.0, 5.1}, {10.0, 0.2}, 2.5));
+  scenario.obstacles.push_back(box_obstacle({0.0, -5.1}, {10.0, 0.2}, 2.5));
+  SeededRandom random(seed);
+  add_agents(scenario, agents, false, [&] {
+    return std::pair{Vec2{random.uniform(-4.4, 4.0), random.uniform(-4.4, 4.4)},
+                     Vec2{12.0, random.uniform(-3.0, 3.0)}};
+  });
+  return scenario;
+}
+
+Scenario two_way_hall_scenario(int agents, std::uint64_t seed, double width) {
+  if (!(width >= 2.0 && width <= 1000.0))
+    throw std::invalid_argument("width: the hall must be 2-1000 m wide");
+  Scenario scenario;
+  // A hall 80 m long, open at both ends; half the crowd starts in each half
+  // (0.4 m clear of the walls) and leaves by the far end.
+  const double half = 0.5 * width;
+  scenario.obstacles.push_back(box_obstacle({0.0, half + 0.1}, {80.0, 0.2}, 2.5));
+  scenario.obstacles.push_back(box_obstacle({0.0, -half - 0.1}, {80.0, 0.2}, 2.5));
+  SeededRandom random(seed);
+  add_agents(scenario, agents, false, [&] {
+    const double end = scenario.agents.size() % 2 == 0 ? -1.0 : 1.0;
+    return std::pair{Vec2{end * random.uniform(4.0, 39.5), random.uniform(0.4 - half, half - 0.4)},
+                     Vec2{-end * 41.0, random.uniform(0.5 - half, half - 0.5)}};
+  });
+  return scenario;
+}
+
+Scenario box_field_crowd_scenario(int agents, int boxes, std::uint64_t seed) {
+  Scenario scenario;
+  scenario.obstacles = box_field(boxes, 80.0, seed);
+  SeededRandom random(seed + 1);
+  // Each walks 10-20 m in a random direction, within the field.
+  add_agents(scenario, agents, true, [&] {
+    const Vec2 start{random.uniform(-38.0, 38.0), random.uniform(-38.0, 38.0)};
+    Vec2 goal;
+    do goal = start + random.uniform(10.0, 20.0) * unit(random.uniform(-kPi, kPi));
+    while (std::abs(goal.x) > 38.0 || std::abs(goal.y) > 38.0);
+    return std::pair{start, goal};
+  });
+  return scenario;
+}
+
+}  // namespace footfall

@@ -1,0 +1,54 @@
+#include "footfall/scenes/scenes.hpp"
+#include "util/seeded_random.hpp"
+
+namespace footfall {
+
+Obstacle box_obstacle(Vec2 center, Vec2 size, double height) {
+  const Vec2 h = 0.5 * size;
+  return {{{center.x - h.x, center.y - h.y},
+           {center.x + h.x, center.y - h.y},
+           {center.x + h.x, center.y + h.y},
+           {center.x - h.x, center.y + h.y}},
+          height};
+}
+
+std::vector<Obstacle> wall_with_door(double x, double door_width, double door_center,
+                                     double half_length, double thickness) {
+  const double low = door_center - 0.5 * door_width;
+  const double high = door_center + 0.5 * door_width;
+  return {box_obstacle({x, 0.5 * (-half_length + low)}, {thickness, low + half_length}, 2.5),
+          box_obstacle({x, 0.5 * (high + half_length)}, {thickness, half_length - high}, 2.5)};
+}
+
+Scenario demo_scenario() {
+  Scenario scenario;
+  scenario.obstacles = wall_with_door(5.0, 1.6);
+  // The room behind the door, cluttered.
+  scenario.obstacles.push_back(box_obstacle({8.0, 0.0}, {1.0, 1.0}, 0.8));
+  scenario.obstacles.push_back(box_obstacle({9.8, -2.2}, {0.8, 0.8}, 0.75));
+  scenario.obstacles.push_back(box_obstacle({10.2, 2.6}, {1.4, 0.6}, 0.9));
+  scenario.obstacles.push_back(box_obstacle({13.0, -0.6}, {0.6, 1.6}, 1.0));
+  // A crowd before it, each with its own place in the room.
+  scenario.agents.push_back({"walker", {0.0, 0.5}, 0.0, {{11.0, 0.3}}});
+  scenario.agents.push_back({"ada", {0.0, -1.0}, 0.0, {{14.5, -2.5}}});
+  scenario.agents.push_back({"ben", {-1.5, 1.2}, 0.0, {{13.5, 2.0}}});
+  scenario.agents.push_back({"cleo", {-1.5, -0.4}, 0.0, {{11.5, -2.0}}});
+  scenario.agents.push_back({"dan", {-4.5, 0.3}, 0.0, {{8.5, 2.0}}});
+  scenario.agents.push_back({"eve", {-3.0, 1.8}, 0.0, {{7.0, -2.5}}});
+  return scenario;
+}
+
+std::vector<Obstacle> box_field(int count, double size, std::uint64_t seed) {
+  SeededRandom random(seed);
+  std::vector<Obstacle> boxes;
+  boxes.reserve(static_cast<size_t>(count));
+  for (int i = 0; i < count; ++i) {
+    const Vec2 center{random.uniform(-0.5 * size, 0.5 * size),
+                      random.uniform(-0.5 * size, 0.5 * size)};
+    const Vec2 extent{random.uniform(0.5, 1.5), random.uniform(0.5, 1.5)};
+    boxes.push_back(box_obstacle(center, extent, 1.0));
+  }
+  return boxes;
+}
+
+}  // namespace footfall

@@ -1,0 +1,43 @@
+// Footfall — built-in scenes: the demo, and the building blocks of the
+// benchmark workloads and tests (walls with doors, boxes, a box field).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "footfall/crowd/scenario.hpp"
+
+namespace footfall {
+
+/// An axis-aligned box obstacle centred at `center`. [m]
+Obstacle box_obstacle(Vec2 center, Vec2 size, double height = 1.0);
+
+/// A wall along the line x = `x`, from y = -`half_length` to +`half_length`,
+/// `thickness` thick, with a door of `door_width` centred at y = `door_center`. [m]
+std::vector<Obstacle> wall_with_door(double x, double door_width, double door_center = 0.0,
+                                     double half_length = 6.0, double thickness = 0.2);
+
+/// The built-in demo: one character walks through a 1 m doorway in a wall and
+/// around a box behind it.
+Scenario demo_scenario();
+
+/// `count` random boxes of 0.5-1.5 m side in a square field of side `size`
+/// centred on the origin, from a portable seeded generator (the same boxes on
+/// every machine). [m]
+std::vector<Obstacle> box_field(int count, double size, std::uint64_t seed);
+
+/// The crowd workloads of the footstep paper's table 1, from seeded
+/// generators; every agent leaves at its goal, as SteerSuite's do.
+/// An egress: `agents` at random in a 10 x 10 m room, each leaving through
+/// the 1.2 m door in its east wall to a point 7 m beyond it. Throws
+/// std::invalid_argument if the room cannot hold them (so do the others).
+Scenario egress_scenario(int agents, std::uint64_t seed);
+/// A two-way hall 80 m long and `width` wide, open at both ends: half the
+/// agents start in each half and leave by the far end. 16 m is the width of
+/// SteerSuite's hallways (the paper's authors' own two-way hall of 200).
+Scenario two_way_hall_scenario(int agents, std::uint64_t seed, double width = 16.0);
+/// `agents` at random among `boxes` boxes in an 80 m field (box_field), each
+/// walking 10-20 m in a random direction.
+Scenario box_field_crowd_scenario(int agents, int boxes, std::uint64_t seed);
+
+}  // namespace footfall

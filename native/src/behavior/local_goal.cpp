@@ -1,0 +1,104 @@
+// Footfall — the way to an agent's goal and the local goal along it.
+#include "behavior/local_goal.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace footfall {
+namespace {
+
+/// The way only places local goals; its arcs need not be fine. [m]
+constexpr double kRouteArcTolerance = 0.05;
+/// A local goal out of sight is looked for this much nearer, each time. [1]
+constexpr double kSightBackOff = 0.6;
+/// ...down to this far along the way, past a corner or not. [m]
+constexpr double kMinAhead = 1.5;
+/// A roomier way is taken if it is at most this much longer than the
+/// tightest: kRoomyDetour times, plus kRoomyExtra. The tightest is dear and
+/// chancy for the footsteps (a side step through a gap narrower than the
+/// shoulders takes some 140 nodes, and a slot a little wider than the torso
+/// circle may pass none): a detour of up to 1.25 times plus 2 m left twice
+/// as many agents stuck among boxes (docs/footstep-model.md).
+constexpr double kRoomyDetour = 2.0;
+constexpr double kRoomyExtra = 6.0;  // [m]
+/// Room beside the shoulders, where there is room, for the body's sway. [m]
+constexpr double kSwayMargin = 0.25;
+
+/// The point `along` metres along `points` (clamped to its ends).
+Vec2 point_along(const std::vector<Vec2>& points, double along) {
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    const double piece = distance(points[k], points[k + 1]);
+    if (along <= piece && piece > 0.0)
+      return points[k] + (along / piece) * (points[k + 1] - points[k]);
+    along -= piece;
+  }
+  return points.back();
+}
+
+/// True if the agent at `from` sees `to`: a straight line with room for the
+/// torso circle joins them. A short-horizon search cannot go round a wall to
+/// reach a point behind it.
+bool in_sight(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 to) {
+  if (mesh == nullptr) return true;
+  return mesh->clearance_between(from, to, character.torso_radius) >= character.torso_radius;
+}
+
+}  // namespace
+
+/// The way on the navigation mesh: the roomiest of three that is not much
+/// longer than the tightest (at most kRoomyDetour times plus kRoomyExtra):
+/// room to walk upright with a margin for the sway, just upright (half the
+/// torso width), or only to side-step (the torso circle), as through a gap
+/// narrower than the shoulders. With no way at all, the straight line, along
+/// which the local search finds what it can. A `roomy` way (for an agent
+/// stuck once) is the first of the two with room to walk upright that there
+/// is, however long.
+Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal,
+               bool roomy) {
+  Way way{{from, goal}, distance(from, goal)};
+  if (mesh == nullptr) return way;
+  const double upright = 0.5 * character.torso_width;
+  const auto roomy_enough = [roomy](const PathResult& path, double tight_length) {
+    return path.status == PathStatus::kFound &&
+           (roomy || path.length <= kRoomyDetour * tight_length + kRoomyExtra);
+  };
+  // The tight way is no shorter than the straight line: a roomiest way that
+  // is not much longer than the line needs no tight way to compare with
+  // (most ways, in the open; a third of a crowd's time went to these queries).
+  PathResult roomiest = mesh->find_path({from, goal, upright + kSwayMargin, kRouteArcTolerance});
+  if (roomy_enough(roomiest, way.length)) return {std::move(roomiest.points), roomiest.length};
+  PathResult tight = mesh->find_path({from, goal, character.torso_radius, kRouteArcTolerance});
+  if (tight.status != PathStatus::kFound) return way;
+  if (roomy_enough(roomiest, tight.length)) return {std::move(roomiest.points), roomiest.length};
+  PathResult upright_way = mesh->find_path({from, goal, upright, kRouteArcTolerance});
+  if (roomy_enough(upright_way, tight.length))
+    return {std::move(upright_way.points), upright_way.length};
+  return {std::move(tight.points), tight.length};
+}
+
+/// A local goal out of sight is looked for nearer by steps of kSightBackOff,
+/// down to kMinAhead: a short-horizon search cannot go round a wall to a
+/// point behind it. The agent rests at a local goal until it replans, so it
+/// is moved back along the way to where it could stand and turn.
+LocalGoal local_goal(const FootstepPlanner& planner, const NavMesh* mesh, const Way& way) {
+  const Vec2 from = way.points.front();
+  double reach = std::min(planner.params().local_goal_distance, way.length);
+  while (reach > kMinAhead &&
+         !in_sight(mesh, planner.character(), from, point_along(way.points, reach)))
+    reach = std::max(kMinAhead, kSightBackOff * reach);
+  if (way.length <= reach) return {way.points.back(), true};
+  constexpr double kStep = 0.25;  // [m]
+  // Not within the goal tolerance of the agent: it would count as there
+  // already, and stand still for good (beside a box, where the way hugs it).
+  for (double along = reach; along > planner.params().goal_tolerance; along -= kStep) {
+    const Vec2 point = point_along(way.points, along);
+    const Vec2 ahead = point_along(way.points, along + kStep);
+    const double facing = angle_of(ahead - point);
+    if (planner.room_to_turn(point) &&
+        !planner.collides(standing_state(point, facing, planner.character())))
+      return {point, false};
+  }
+  return {point_along(way.points, reach), false};
+}
+
+}  // namespace footfall

@@ -1,0 +1,39 @@
+// Footfall — where an agent's next footstep search aims: its way to the goal
+// on the navigation mesh, and the local goal along that way.
+#pragma once
+
+#include <vector>
+
+#include "footfall/navmesh/navmesh.hpp"
+#include "footfall/planner/planner.hpp"
+
+namespace footfall {
+
+/// The way from an agent to its goal, and its length. [m]
+struct Way {
+  std::vector<Vec2> points;
+  double length = 0.0;
+};
+
+/// The way on `mesh`: the roomiest of three clearances (room to walk upright
+/// with a margin for the sway, just upright, or only to side-step) that is not
+/// much longer than the tightest; with no mesh or no path, the straight line.
+/// `roomy`: the roomier of the first two that has a way, however long (else
+/// as above).
+Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal,
+               bool roomy = false);
+
+/// Where the next search aims, and whether that is the goal itself.
+struct LocalGoal {
+  Vec2 point;
+  bool is_goal = false;
+};
+
+/// The goal if the way to it is within local_goal_distance and in sight;
+/// else the farthest point of the way within that distance that is in sight,
+/// moved back along the way until the agent could stand there (but not to
+/// within the goal tolerance of it: then the point in sight, standing room
+/// or not).
+LocalGoal local_goal(const FootstepPlanner& planner, const NavMesh* mesh, const Way& way);
+
+}  // namespace footfall

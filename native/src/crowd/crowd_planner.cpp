@@ -1,0 +1,583 @@
+// Footfall — the crowd driver. Agents plan their footsteps toward local goals
+// on their ways (local_goal.hpp), each among the plans of the agents it sees,
+// replanning a little before its plan runs out. A fixed tick decides who
+// replans when; the output is every agent's continuous footstep plan.
+//
+// No overlaps: every plan ends with the agent coming to rest (a provisional
+// rest, replaced when the agent replans; an agent that leaves at its last goal
+// is gone after it instead), and a new plan is committed only if it keeps
+// clear of every other agent's plan, rest included, seen or not
+// (crowd_commit.hpp); otherwise the agent waits where its rest leaves it.
+// Every committed plan was checked against everyone's rest, so waiting is
+// always clear.
+//
+// Making way: blocked agents ask those after them to rest out of their way
+// (crowd_yielding.hpp). One stuck (stuck()) sleeps until one near it moves
+// (wake_near()).
+//
+// Threads and determinism: a tick's searches read a view, a copy of the
+// walkers as they stood when the tick's searches were set going, before the
+// commits of the tick before. Those commits are made while this tick's
+// searches run, and the next tick's searches fill the threads while this
+// tick's last ones finish: agents see others' new plans a tick (50 ms) later
+// than had each tick waited for the last. A tick's results are committed a
+// tick later, one agent after another in the agents' order, each checked
+// against the plans as they then stand. The check against a plan unchanged
+// since the view gives what it gave against the view, so it is made on the
+// threads, with the search (propose()); only plans changed since are checked
+// again, in order (refusal(), by each plan's version). Nothing a search reads
+// depends on the number of threads or their timing, nor then do the plans.
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+
+#include "crowd/agent_grid.hpp"
+#include "crowd/crowd_commit.hpp"
+#include "crowd/crowd_walker.hpp"
+#include "crowd/crowd_yielding.hpp"
+#include "footfall/crowd/crowd_planner.hpp"
+#include "footfall/plan/plan.hpp"
+#include "behavior/local_goal.hpp"
+#include "util/workers.hpp"
+
+namespace footfall {
+
+using namespace crowd;
+
+namespace {
+
+void check_agent(const AgentSpec& agent) {
+  if (agent.goals.empty()) throw std::invalid_argument("agent " + agent.name + ": has no goals");
+  if (!in_world(agent.position) || !std::isfinite(agent.facing)) {
+    throw std::invalid_argument("agent " + agent.name +
+                                ": position and facing must be finite, within 1e9 m");
+  }
+  for (const Vec2& goal : agent.goals) {
+    if (!in_world(goal))
+      throw std::invalid_argument("agent " + agent.name + ": goals must be finite, within 1e9 m");
+  }
+}
+
+/// The way from `from` to `goal`: one of `known` if it starts and ends there
+/// (the mesh does not change while the agents plan, so it would come out the
+/// same), else measured anew.
+Way way_toward(const std::vector<KnownWay>& known, const NavMesh* mesh,
+               const CharacterParams& character, Vec2 from, Vec2 goal, bool roomy) {
+  for (const KnownWay& k : known)
+    if (k.from == from && k.goal == goal) return k.way;
+  return footfall::way_toward(mesh, character, from, goal, roomy);
+}
+
+/// The snapshot at time t of the agents whose plans `walks` read (one each,
+/// kept from tick to tick: the step under way is found from the last tick's),
+/// with their bounds from `bounds_from` on, and who gives way.
+Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& walks, double t,
+                  double bounds_from) {
+  Snapshot s{t,
+             std::vector<Vec2>(walkers.size()),
+             std::vector<char>(walkers.size()),
+             {},
+             bounds_from,
+             std::vector<PlanBounds::From>(walkers.size()),
+             std::vector<char>(walkers.size())};
+  for (std::size_t j = 0; j < walkers.size(); ++j) {
+    s.com[j] = walks[j].com_at(t).position;
+    s.present[j] = present_at(walkers[j].plan, t);
+    s.bounds[j] = walkers[j].bounds->from(bounds_from);
+  }
+  s.grid = AgentGrid(s.com, kGridCell);
+  for (std::size_t j = 0; j < walkers.size(); ++j) s.giving_way[j] = gives_way(walkers, j, s);
+  return s;
+}
+
+/// The agents that agent `i` sees at the snapshot's time (within
+/// kViewDistance, in front of its torso, and with a clear line of sight),
+/// those it has noticed, and those whose wishes it keeps out of.
+std::vector<std::size_t> seen_by(const std::vector<Walker>& walkers, std::size_t i,
+                                 const Snapshot& now, const NavMesh* mesh) {
+  const Vec2 eye = now.com[i];
+  const Vec2 ahead = unit(facing_at(walkers[i].plan, now.t));
+  std::vector<std::size_t> seen;
+  std::vector<Vec2> where;
+  std::vector<std::size_t> around;
+  now.grid.around(eye, kViewDistance, around);
+  for (const std::size_t j : around) {
+    if (j == i || !now.present[j]) continue;
+    const Vec2 d = now.com[j] - eye;
+    if (dot(d, d) > kViewDistance * kViewDistance || dot(d, ahead) <= 0.0) continue;
+    seen.push_back(j);
+    where.push_back(now.com[j]);
+  }
+  if (mesh != nullptr) {
+    const std::vector<char> in_sight = mesh->lines_of_sight(eye, where);
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < seen.size(); ++k)
+      if (in_sight[k]) seen[kept++] = seen[k];
+    seen.resize(kept);
+  }
+  for (const auto* known : {&walkers[i].noticed, &walkers[i].yielding_to})
+    for (const std::size_t j : *known)
+      if (now.present[j] && std::find(seen.begin(), seen.end(), j) == seen.end()) seen.push_back(j);
+  return seen;
+}
+
+/// Cuts the attempt's steps back to the last state from which the agent
+/// comes to rest among `others`, outside `keep_out`, free to set off again
+/// unless the steps reach the goal (none left: it waits), and keeps that
+/// rest. Committed plans
+/// are checked with the agent standing after its rest, so the rest must be
+/// complete; and the next search starts there, so it must be able to set
+/// off: a rest in a door frame, facing a post, can leave every step blocked.
+void cut_to_rest(const FootstepPlanner& planner, const FootstepState& start,
+                 const MovingObstacles& others, const KeepOut& keep_out, Attempt& a) {
+  std::vector<FootstepState> states{start};
+  for (const Footstep& step : a.steps) states.push_back(state_after(states.back(), step));
+  std::size_t keep = a.steps.size();
+  for (; keep > 0; --keep) {
+    a.rest = planner.come_to_rest(states[keep], others);
+    const bool at_goal = a.reached && keep == a.steps.size();
+    if (a.rest.complete && planner.keeps_out(a.rest.state, keep_out) &&
+        (at_goal || planner.free_to_set_off(a.rest.state)))
+      break;
+  }
+  if (keep == a.steps.size()) return;
+  a.steps.resize(keep);
+  a.end = states[keep];
+  a.reached = false;
+}
+
+/// Keeps only the attempt's leading pivots, if it has any: a character that
+/// starts with its back to where it is going has not seen who is there (it
+/// sees only in front of its torso), so it turns first and plans the rest
+/// once it looks that way (later, having walked, it has looked around).
+/// Otherwise every plan it made walked into agents it never saw, refused one
+/// after another until it counted as stuck.
+void turn_first(const FootstepState& start, Attempt& a) {
+  FootstepState state = start;
+  std::size_t pivots = 0;
+  bool turns = false;
+  for (; pivots < a.steps.size() && a.steps[pivots].kind == StepKind::kStop; ++pivots) {
+    turns = turns || a.steps[pivots].phi != state.facing;
+    state = state_after(state, a.steps[pivots]);
+  }
+  if (!turns || pivots == a.steps.size()) return;
+  a.steps.resize(pivots);
+  a.end = state;
+  a.reached = false;
+}
+
+/// Agent i's next search: toward its local goal, among the plans of the
+/// agents it sees (`seen`), resting out of the wishes of those it yields to.
+/// When it stands blocked after a search that gained nothing, with one that
+/// goes after it near, also its wish: the same search among only those it
+/// sees that go first.
+Attempt search(const std::vector<Walker>& walkers, std::size_t i, const FootstepPlanner& planner,
+               const NavMesh* mesh, const std::vector<std::size_t>& seen, const Snapshot& now) {
+  const Walker& w = walkers[i];
+  const Vec2 goal = w.spec->goals[w.goal];
+  const Way way = way_toward(w.ways, mesh, planner.character(), w.state.com, goal, w.roomy);
+  const LocalGoal target =
+      keep_right(walkers, i, local_goal(planner, mesh, way), seen, now, planner, mesh);
+  // One that leaves at this goal needs no room to rest there.
+  const bool leaves = leaves_now(w, target.is_goal);
+  KeepOut keep_out;
+  for (const std::size_t j : w.yielding_to)
+    keep_out.insert(keep_out.end(), walkers[j].wish.begin(), walkers[j].wish.end());
+  const MovingObstacles others = plans_of(walkers, seen);
+  // An agent in a jam looks less far ahead, and a blocked one less deep:
+  // there the full search finds no more than waiting, or than a few nodes
+  // find, at the most cost. One held up by obstacles alone needs it all (a
+  // side-on way through a narrow gap is long).
+  bool jammed = false;
+  for (const std::size_t j : seen)
+    jammed = jammed || distance(now.com[j], w.state.com) <= kJamDistance;
+  const SearchOptions options{leaves, keep_out, w.blocked >= 1 && jammed ? kBlockedHorizon : 0,
+                              kRestGrace, jammed && patient(w, w.state) ? kJamStall : 0};
+  SearchResult result = planner.plan(w.state, target.point, others, options);
+  const bool moves =
+      std::any_of(result.footsteps.begin(), result.footsteps.end(),
+                  [&](const Footstep& step) { return !still(step, w.state.facing); });
+  SearchOptions short_search = options;
+  short_search.horizon = kBlockedHorizon;
+  // Standing where it must make room, with nowhere to go but aside.
+  bool boxed_in = false;
+  if (!moves && w.state.standing() && must_make_room(walkers, i, now, planner)) {
+    // In a face-off (two blocks of a counterflow, a knot among boxes) no one
+    // gains on its own way, and waiting only stands in the way: it makes
+    // room, stepping aside out of the wishes it yields to.
+    boxed_in = true;
+    if (auto aside = step_aside(w.state, keep_out, others, planner, mesh, short_search)) {
+      result = std::move(*aside);
+      boxed_in = false;
+    }
+  }
+  Attempt a;
+  a.from = w.state;
+  a.steps = result.footsteps;
+  a.end = result.footsteps.empty() ? w.state : result.end_state;
+  a.reached = result.status == Status::kSuccess && target.is_goal;
+  if (w.plan.footsteps.empty() && dot(unit(w.state.facing), target.point - w.state.com) < 0.0)
+    turn_first(w.state, a);
+  if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, others, keep_out, a);
+  a.ways.push_back({w.state.com, goal, way});
+  if (!a.reached) {
+    Way left = way_toward(w.ways, mesh, planner.character(), a.end.com, goal, w.roomy);
+    a.way_left = left.length;
+    a.ways.push_back({a.end.com, goal, std::move(left)});
+  }
+  a.way_from = way.length;
+  a.nodes_generated = result.nodes_generated;
+  a.nodes_expanded = result.nodes_expanded;
+  a.searched = true;
+  const double min_progress = planner.params().min_progress;
+  // Those it sees that go first; a wish is worth a search only if one that
+  // goes after it stands near enough to be in its way.
+  std::vector<std::size_t> first;
+  bool asks_someone = false;
+  for (const std::size_t j : seen) {
+    if (goes_first(walkers, now, j, i))
+      first.push_back(j);
+    else
+      asks_someone = asks_someone || distance(now.com[j], now.com[i]) <= kWishReach + kBodyLength;
+  }
+  if (asks_someone && w.blocked > 0 && w.state.standing() && !a.reached &&
+      a.way_left > way.length - min_progress) {
+    // Out of the wishes it yields to too: a wish may be the way out of
+    // another's, which those behind it make room for first. If only those
+    // that go first turned anything down, the search among them alone would
+    // find what this one found.
+    // Boxed in where it must make room: its wish is the way aside that those
+    // behind it (who go after it) would leave it, and they make room too.
+    if (boxed_in) {
+      const MovingObstacles ahead = plans_of(walkers, first);
+      if (const auto aside = step_aside(w.state, keep_out, ahead, planner, mesh, short_search)) {
+        a.wish = wish_discs(aside->footsteps, planner.character());
+        a.wish_makes_room = true;
+        return a;
+      }
+    }
+    const bool same =
+        std::all_of(result.refused_by.begin(), result.refused_by.end(),
+                    [&](std::size_t k) { return goes_first(walkers, now, seen[k], i); });
+    const SearchResult wish =
+        same ? result : planner.plan(w.state, target.point, plans_of(walkers, first), options);
+    const Vec2 from = w.state.com, to = wish.end_state.com;
+    const bool gains = distance(to, target.point) < distance(from, target.point) - min_progress;
+    const bool leaves_a_wish =
+        !planner.keeps_out(w.state, keep_out) && distance(to, from) > min_progress;
+    if (gains || leaves_a_wish) a.wish = wish_discs(wish.footsteps, planner.character());
+  }
+  return a;
+}
+
+/// Every other agent within kCheckDistance of agent `i` at the snapshot's
+/// time, seen or not.
+std::vector<std::size_t> near(std::size_t i, const Snapshot& now) {
+  std::vector<std::size_t> around, out;
+  now.grid.around(now.com[i], kCheckDistance, around);
+  for (const std::size_t j : around) {
+    if (j != i && now.present[j] && distance(now.com[j], now.com[i]) <= kCheckDistance)
+      out.push_back(j);
+  }
+  return out;
+}
+
+/// Wakes the dormant agents within kFreezeRadius of agent `i`, which has
+/// just committed steps that move: what held them may have moved on. Those
+/// woken go into `woken`.
+void wake_near(std::vector<Walker>& walkers, std::size_t i, const Snapshot& now,
+               std::vector<std::size_t>& woken) {
+  std::vector<std::size_t> around;
+  now.grid.around(now.com[i], kFreezeRadius, around);
+  for (const std::size_t j : around) {
+    if (walkers[j].dormant && distance(now.com[j], now.com[i]) <= kFreezeRadius) {
+      wake(walkers[j], now.t);
+      woken.push_back(j);
+    }
+  }
+}
+
+/// True if agent `i` is stuck: its way has not shortened by min_progress for
+/// kStuckAfter, and neither has that of any agent within kQueueDistance. One
+/// waiting behind others that move is queueing (at a crowded exit, for
+/// longer than kStuckAfter), not stuck; a deadlock does not move at all. One
+/// that has just reached its goal there counts as moving: it may have stood
+/// in the way until then.
+bool stuck(const std::vector<Walker>& walkers, std::size_t i) {
+  const Walker& w = walkers[i];
+  const double since = w.state.time - kStuckAfter;
+  if (w.improved_at >= since) return false;
+  for (std::size_t j = 0; j < walkers.size(); ++j) {
+    const Walker& other = walkers[j];
+    if (j != i && other.improved_at >= since &&
+        distance(other.state.com, w.state.com) <= kQueueDistance)
+      return false;
+  }
+  return true;
+}
+
+/// A stuck agent (stuck()) tries once more, for another kStuckAfter, on the
+/// roomiest way there is (way_toward()). The tightest way, with room only to
+/// side-step, passes any gap the torso's circle fits through, but the
+/// footsteps need more (their checks pad the torso, and it turns at the
+/// corners): among boxes, agents stood for good where their ways led into
+/// slots 0.37 m wide. Its next search is news (nothing_new()).
+void take_roomy_ways(Walker& w, double t) {
+  w.roomy = true;
+  w.ways.clear();
+  // Its way is measured anew: a way round may be longer than the one it
+  // was stuck on, and still gain.
+  w.best_way = std::numeric_limits<double>::infinity();
+  w.improved_at = w.state.time;
+  w.news_at = t;
+}
+
+/// True if `plan` stands still from time `from` on.
+bool still_from(const AgentPlan& plan, double from) {
+  const double facing = facing_at(plan, from);
+  for (auto step = plan.footsteps.rbegin(); step != plan.footsteps.rend() && step->end_time > from;
+       ++step) {
+    if (!still(*step, facing)) return false;
+  }
+  return true;
+}
+
+/// True if the two states stand (or walk) the same way at the same place.
+bool same_stance(const FootstepState& a, const FootstepState& b) {
+  return distance(a.com, b.com) <= kSamePlace && a.facing == b.facing &&
+         a.standing() == b.standing();
+}
+
+/// True if a search by agent i now would see what its last one saw, which
+/// gained nothing: it committed nothing but waiting then (a pivot gains no
+/// way, but looks elsewhere), it would start as its last search did (a
+/// search from a walk that found nothing leaves the agent standing where its
+/// rest brought it, with new steps open to it) and search as deep (its
+/// patience has not run out since), no one asked it to make room
+/// nor was noticed since, and everyone within kFreezeRadius (or gone from
+/// there) has neither committed since nor moved from then on. In a jam most
+/// agents wait behind others that wait; their searches would cost the most.
+bool nothing_new(const std::vector<Walker>& walkers, std::size_t i, const Snapshot& now) {
+  const Walker& w = walkers[i];
+  if (w.blocked == 0 || w.news_at >= w.searched_at || w.committed_at >= w.searched_at ||
+      !same_stance(w.searched_from, w.state) || patient(w, w.searched_from) != patient(w, w.state))
+    return false;
+  std::vector<std::size_t> around;
+  now.grid.around(now.com[i], kFreezeRadius, around);
+  for (const std::size_t j : around) {
+    if (j == i || distance(now.com[j], now.com[i]) > kFreezeRadius) continue;
+    if (walkers[j].committed_at >= w.searched_at || !still_from(walkers[j].plan, w.searched_at))
+      return false;
+  }
+  return true;
+}
+
+/// How far the walker is: its goals reached, and the way to the current one.
+double progress_of(const Walker& w) {
+  if (w.done) return 1.0;
+  double current = 0.0;
+  if (w.first_way > 0.0 && std::isfinite(w.best_way))
+    current = std::clamp(1.0 - w.best_way / w.first_way, 0.0, 1.0);
+  return (static_cast<double>(w.goal) + current) / static_cast<double>(w.spec->goals.size());
+}
+
+/// One tick's searches and checks, run on the workers, committed a tick later.
+struct TickJobs {
+  double t = 0.0;
+  std::vector<std::size_t> due;  ///< The agents that replan, in their order.
+  Snapshot at;
+  std::vector<char> idle;           ///< Per due: nothing_new(), no search.
+  std::vector<std::size_t> order;   ///< The jobs' order: indices into `due`.
+  std::vector<Attempt> attempts;    ///< Per due.
+  std::vector<Proposal> proposals;  ///< Per due.
+  std::vector<double> seconds;      ///< Per due: the search's time. [s]
+  std::vector<double> job_seconds;  ///< Per due: the search's and check's. [s]
+  std::uint64_t batch = 0;          ///< Its batch on the workers.
+};
+
+}  // namespace
+
+std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
+                                   const FootstepPlanner& planner, const NavMesh* mesh,
+                                   const RunControl& control) {
+  for (const AgentSpec& agent : agents) check_agent(agent);
+  if (control.threads < 1 || control.threads > 64)
+    throw std::invalid_argument("threads must be between 1 and 64");
+  std::vector<Walker> walkers(agents.size());
+  for (std::size_t i = 0; i < agents.size(); ++i) {
+    Walker& w = walkers[i];
+    w.spec = &agents[i];
+    w.plan.name = agents[i].name;
+    w.plan.start = standing_state(agents[i].position, agents[i].facing, planner.character());
+    w.state = w.plan.start;
+    w.bounds = std::make_shared<const PlanBounds>(w.plan, planner.character());
+  }
+  std::vector<PlanWalk> walks;
+  for (const Walker& w : walkers) walks.emplace_back(w.plan);
+  // Two views (see the top of this file), one per tick in flight; each is
+  // brought up to date from the walkers changed since it last was. Bounds
+  // and samples are shared with the walkers, not copied.
+  std::array<std::vector<Walker>, 2> views{walkers, walkers};
+  std::array<std::uint64_t, 2> synced{0, 0};
+  std::uint64_t epoch = 1;
+  std::vector<std::uint64_t> changed_at(walkers.size(), 0);
+  const auto touch = [&](std::size_t i) { changed_at[i] = epoch; };
+  std::vector<char> in_flight(walkers.size(), 0);
+  std::unique_ptr<TickJobs> pending, current;
+  Workers workers(control.threads);  // after what its jobs read: it ends first
+  // The tick's results, committed in the agents' order against the walkers
+  // as they now stand.
+  const auto commit_tick = [&](TickJobs& jobs) {
+    workers.finish(jobs.batch);
+    const double t = jobs.t;
+    for (std::size_t k = 0; k < jobs.due.size(); ++k) {
+      if (!jobs.idle[k]) walkers[jobs.due[k]].last_cost = jobs.job_seconds[k];
+      if (control.search_seconds != nullptr) *control.search_seconds += jobs.seconds[k];
+    }
+    std::vector<std::size_t> others;  // changed by a commit besides its own agent
+    for (std::size_t k = 0; k < jobs.due.size(); ++k) {
+      const std::size_t i = jobs.due[k];
+      Walker& w = walkers[i];
+      in_flight[i] = 0;
+      touch(i);
+      // Those it yielded to and that no longer wish are let go.
+      w.yielding_to.erase(std::remove_if(w.yielding_to.begin(), w.yielding_to.end(),
+                                         [&](std::size_t r) { return !wishing(walkers[r]); }),
+                          w.yielding_to.end());
+      const Attempt& a = jobs.attempts[k];
+      const int refused = refusal(walkers, jobs.proposals[k], planner);
+      commit(walkers, i, a, jobs.proposals[k], refused, planner, t);
+      others.clear();
+      if (w.committed_at == t) wake_near(walkers, i, jobs.at, others);
+      if (a.searched) {
+        w.ways = std::move(jobs.attempts[k].ways);
+        w.searched_at = t;
+        w.searched_from = a.from;
+        w.way = a.way_from;
+        const bool gained = a.reached || a.way_left <= a.way_from - planner.params().min_progress;
+        w.blocked = w.failures == 0 && gained ? 0 : w.blocked + 1;
+      }
+      show_wish(walkers, i, jobs.attempts[k], planner, jobs.at, jobs.proposals[k].close, others);
+      for (const std::size_t j : others) touch(j);
+      if (!w.done && stuck(walkers, i)) {
+        if (!w.roomy) {
+          take_roomy_ways(w, t);
+        } else {
+          w.plan.reason = "stuck";
+          w.dormant = true;
+        }
+      }
+    }
+  };
+  double reported = 0.0;
+  auto last_report = std::chrono::steady_clock::now();
+  for (long tick = 0;; ++tick) {
+    const double t = static_cast<double>(tick) * kTick;
+    std::vector<std::size_t> due;
+    bool active = false;
+    for (std::size_t i = 0; i < walkers.size(); ++i) {
+      if (walkers[i].done || walkers[i].dormant) continue;
+      active = true;
+      if (!in_flight[i] && walkers[i].state.time - t <= kReplanLead && t >= walkers[i].retry_at)
+        due.push_back(i);
+    }
+    if (!active) break;  // none in flight either
+    const bool cancelled = control.cancelled();
+    if (cancelled || t > planner.params().max_time) {
+      if (pending) commit_tick(*pending);
+      for (Walker& w : walkers)
+        if (!w.done && !w.dormant) w.plan.reason = cancelled ? "cancelled" : "time limit";
+      break;
+    }
+    if (!due.empty()) {
+      current = std::make_unique<TickJobs>();
+      TickJobs& jobs = *current;
+      jobs.t = t;
+      jobs.due = std::move(due);
+      // A plan that has run into its rest starts again from where that leaves it.
+      for (const std::size_t i : jobs.due) {
+        if (walkers[i].state.time < t) {
+          rest_until(walkers[i], planner, t);
+          touch(i);
+        }
+        in_flight[i] = 1;
+      }
+      // The tick's trials differ from their agents' plans from the start of
+      // the last step each keeps on (propose()).
+      double trials_from = kForever;
+      for (const std::size_t i : jobs.due) {
+        const Walker& w = walkers[i];
+        const std::size_t kept = w.plan.footsteps.size() - w.resting;
+        const double from = kept > 0 ? w.plan.footsteps[kept - 1].start_time : w.state.time;
+        trials_from = std::min(trials_from, from);
+      }
+      jobs.at = snapshot(walkers, walks, t, trials_from);
+      const std::size_t n = jobs.due.size();
+      jobs.idle.resize(n);
+      for (std::size_t k = 0; k < n; ++k) jobs.idle[k] = nothing_new(walkers, jobs.due[k], jobs.at);
+      std::vector<Walker>& view = views[static_cast<std::size_t>(tick % 2)];
+      std::uint64_t& view_synced = synced[static_cast<std::size_t>(tick % 2)];
+      for (std::size_t j = 0; j < walkers.size(); ++j)
+        if (changed_at[j] > view_synced) view[j] = walkers[j];
+      view_synced = epoch++;
+      // The dearest-looking jobs start first (those that search, by what
+      // their last ones took), so that threads finish together; results go
+      // by index, so the order changes nothing else.
+      jobs.order.resize(n);
+      for (std::size_t k = 0; k < n; ++k) jobs.order[k] = k;
+      const auto cost = [&](std::size_t k) {
+        return jobs.idle[k] ? 0.0 : walkers[jobs.due[k]].last_cost;
+      };
+      std::stable_sort(jobs.order.begin(), jobs.order.end(),
+                       [&](std::size_t a, std::size_t b) { return cost(a) > cost(b); });
+      jobs.attempts.resize(n);
+      jobs.proposals.resize(n);
+      jobs.seconds.assign(n, 0.0);
+      jobs.job_seconds.assign(n, 0.0);
+      jobs.batch = workers.launch(n, [&jobs, &view, &planner, mesh](std::size_t job) {
+        const std::size_t k = jobs.order[job], i = jobs.due[k];
+        const auto begin = std::chrono::steady_clock::now();
+        if (!jobs.idle[k]) {
+          jobs.attempts[k] =
+              search(view, i, planner, mesh, seen_by(view, i, jobs.at, mesh), jobs.at);
+          jobs.seconds[k] =
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+        }
+        jobs.proposals[k] = propose(view, i, jobs.attempts[k], planner, near(i, jobs.at), jobs.at);
+        jobs.job_seconds[k] =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+      });
+    }
+    if (pending) commit_tick(*pending);
+    pending = std::move(current);
+    const auto now = std::chrono::steady_clock::now();
+    if (control.progress &&
+        std::chrono::duration<double>(now - last_report).count() >= kProgressInterval) {
+      double sum = 0.0;
+      for (const Walker& w : walkers) sum += progress_of(w);
+      reported = std::max(reported, sum / static_cast<double>(walkers.size()));
+      control.progress(reported);
+      last_report = now;
+    }
+  }
+  if (control.progress && !control.cancelled()) control.progress(1.0);
+  std::vector<AgentPlan> plans;
+  for (Walker& w : walkers) {
+    w.plan.stuck_at = w.resting > 0 ? w.rested.com : w.state.com;
+    choose_foot_orientations(w.plan.footsteps, w.plan.start.foot_orientation, planner.character());
+    plans.push_back(std::move(w.plan));
+  }
+  return plans;
+}
+
+AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner, const NavMesh* mesh,
+                     const RunControl& control) {
+  return plan_agents({agent}, planner, mesh, control).front();
+}
+
+}  // namespace footfall

@@ -1,0 +1,180 @@
+#include "io/json_reader.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace footfall::detail {
+
+namespace {
+
+// Python's json module writes NaN, Infinity and -Infinity as bare tokens, which
+// JSON forbids. They are turned into marker strings so that number() can name
+// the field that holds them.
+constexpr const char* kNonFiniteMarker = "\x01non-finite:";
+
+// Returns the text with the tokens replaced; `shifts` gets, for each
+// replacement, where it ends in the new text and how many characters it added.
+std::string mark_non_finite(const std::string& text,
+                            std::vector<std::pair<size_t, size_t>>& shifts) {
+  std::string out;
+  out.reserve(text.size());
+  bool in_string = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      out += c;
+      if (c == '\\' && i + 1 < text.size()) {
+        out += text[++i];
+      } else if (c == '"') {
+        in_string = false;
+      }
+      continue;
+    }
+    if (c == '"') in_string = true;
+    bool replaced = false;
+    for (const char* token : {"NaN", "Infinity", "-Infinity"}) {
+      const size_t n = std::char_traits<char>::length(token);
+      if (text.compare(i, n, token) == 0) {
+        const std::string marker = std::string("\"") + "\\u0001non-finite:" + token + "\"";
+        out += marker;
+        shifts.emplace_back(out.size(), marker.size() - n);
+        i += n - 1;
+        replaced = true;
+        break;
+      }
+    }
+    if (!replaced) out += c;
+  }
+  return out;
+}
+
+// "line L, column C" of byte `byte` (1-based, as the parser counts) of `text`.
+std::string position_in(const std::string& text, size_t byte) {
+  size_t line = 1, line_start = 0;
+  for (size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      line_start = i + 1;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(byte - line_start);
+}
+
+}  // namespace
+
+Json parse_json(const std::string& text, const std::string& source) {
+  std::vector<std::pair<size_t, size_t>> shifts;
+  try {
+    return Json::parse(mark_non_finite(text, shifts));
+  } catch (const Json::parse_error& error) {
+    // Drop nlohmann's "[json.exception.parse_error.101] " prefix.
+    std::string message = error.what();
+    const size_t bracket = message.find("] ");
+    if (message.rfind("[json.exception", 0) == 0 && bracket != std::string::npos) {
+      message = message.substr(bracket + 2);
+    }
+    // Report the position in the text as written, before the markers.
+    size_t byte = error.byte;
+    for (const auto& [end, added] : shifts) {
+      if (end < error.byte) byte -= added;
+    }
+    const size_t at = message.find("line ");
+    const size_t colon = message.find(':', at);
+    if (!shifts.empty() && at != std::string::npos && colon != std::string::npos) {
+      message = message.substr(0, at) + position_in(text, byte) + message.substr(colon);
+    }
+    throw std::invalid_argument(source + ": not valid JSON: " + message);
+  }
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::invalid_argument(path + ": cannot open the file for reading");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+std::string type_name(const Json& value) {
+  if (value.is_number()) return "number";
+  return value.type_name();
+}
+
+void expect_object(const Json& value, const std::string& path,
+                   std::initializer_list<const char*> allowed) {
+  if (!value.is_object())
+    fail(path.empty() ? "(top level)" : path, "expected an object, got " + type_name(value));
+  for (auto it = value.begin(); it != value.end(); ++it) {
+    bool known = false;
+    for (const char* key : allowed) known = known || it.key() == key;
+    if (!known) fail(child(path, it.key()), "unknown field");
+  }
+}
+
+const Json& require(const Json& object, const std::string& path, const char* key) {
+  const auto it = object.find(key);
+  if (it == object.end()) fail(child(path, key), "missing");
+  return *it;
+}
+
+double number(const Json& value, const std::string& path) {
+  if (value.is_string()) {
+    const std::string& text = value.get_ref<const std::string&>();
+    if (text.rfind(kNonFiniteMarker, 0) == 0) {
+      fail(path, "must be a finite number, got " +
+                     text.substr(std::char_traits<char>::length(kNonFiniteMarker)));
+    }
+  }
+  if (!value.is_number()) fail(path, "expected a number, got " + type_name(value));
+  const double v = value.get<double>();
+  if (!std::isfinite(v)) fail(path, "must be a finite number");
+  return v;
+}
+
+long long integer(const Json& value, const std::string& path) {
+  if (!value.is_number_integer()) fail(path, "expected an integer, got " + type_name(value));
+  if (value.is_number_unsigned() && value.get<unsigned long long>() > 9223372036854775807ull) {
+    fail(path, "too large");
+  }
+  return value.get<long long>();
+}
+
+bool boolean(const Json& value, const std::string& path) {
+  if (!value.is_boolean()) fail(path, "expected true or false, got " + type_name(value));
+  return value.get<bool>();
+}
+
+std::string string(const Json& value, const std::string& path) {
+  if (!value.is_string()) fail(path, "expected a string, got " + type_name(value));
+  return value.get<std::string>();
+}
+
+const Json& array(const Json& value, const std::string& path) {
+  if (!value.is_array()) fail(path, "expected an array, got " + type_name(value));
+  return value;
+}
+
+Vec2 point(const Json& value, const std::string& path) {
+  if (!value.is_array() || value.size() != 2) fail(path, "expected a point [x, y]");
+  return {number(value[0], item(path, 0)), number(value[1], item(path, 1))};
+}
+
+Json to_json(Vec2 p) { return Json::array({p.x, p.y}); }
+
+void expect_header(const Json& root, const char* format, int version) {
+  if (!root.is_object()) fail("(top level)", "expected an object, got " + type_name(root));
+  const std::string found = string(require(root, "", "format"), "format");
+  if (found != format)
+    fail("format", std::string("expected \"") + format + "\", got \"" + found + "\"");
+  const long long v = integer(require(root, "", "version"), "version");
+  if (v != version) {
+    fail("version", "unsupported version " + std::to_string(v) + " (this Footfall reads version " +
+                        std::to_string(version) + ")");
+  }
+}
+
+}  // namespace footfall::detail

@@ -1,0 +1,70 @@
+// Footfall — reading scenario files (docs/file-formats.md).
+#include "footfall/io/scenario_file.hpp"
+
+#include <stdexcept>
+
+#include "footfall/io/steersuite.hpp"
+#include "io/json_reader.hpp"
+#include "io/param_fields.hpp"
+
+namespace footfall {
+
+using namespace detail;
+
+namespace {
+
+Scenario read_scenario(const Json& root) {
+  expect_header(root, "footfall-scenario", 1);
+  expect_object(root, "", {"format", "version", "obstacles", "agents", "character", "planner"});
+  Scenario scenario;
+  if (root.contains("obstacles")) scenario.obstacles = read_obstacles(root["obstacles"]);
+  if (root.contains("agents")) {
+    const Json& agents = array(root["agents"], "agents");
+    for (size_t i = 0; i < agents.size(); ++i) {
+      const std::string path = item("agents", i);
+      expect_object(agents[i], path, {"name", "position", "facing", "goals", "leave_at_goal"});
+      AgentSpec agent;
+      agent.name = agents[i].contains("name") ? string(agents[i]["name"], child(path, "name"))
+                                              : "agent" + std::to_string(i);
+      agent.position = point(require(agents[i], path, "position"), child(path, "position"));
+      const std::string goals_path = child(path, "goals");
+      const Json& goals = array(require(agents[i], path, "goals"), goals_path);
+      for (size_t k = 0; k < goals.size(); ++k)
+        agent.goals.push_back(point(goals[k], item(goals_path, k)));
+      // Facing defaults to the direction of the first goal.
+      if (agents[i].contains("facing")) {
+        agent.facing = number(agents[i]["facing"], child(path, "facing"));
+      } else if (!agent.goals.empty() && !(agent.goals[0] == agent.position)) {
+        agent.facing = angle_of(agent.goals[0] - agent.position);
+      }
+      if (agents[i].contains("leave_at_goal"))
+        agent.leave_at_goal = boolean(agents[i]["leave_at_goal"], child(path, "leave_at_goal"));
+      scenario.agents.push_back(std::move(agent));
+    }
+  }
+  if (root.contains("character"))
+    read_character(root["character"], "character", scenario.character);
+  if (root.contains("planner")) read_planner(root["planner"], "planner", scenario.planner);
+  validate(scenario);
+  return scenario;
+}
+
+}  // namespace
+
+Scenario parse_scenario(const std::string& text, const std::string& source) {
+  const Json root = parse_json(text, source);
+  try {
+    return read_scenario(root);
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument(source + ": " + error.what());
+  }
+}
+
+Scenario load_scenario(const std::string& path) { return parse_scenario(read_file(path), path); }
+
+Scenario load_scenario_file(const std::string& path) {
+  const bool xml = path.size() >= 4 && path.compare(path.size() - 4, 4, ".xml") == 0;
+  return xml ? load_steersuite(path) : load_scenario(path);
+}
+
+}  // namespace footfall

@@ -1,0 +1,147 @@
+// Footfall — the navigation mesh's triangulation: CGAL's constrained Delaunay
+// triangulation (exact predicates) with the constraint hierarchy that gives
+// every obstacle an id, per-face winding numbers, and polylines inserted from
+// a located start.
+#pragma once
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_plus_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <array>
+#include <climits>
+#include <cstdint>
+#include <vector>
+
+#include "footfall/model/geometry.hpp"
+
+namespace footfall {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_2;
+
+/// Per face: the winding number of the domain (+1 inside) plus that of every
+/// obstacle (-1 inside each), so a face is walkable exactly when it is 1.
+struct FaceInfo {
+  static constexpr int kUnknown = INT_MIN;  ///< Set by CGAL on new faces; repaired locally.
+  int winding = kUnknown;
+};
+
+/// Per vertex: how many point obstacles sit on it.
+struct VertexInfo {
+  int points = 0;
+};
+
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, Kernel>;
+using FaceBase =
+    CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel,
+                                              CGAL::Constrained_triangulation_face_base_2<Kernel>>;
+using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
+using CdtBase = CGAL::Constrained_triangulation_plus_2<
+    CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>>;
+
+}  // namespace footfall
+
+namespace CGAL {
+/// The map from face to mark that CGAL's get_bounded_faces keeps, for our
+/// face handles. It runs for every constraint edge inserted across faces
+/// (Constrained_triangulation_plus_2 then discards what it found), and
+/// CGAL's own map allocates and fills an 18 KB table each time: a tenth of
+/// moving a box on the 10k-box scene, mostly in evicting the cache. Open
+/// addressing on the face's address, 64 slots inline.
+template <>
+class Unique_hash_map<footfall::CdtBase::Face_handle, bool, Handle_hash_function,
+                      std::allocator<bool>> {
+ public:
+  using Data = bool;
+  Unique_hash_map() = default;
+  Unique_hash_map(const Unique_hash_map&) = delete;
+  Unique_hash_map& operator=(const Unique_hash_map&) = delete;
+
+  /// The mark of `f` (false until set); valid until the next new face.
+  bool& operator[](const footfall::CdtBase::Face_handle& f) {
+    const void* key = &*f;
+    for (std::size_t i = home(key);; i = (i + 1) & mask_) {
+      if (slots_[i].key == key) return slots_[i].mark;
+      if (slots_[i].key == nullptr) {
+        if (2 * ++size_ > mask_ + 1) {
+          grow();
+          return (*this)[f];
+        }
+        slots_[i].key = key;
+        return slots_[i].mark;
+      }
+    }
+  }
+
+ private:
+  struct Slot {
+    const void* key = nullptr;
+    bool mark = false;
+  };
+  std::size_t home(const void* key) const {
+    const auto bits = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(key));
+    return static_cast<std::size_t>((bits * 0x9E3779B97F4A7C15ull) >> 32) & mask_;
+  }
+  void grow() {
+    std::vector<Slot> old(slots_, slots_ + mask_ + 1);
+    heap_.assign(2 * old.size(), Slot{});
+    slots_ = heap_.data();
+    mask_ = heap_.size() - 1;
+    size_ = 0;
+    for (const Slot& s : old)
+      if (s.key != nullptr)
+        for (std::size_t i = home(s.key);; i = (i + 1) & mask_)
+          if (slots_[i].key == nullptr) {
+            slots_[i] = s;
+            ++size_;
+            break;
+          }
+  }
+  std::array<Slot, 64> inline_{};
+  std::vector<Slot> heap_;
+  Slot* slots_ = inline_.data();
+  std::size_t mask_ = 63, size_ = 0;
+};
+}  // namespace CGAL
+
+namespace footfall {
+
+/// CGAL's triangulation with one addition. Its insert_constraint locates a
+/// polyline's first point from the hull, a walk across the whole mesh (on
+/// the 10,000-box scene most of the time it takes to add a box); this one
+/// starts the walk at a face the caller knows to be near.
+class Cdt : public CdtBase {
+ public:
+  /// Inserts the polyline through `points` (closed: back to the first) as
+  /// one constraint, as CdtBase::insert_constraint(first, last, closed)
+  /// does, locating the first point from `hint` (may be null: the hull).
+  Constraint_id insert_polyline(const std::vector<Point>& points, bool closed, Face_handle hint) {
+    std::vector<Vertex_handle> vertices;
+    for (const Point& p : points) {
+      const Vertex_handle v = insert(p, hint);
+      hint = v->face();
+      if (vertices.empty() || vertices.back() != v) vertices.push_back(v);
+    }
+    if (closed && vertices.size() > 1 && vertices.front() != vertices.back())
+      vertices.push_back(vertices.front());
+    if (vertices.size() < 2) return nullptr;
+    const Constraint_id id = hierarchy.insert_constraint(vertices[0], vertices[1]);
+    insert_subconstraint(vertices[0], vertices[1]);
+    for (std::size_t j = 1; j + 1 < vertices.size(); ++j) {
+      hierarchy.append_constraint(id, vertices[j], vertices[j + 1]);
+      insert_subconstraint(vertices[j], vertices[j + 1]);
+    }
+    return id;
+  }
+};
+
+using Face = Cdt::Face_handle;
+using Vertex = Cdt::Vertex_handle;
+
+inline Vec2 to_vec(const Point& p) { return {p.x(), p.y()}; }
+inline Point to_point(Vec2 v) { return {v.x, v.y}; }
+
+}  // namespace footfall

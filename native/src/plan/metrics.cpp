@@ -1,0 +1,111 @@
+#include "footfall/plan/metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace footfall {
+namespace {
+
+// Depth by which the circle reaches into obstacle `index` (<= 0: it does not).
+double penetration(const ObstacleMap& map, int index, const Circle& circle) {
+  const std::vector<Vec2>& polygon = map.obstacles()[index].polygon;
+  double nearest = INFINITY;
+  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    nearest = std::min(nearest, distance_to_segment(circle.center, polygon[j], polygon[i]));
+  }
+  return map.contains(index, circle.center) ? circle.radius + nearest : circle.radius - nearest;
+}
+
+bool circles_overlap(const Circle& a, const Circle& b) {
+  return distance(a.center, b.center) < a.radius + b.radius;
+}
+
+// No two circles of agents whose COMs are this far apart can touch: each circle
+// lies within a stride plus a foot of its COM. [m]
+constexpr double kNear = 3.0;
+
+}  // namespace
+
+PlanMetrics measure_plan(const Plan& plan, double rate) {
+  if (!(rate > 0.0 && std::isfinite(rate)))
+    throw std::invalid_argument("rate: must be a positive number");
+  const ObstacleMap map(plan.obstacles);
+  const size_t n = plan.agents.size();
+  double end = 0.0;
+  for (const AgentPlan& agent : plan.agents) end = std::max(end, agent.end_time());
+  const int samples = static_cast<int>(std::floor(end * rate)) + 1;
+
+  PlanMetrics result;
+  result.rate = rate;
+  result.agents.resize(n);
+  for (size_t a = 0; a < n; ++a) {
+    AgentMetrics& m = result.agents[a];
+    m.name = plan.agents[a].name;
+    m.reached = plan.agents[a].status == AgentStatus::kReached;
+    m.time = plan.agents[a].end_time();
+    m.effort = plan.agents[a].total_cost();
+  }
+  std::vector<Vec2> position(n), previous(n), velocity(n), previous_velocity(n);
+  std::vector<bool> colliding(n, false), present(n, true);
+  std::vector<std::vector<Circle>> circles(n);
+  const double dt = 1.0 / rate;
+  for (int s = 0; s < samples; ++s) {
+    const double t = s * dt;
+    for (size_t a = 0; a < n; ++a) {
+      position[a] = com_at(plan.agents[a], t).position;
+      circles[a] = collision_circles(plan.agents[a], plan.character, t);
+      present[a] = present_at(plan.agents[a], t);
+    }
+    for (size_t a = 0; a < n; ++a) {
+      if (!present[a]) continue;  // gone, as SteerBench removes an agent at its goal
+      AgentMetrics& m = result.agents[a];
+      // SteerBench: torso discs, an episode when an overlap deeper than 1 mm begins.
+      bool now = false;
+      const Circle disc{position[a], kSteerBenchRadius};
+      const Circle reach{position[a], kSteerBenchRadius + 1.0};
+      std::vector<int> near;
+      map.gather(reach, near);
+      for (const int o : near) now = now || penetration(map, o, disc) > kSteerBenchPenetration;
+      for (size_t b = 0; b < n && !now; ++b) {
+        now = b != a && present[b] &&
+              2 * kSteerBenchRadius - distance(position[a], position[b]) > kSteerBenchPenetration;
+      }
+      if (now && !colliding[a]) ++m.collision_episodes;
+      colliding[a] = now;
+      // Our five circles against the obstacles and every other agent's.
+      bool overlap = false;
+      for (const Circle& c : circles[a]) overlap = overlap || map.overlaps(c);
+      for (size_t b = 0; b < n && !overlap; ++b) {
+        if (b == a || !present[b] || distance(position[a], position[b]) > kNear) continue;
+        for (const Circle& c : circles[a]) {
+          for (const Circle& d : circles[b]) overlap = overlap || circles_overlap(c, d);
+        }
+      }
+      m.overlaps += overlap ? 1 : 0;
+      // SteerBench's energy and acceleration, by finite differences.
+      if (s > 0) {
+        velocity[a] = rate * (position[a] - previous[a]);
+        m.path_length += distance(position[a], previous[a]);
+        m.energy += 0.5 * dot(velocity[a], velocity[a]);
+        if (s > 1) m.acceleration += rate * length(velocity[a] - previous_velocity[a]);
+        previous_velocity[a] = velocity[a];
+      }
+      previous[a] = position[a];
+    }
+  }
+  double collisions = 0, time = 0, energy = 0, acceleration = 0;
+  for (const AgentMetrics& m : result.agents) {
+    collisions += m.collision_episodes;
+    time += m.time;
+    energy += m.energy;
+    acceleration += m.acceleration;
+    result.overlaps += m.overlaps;
+  }
+  const double count = std::max<double>(1.0, static_cast<double>(n));
+  result.composite01 = 50.0 * collisions / count + time / count + energy / count;
+  result.composite02 = result.composite01 + acceleration / count;
+  return result;
+}
+
+}  // namespace footfall
