@@ -2,8 +2,9 @@
 """Footfall: crowds that walk footstep by footstep.
 
 The planning core is the compiled module ``footfall._native``; ``core`` holds
-pure Python that works without Blender, ``ui`` the Blender classes. Nothing
-here imports ``bpy`` at module level, so the package imports outside Blender.
+pure Python that works without Blender, ``bridge`` moves data between
+Blender and ``core``, and ``ui`` holds the Blender classes. Nothing here
+imports ``bpy`` at module level, so the package imports outside Blender.
 """
 
 bl_info = {

@@ -22,7 +22,7 @@ from mathutils import Matrix
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, os.environ.get("FOOTFALL_ADDON_DIR", str(ROOT / "blender_addon")))
 TMP = pathlib.Path(tempfile.mkdtemp(prefix="footfall-scenes-"))
-STEERSUITE = ROOT.parent / "shared" / "steersuite-testcases"
+STEERSUITE = ROOT / "tests" / "data" / "steersuite"
 
 L_SHAPE = [[2, 2], [3, 2], [3, 0], [4, 0], [4, -1], [2, -1]]  # concave, clockwise
 BOX = [[5, 3], [6, 3], [6, 4], [5, 4]]
@@ -45,11 +45,6 @@ def close(a, b, tolerance=1e-6):
 def fresh_scene():
     bpy.ops.wm.read_homefile(use_empty=True)
     addon_utils.enable("footfall", default_set=True, handle_error=None)
-    from footfall.ui import scene_operators  # until ui/registration.py lists them
-
-    for cls in scene_operators.classes:
-        if not hasattr(bpy.types, cls.__name__):
-            bpy.utils.register_class(cls)
 
 
 def write(name, content):
@@ -337,6 +332,45 @@ def test_errors_leave_the_scene_as_it_was():
     check("footfall_plan.json" not in bpy.data.texts, "a failed plan stored a Text")
 
 
+class RecordingOperator:
+    """Stands in for an operator instance in a direct call of its `execute`:
+    the properties it reads, and the reports it makes."""
+
+    def __init__(self, **properties):
+        self.__dict__.update(properties)
+        self.reports = []
+
+    def report(self, levels, message):
+        self.reports.append((levels, message))
+
+
+def test_failing_operators_report_and_cancel():
+    """Every operator, of either module, fails alike: one ERROR report with the
+    message, {'CANCELLED'} returned (bpy.ops raises on the report and hides what
+    execute returned, so execute is called directly), and the scene as it was."""
+    from footfall.ui import operators, scene_operators
+
+    fresh_scene()
+    bpy.ops.mesh.primitive_uv_sphere_add()  # something of the user's
+    bpy.context.scene.footfall_bone_map  # reading the fields (as the panel does) stores them on the scene
+    before = inventory()
+    bad = write("bad-position.json", {"format": "footfall-scenario", "version": 1,
+                                      "agents": [{"name": "dan", "position": [1], "goals": [[3, 3]]}]})
+    failures = (
+        (scene_operators.FOOTFALL_OT_load_scenario, {"filepath": bad}, "bad-position.json: agents[0].position"),
+        (scene_operators.FOOTFALL_OT_plan, {}, "No agents to plan"),
+        (operators.FOOTFALL_OT_import_rig, {"filepath": str(TMP / "missing.glb")}, "missing.glb: no such file"),
+        (operators.FOOTFALL_OT_apply, {"plan_filepath": "", "rig": ""}, "No plan: run Plan first"),
+        (operators.FOOTFALL_OT_export_gltf, {"filepath": str(TMP / "none.glb")}, "Nothing to export"),
+    )
+    for operator, properties, fragment in failures:
+        stand_in = RecordingOperator(**properties)
+        result = operator.execute(stand_in, bpy.context)
+        check(result == {"CANCELLED"}, f"{operator.bl_idname} returned {result}")
+        check(len(stand_in.reports) == 1 and stand_in.reports[0][0] == {"ERROR"}
+              and fragment in stand_in.reports[0][1], f"{operator.bl_idname} reported {stand_in.reports}")
+        check(inventory() == before, f"a failed {operator.bl_idname} changed the scene")
+
 
 def test_steersuite_case_loads():
     """doorway-two-way: two agents facing each other, the walls of the door (Y-up mapped to Z-up)."""
@@ -362,4 +396,5 @@ def test_steersuite_case_loads():
 
 
 run([test_load_builds_the_conventions_and_extracts_back, test_hand_made_agents_and_obstacles_are_extracted,
-     test_plan_is_stored_and_saved_with_the_file, test_errors_leave_the_scene_as_it_was, test_steersuite_case_loads])
+     test_plan_is_stored_and_saved_with_the_file, test_errors_leave_the_scene_as_it_was,
+     test_failing_operators_report_and_cancel, test_steersuite_case_loads])

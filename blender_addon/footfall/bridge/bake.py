@@ -3,9 +3,9 @@
 constraints, NLA clips and all), at every frame, as glTF node transforms.
 
 One scene evaluation per frame serves every armature. The armatures' meshes
-are left out of the evaluation meanwhile (deforming them would cost four times
-the rest), and the bone matrices are read in bulk and converted a block of
-frames at a time.
+are left out of the evaluation meanwhile (deforming them would be most of its
+cost, and the bake needs only the bones), and the bone matrices are read in
+bulk and converted a block of frames at a time.
 """
 
 from dataclasses import dataclass

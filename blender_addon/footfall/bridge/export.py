@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Baking the animated crowd and exporting it as glTF.
 
-Blender 3.4's exporter takes about 40 ms per agent-second of baked keys, far
-too slow for crowds, so the work is split:
+Blender 3.4's exporter bakes animation too slowly for crowds, so the work is
+split:
 
 1. bake: every bone of every agent as Blender evaluates it (IK, clips and
    all), at every frame of the scene (bake.py);

@@ -7,6 +7,7 @@ from bpy_extras.io_utils import ExportHelper, ImportHelper
 
 from ..core.bone_map import BoneMapError
 from ..core.rig_profile import ProfileError
+from .operator_errors import report_and_cancel
 from .properties import mapping_of
 
 
@@ -26,8 +27,7 @@ class FOOTFALL_OT_import_rig(bpy.types.Operator, ImportHelper):
         try:
             rig = rig_import.import_rig(self.filepath, mapping_of(context.scene.footfall_bone_map))
         except (rig_import.RigImportError, BoneMapError, ProfileError) as error:
-            self.report({"ERROR"}, str(error))
-            return {"CANCELLED"}
+            return report_and_cancel(self, error)
         for note in rig.notes:
             self.report({"INFO"}, note)
         self.report({"INFO"}, f"Imported rig '{rig.armature.name}'")
@@ -56,8 +56,7 @@ class FOOTFALL_OT_apply(bpy.types.Operator):
         try:
             armatures = apply_plan.run(context, self.plan_filepath, self.rig)
         except (apply_plan.ApplyError, CoreMissingError) as error:
-            self.report({"ERROR"}, str(error))
-            return {"CANCELLED"}
+            return report_and_cancel(self, error)
         self.report({"INFO"}, f"Animated {len(armatures)} agents in '{animate.CROWD_COLLECTION}'")
         return {"FINISHED"}
 
@@ -80,8 +79,7 @@ class FOOTFALL_OT_export_gltf(bpy.types.Operator, ExportHelper):
             count = export.export_crowd(self.filepath, context.scene,
                                         lambda f: window_manager.progress_update(int(100 * f)))
         except export.ExportError as error:
-            self.report({"ERROR"}, str(error))
-            return {"CANCELLED"}
+            return report_and_cancel(self, error)
         finally:
             window_manager.progress_end()
         self.report({"INFO"}, f"Exported {count} agents to {self.filepath}")

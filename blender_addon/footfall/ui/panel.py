@@ -7,14 +7,20 @@ from ..core import native
 from .properties import MAPPING_FIELDS
 
 
-class FOOTFALL_PT_main(bpy.types.Panel):
+class _FootfallSidebarTab:
+    """Where Footfall's panels stand: the 3D Viewport's sidebar, tab "Footfall"
+    (a sub-panel must stand where its parent does)."""
+
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "Footfall"
+
+
+class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
     """Shows whether Footfall's planning core is ready."""
 
     bl_idname = "FOOTFALL_PT_main"
     bl_label = "Footfall"
-    bl_space_type = "VIEW_3D"
-    bl_region_type = "UI"
-    bl_category = "Footfall"
 
     def draw(self, context):
         self.layout.label(text=native.status())
@@ -25,15 +31,12 @@ class FOOTFALL_PT_main(bpy.types.Panel):
         self.layout.operator("footfall.export_gltf", icon="EXPORT")
 
 
-class FOOTFALL_PT_bone_map(bpy.types.Panel):
+class FOOTFALL_PT_bone_map(_FootfallSidebarTab, bpy.types.Panel):
     """Bone names for Import Rig, where detection cannot find them."""
 
     bl_idname = "FOOTFALL_PT_bone_map"
     bl_label = "Bone Mapping"
     bl_parent_id = "FOOTFALL_PT_main"
-    bl_space_type = "VIEW_3D"
-    bl_region_type = "UI"
-    bl_category = "Footfall"
     bl_options = {"DEFAULT_CLOSED"}
 
     def draw(self, context):

@@ -8,6 +8,7 @@ import bpy
 from bpy_extras.io_utils import ImportHelper
 
 from ..core import native
+from .operator_errors import report_and_cancel
 
 
 class FOOTFALL_OT_load_scenario(bpy.types.Operator, ImportHelper):
@@ -26,8 +27,7 @@ class FOOTFALL_OT_load_scenario(bpy.types.Operator, ImportHelper):
         try:
             document = scene_build.load_file(context.scene, bpy.path.abspath(self.filepath))
         except (ValueError, native.CoreMissingError) as error:
-            self.report({"ERROR"}, str(error))
-            return {"CANCELLED"}
+            return report_and_cancel(self, error)
         self.report({"INFO"}, f"Added {len(document['agents'])} agents and "
                               f"{len(document['obstacles'])} obstacles from {self.filepath}")
         return {"FINISHED"}
@@ -74,8 +74,7 @@ class FOOTFALL_OT_plan(bpy.types.Operator):
         try:
             result, seconds = _plan_scene(context)
         except (ValueError, native.CoreMissingError) as error:
-            self.report({"ERROR"}, str(error))
-            return {"CANCELLED"}
+            return report_and_cancel(self, error)
         ff = native.load()
         plan_store.store(ff.plan_to_json(result))
         reached = sum(agent.status == ff.AgentStatus.REACHED for agent in result.agents)
