@@ -22,7 +22,6 @@ void bind_footstep(py::module_& m) {
       .value("NO_PATH", Status::kNoPath)
       .value("INVALID_START", Status::kInvalidStart)
       .value("INVALID_GOAL", Status::kInvalidGoal)
-      .value("TIME_OUT", Status::kTimeOut)
       .value("CANCELLED", Status::kCancelled);
   py::enum_<StepValidity>(m, "StepValidity")
       .value("VALID", StepValidity::kValid)

@@ -67,12 +67,15 @@ void bind_planner(py::module_& m) {
           "collides",
           [](const FootstepPlanner& planner, const Footstep& step,
              const std::vector<const AgentPlan*>& others) {
-            return planner.collides(step, {others.begin(), others.end()});
+            return planner.validity().collides(step, {others.begin(), others.end()});
           },
           py::arg("step"), py::arg("others") = std::vector<const AgentPlan*>{})
-      .def("collides",
-           py::overload_cast<const FootstepState&>(&FootstepPlanner::collides, py::const_),
-           py::arg("state"));
+      .def(
+          "collides",
+          [](const FootstepPlanner& planner, const FootstepState& state) {
+            return planner.validity().collides(state);
+          },
+          py::arg("state"));
   m.def(
       "choose_foot_orientations",
       [](std::vector<Footstep> steps, const std::array<OrientationInterval, 2>& initial,

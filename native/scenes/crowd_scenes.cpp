@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "footfall/planner/planner.hpp"
+#include "footfall/planner/validity_checker.hpp"
 #include "footfall/scenes/scenes.hpp"
 #include "util/seeded_random.hpp"
 
@@ -25,12 +25,12 @@ class Room {
   explicit Room(const Scenario& scenario)
       : character_(scenario.character),
         map_(scenario.obstacles),
-        planner_(scenario.character, scenario.planner, map_) {}
+        validity_(scenario.character, scenario.planner, map_) {}
 
   bool fits(Vec2 p, double facing) const {
     // Free to set off too: a character wedged between boxes could never step.
     const FootstepState standing = standing_state(p, facing, character_);
-    if (planner_.collides(standing) || !planner_.free_to_set_off(standing)) return false;
+    if (validity_.collides(standing) || !validity_.free_to_set_off(standing)) return false;
     for (const Vec2 q : kept_)
       if (distance(p, q) < kSpacing) return false;
     return true;
@@ -40,7 +40,7 @@ class Room {
  private:
   CharacterParams character_;
   ObstacleMap map_;
-  FootstepPlanner planner_;
+  ValidityChecker validity_;
   std::vector<Vec2> kept_;
 };
 

@@ -43,8 +43,8 @@ Workload box_field_workload() {
     const Vec2 from{random.uniform(-30.0, 30.0), random.uniform(-30.0, 30.0)};
     const Vec2 to = from + 10.0 * unit(random.uniform(-kPi, kPi));
     const Query query = standing_query(from, to);
-    if (planner.collides(query.start) ||
-        planner.collides(standing_state(to, 0.0, CharacterParams{}))) {
+    if (planner.validity().collides(query.start) ||
+        planner.validity().collides(standing_state(to, 0.0, CharacterParams{}))) {
       continue;
     }
     workload.queries.push_back(query);

@@ -59,8 +59,8 @@ int column_width(const Range& rows, int minimum, Text text) {
 }
 
 std::string status_of(const footfall::AgentPlan& agent) {
-  return agent.status == footfall::AgentStatus::kReached ? "reached"
-                                                         : "partial (" + agent.reason + ")";
+  const std::string status = footfall::to_string(agent.status);
+  return agent.reason.empty() ? status : status + " (" + agent.reason + ")";
 }
 
 void print_table(const footfall::Plan& plan, std::ostream& out) {

@@ -94,8 +94,8 @@ LocalGoal local_goal(const FootstepPlanner& planner, const NavMesh* mesh, const 
     const Vec2 point = point_along(way.points, along);
     const Vec2 ahead = point_along(way.points, along + kStep);
     const double facing = angle_of(ahead - point);
-    if (planner.room_to_turn(point) &&
-        !planner.collides(standing_state(point, facing, planner.character())))
+    if (planner.validity().room_to_turn(point) &&
+        !planner.validity().collides(standing_state(point, facing, planner.character())))
       return {point, false};
   }
   return {point_along(way.points, reach), false};

@@ -12,7 +12,7 @@ void rest_until(Walker& w, const FootstepPlanner& planner, double t) {
   }
   bool waited = false;
   while (w.state.time < t) {
-    const StepResult wait = planner.stop_step(w.state, std::min(t - w.state.time, kMaxWait));
+    const StepResult wait = planner.validity().stop_step(w.state, std::min(t - w.state.time, kMaxWait));
     if (!wait.valid()) break;
     w.plan.footsteps.push_back(wait.step);
     w.state = wait.state;
@@ -69,7 +69,7 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
   p.no_room.assign(p.close.size(), 0);
   if (p.new_place) {
     const std::vector<char> clear =
-        planner.stands_clear_of_each(p.rested, plans_of(walkers, p.close));
+        planner.validity().stands_clear_of_each(p.rested, plans_of(walkers, p.close));
     for (std::size_t c = 0; c < clear.size(); ++c) p.no_room[c] = !clear[c];
   }
   return p;
@@ -85,7 +85,7 @@ int refusal(const std::vector<Walker>& walkers, Proposal& p, const FootstepPlann
   }
   if (!p.new_place) return -1;
   for (std::size_t c = 0; c < p.close.size(); ++c) {
-    if (changed(c) ? !planner.stands_clear(p.rested, {obstacle_of(walkers[p.close[c]])})
+    if (changed(c) ? !planner.validity().stands_clear(p.rested, {obstacle_of(walkers[p.close[c]])})
                    : p.no_room[c])
       return static_cast<int>(c);
   }
@@ -126,7 +126,7 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a, Propo
                                             kNoticeDistance;
                                    }),
                     w.noticed.end());
-    w.samples = std::make_shared<const detail::PlanSamples>(p.trial.take_samples());
+    w.samples = std::make_shared<const PlanSamples>(p.trial.take_samples());
     w.plan.footsteps = std::move(p.trial.plan().footsteps);
     w.bounds = std::make_shared<const PlanBounds>(std::move(p.trial.bounds()));
     ++w.version;

@@ -139,10 +139,10 @@ void cut_to_rest(const FootstepPlanner& planner, const FootstepState& start,
   for (const Footstep& step : a.steps) states.push_back(state_after(states.back(), step));
   std::size_t keep = a.steps.size();
   for (; keep > 0; --keep) {
-    a.rest = planner.come_to_rest(states[keep], others);
+    a.rest = planner.validity().come_to_rest(states[keep], others);
     const bool at_goal = a.reached && keep == a.steps.size();
-    if (a.rest.complete && planner.keeps_out(a.rest.state, keep_out) &&
-        (at_goal || planner.free_to_set_off(a.rest.state)))
+    if (a.rest.complete && planner.validity().keeps_out(a.rest.state, keep_out) &&
+        (at_goal || planner.validity().free_to_set_off(a.rest.state)))
       break;
   }
   if (keep == a.steps.size()) return;
@@ -269,7 +269,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
     const Vec2 from = w.state.com, to = wish.end_state.com;
     const bool gains = distance(to, target.point) < distance(from, target.point) - min_progress;
     const bool leaves_a_wish =
-        !planner.keeps_out(w.state, keep_out) && distance(to, from) > min_progress;
+        !planner.validity().keeps_out(w.state, keep_out) && distance(to, from) > min_progress;
     if (gains || leaves_a_wish) a.wish = wish_discs(wish.footsteps, planner.character());
   }
   return a;

@@ -15,7 +15,7 @@
 #include "footfall/plan/plan.hpp"
 #include "footfall/planner/planner.hpp"
 #include "behavior/local_goal.hpp"
-#include "plan/plan_samples.hpp"
+#include "footfall/plan/plan_samples.hpp"
 
 namespace footfall::crowd {
 
@@ -112,7 +112,7 @@ struct Walker {
   std::shared_ptr<const PlanBounds> bounds;
   /// Of `plan`, those its commit check took (none: null); dropped whenever
   /// it changes.
-  std::shared_ptr<const detail::PlanSamples> samples;
+  std::shared_ptr<const PlanSamples> samples;
   FootstepState state;   ///< Where the next search starts: before the rest.
   FootstepState rested;  ///< After the rest.
   std::size_t resting = 0;

@@ -38,8 +38,8 @@ std::vector<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_out
       if (room < planner.character().torso_width) continue;  // another stands there now
       FootstepState there = standing_state(point, state.facing, planner.character());
       there.time = state.time;
-      if (!planner.room_to_turn(point) || !planner.keeps_out(there, keep_out) ||
-          planner.collides(there) ||
+      if (!planner.validity().room_to_turn(point) || !planner.validity().keeps_out(there, keep_out) ||
+          planner.validity().collides(there) ||
           (mesh != nullptr && mesh->clearance_between(state.com, point, half_torso) < half_torso))
         continue;
       places.push_back({there, ring, room});
@@ -51,7 +51,7 @@ std::vector<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_out
   std::vector<FootstepState> states;
   for (const Place& place : places) states.push_back(place.standing);
   std::vector<Vec2> clear;
-  for (const std::size_t k : planner.standing_clear(states, others, kAsideTries))
+  for (const std::size_t k : planner.validity().standing_clear(states, others, kAsideTries))
     clear.push_back(states[k].com);
   return clear;
 }
@@ -112,8 +112,8 @@ LocalGoal keep_right(const std::vector<Walker>& walkers, std::size_t i, LocalGoa
   if (!oncoming || (mesh != nullptr && mesh->clearance(from) < kKeepRightRoom)) return target;
   for (double shift = kKeepRightShift; shift >= 0.5; shift -= 0.5) {
     const Vec2 point = target.point - shift * perp(ahead);
-    if (planner.room_to_turn(point) &&
-        !planner.collides(standing_state(point, angle_of(to), planner.character())) &&
+    if (planner.validity().room_to_turn(point) &&
+        !planner.validity().collides(standing_state(point, angle_of(to), planner.character())) &&
         (mesh == nullptr || mesh->clearance_between(from, point, kKeepRightRoom) >= kKeepRightRoom))
       return {point, false};
   }
@@ -137,7 +137,7 @@ bool must_make_room(const std::vector<Walker>& walkers, std::size_t i, const Sna
   const Vec2 bound = bound_of(w, w.state.com);
   return std::any_of(w.yielding_to.begin(), w.yielding_to.end(), [&](std::size_t j) {
     return (walkers[j].wish_makes_room || dot(bound_of(walkers[j], now.com[j]), bound) < 0.0) &&
-           !planner.keeps_out(w.state, walkers[j].wish);
+           !planner.validity().keeps_out(w.state, walkers[j].wish);
   });
 }
 
@@ -155,7 +155,7 @@ void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a,
   w.wish_makes_room = a.wish_makes_room;
   for (const std::size_t j : near) {
     Walker& other = walkers[j];
-    if (other.done || goes_first(walkers, now, j, i) || planner.keeps_out(rest_of(other), w.wish))
+    if (other.done || goes_first(walkers, now, j, i) || planner.validity().keeps_out(rest_of(other), w.wish))
       continue;
     if (std::find(other.yielding_to.begin(), other.yielding_to.end(), i) != other.yielding_to.end())
       continue;  // asked before

@@ -32,7 +32,7 @@ void validate(const Scenario& scenario) {
     if (!std::isfinite(agent.facing)) fail(child(path, "facing"), "must be finite");
     if (agent.goals.empty()) fail(child(path, "goals"), "needs at least one goal");
     const FootstepState standing = standing_state(agent.position, agent.facing, scenario.character);
-    if (planner.collides(standing)) {
+    if (planner.validity().collides(standing)) {
       int hit = -1;
       for (const Circle& c : torso_circles(standing.com, standing.facing, scenario.character)) {
         if (hit < 0) hit = obstacles.first_overlap(c);

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "footfall/plan/plan.hpp"
-#include "plan/plan_samples.hpp"
+#include "footfall/plan/plan_samples.hpp"
 
 namespace footfall::detail {
 

@@ -171,7 +171,7 @@ class Reader {
   // True if an agent facing `facing` can stand at `position`, clear of
   // obstacles and of the agents placed so far (their radii apart).
   bool free(Vec2 position, double facing, double radius) const {
-    if (planner_->collides(standing_state(position, facing, scenario_.character))) return false;
+    if (planner_->validity().collides(standing_state(position, facing, scenario_.character))) return false;
     for (size_t i = 0; i < scenario_.agents.size(); ++i) {
       if (distance(position, scenario_.agents[i].position) < radius + radii_[i]) return false;
     }

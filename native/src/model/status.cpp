@@ -14,8 +14,6 @@ const char* to_string(Status status) {
       return "invalid_start";
     case Status::kInvalidGoal:
       return "invalid_goal";
-    case Status::kTimeOut:
-      return "time_out";
     case Status::kCancelled:
       return "cancelled";
   }

@@ -1,11 +1,11 @@
 // Footfall — a plan's samples on the contact grid (plan_samples.hpp).
-#include "plan/plan_samples.hpp"
+#include "footfall/plan/plan_samples.hpp"
 
 #include <algorithm>
 
 #include "model/contact.hpp"
 
-namespace footfall::detail {
+namespace footfall {
 
 PlanSamples::PlanSamples(const AgentPlan& plan, long first)
     : first_(first),
@@ -35,4 +35,4 @@ const PlanSample& PlanSamples::at(const AgentPlan& plan, const CharacterParams& 
   return sample;
 }
 
-}  // namespace footfall::detail
+}  // namespace footfall

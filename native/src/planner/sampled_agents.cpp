@@ -5,7 +5,7 @@
 
 #include "model/contact.hpp"
 #include "footfall/plan/plan.hpp"
-#include "plan/plan_samples.hpp"
+#include "footfall/plan/plan_samples.hpp"
 
 namespace footfall::detail {
 

@@ -16,7 +16,7 @@
 #include "footfall/scenes/scenes.hpp"
 #include "footfall/io/steersuite.hpp"
 #include "model/contact.hpp"
-#include "plan/plan_samples.hpp"
+#include "footfall/plan/plan_samples.hpp"
 
 namespace footfall {
 namespace {
@@ -319,12 +319,12 @@ TEST(Crowd, PlanSamplesHoldWhatThePlanGives) {
   const CharacterParams& character = plan.character;
   for (const AgentPlan& agent : plan.agents) {
     const long first = 10, beyond = static_cast<long>(agent.end_time() / kContactDt) + 40;
-    detail::PlanSamples samples(agent, first);
+    PlanSamples samples(agent, first);
     for (long k = first; k <= beyond; ++k) samples.at(agent, character, k, k % 3 != 0);
     EXPECT_EQ(samples.taken(first - 1), nullptr);
     for (long k = first; k <= beyond; ++k) {
       const double t = static_cast<double>(k) * kContactDt;
-      const detail::PlanSample* sample = samples.taken(k);
+      const PlanSample* sample = samples.taken(k);
       ASSERT_NE(sample, nullptr);
       ASSERT_TRUE(sample->sampled);
       EXPECT_EQ(sample->com.position, com_at(agent, t).position) << agent.name << " " << k;

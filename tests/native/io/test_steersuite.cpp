@@ -111,7 +111,7 @@ TEST(SteerSuite, RandomRegionsAreSeededAndFree) {
   const FootstepPlanner planner(a.character, a.planner, map);
   for (size_t i = 0; i < a.agents.size(); ++i) {
     EXPECT_FALSE(
-        planner.collides(standing_state(a.agents[i].position, a.agents[i].facing, a.character)));
+        planner.validity().collides(standing_state(a.agents[i].position, a.agents[i].facing, a.character)));
     for (size_t j = 0; j < i; ++j)
       EXPECT_GE(distance(a.agents[i].position, a.agents[j].position), 1.0);
   }

@@ -299,18 +299,18 @@ TEST(Planner, AStandingCharacterLeavesAKeepOutDisc) {
   const FootstepState start = standing_state({0.15, 0}, 0, character);  // 0.35 m from the wall
   SearchOptions options;
   options.keep_out = {{{0.15, 0.0}, 0.5}};
-  EXPECT_FALSE(planner.keeps_out(start, options.keep_out));
+  EXPECT_FALSE(planner.validity().keeps_out(start, options.keep_out));
   // Without the disc it stays at the wall (or gets a shade nearer).
   const SearchResult stays = planner.plan(start, {5, 0});
   EXPECT_GE(stays.end_state.com.x, start.com.x);
-  EXPECT_FALSE(planner.keeps_out(stays.end_state, options.keep_out));
+  EXPECT_FALSE(planner.validity().keeps_out(stays.end_state, options.keep_out));
   const SearchResult leaves = planner.plan(start, {5, 0}, {}, options);
   EXPECT_EQ(leaves.status, Status::kPartial);
   ASSERT_FALSE(leaves.footsteps.empty());
-  const Rest rest = planner.come_to_rest(leaves.end_state);
+  const Rest rest = planner.validity().come_to_rest(leaves.end_state);
   ASSERT_TRUE(rest.complete);
-  EXPECT_TRUE(planner.keeps_out(rest.state, options.keep_out));
-  for (const Footstep& step : leaves.footsteps) EXPECT_FALSE(planner.collides(step));
+  EXPECT_TRUE(planner.validity().keeps_out(rest.state, options.keep_out));
+  for (const Footstep& step : leaves.footsteps) EXPECT_FALSE(planner.validity().collides(step));
 }
 
 TEST(Planner, ReportsInvalidStartAndGoal) {
@@ -415,13 +415,13 @@ TEST(Planner, ARestLeavesRoomToTurnAmongOtherAgents) {
     AgentPlan facing;
     facing.name = "facing";
     facing.start = standing_state({apart, 0}, 3.14159265358979, character);
-    EXPECT_EQ(planner.come_to_rest(here, {&facing}).complete, room);
+    EXPECT_EQ(planner.validity().come_to_rest(here, {&facing}).complete, room);
     // Alone, it rests anywhere.
-    EXPECT_TRUE(planner.come_to_rest(here).complete);
+    EXPECT_TRUE(planner.validity().come_to_rest(here).complete);
   }
   // One walking through the spot later in its plan takes the room too.
   const AgentPlan passing = walk_alone(planner, "passing", {-4, 0}, {4, 0});
-  EXPECT_FALSE(planner.come_to_rest(here, {&passing}).complete);
+  EXPECT_FALSE(planner.validity().come_to_rest(here, {&passing}).complete);
 }
 
 // Another agent walks across the way and its plan ends where it crosses it.
@@ -435,7 +435,7 @@ TEST(Planner, AWalkingAgentsRestStandsForItsGraceOnly) {
   AgentPlan crossing = walk_alone(planner, "crossing", {8, -1.5}, {8, 0});
   FootstepState end = crossing.start;
   for (const Footstep& step : crossing.footsteps) end = state_after(end, step);
-  for (const Footstep& step : planner.come_to_rest(end).steps) crossing.footsteps.push_back(step);
+  for (const Footstep& step : planner.validity().come_to_rest(end).steps) crossing.footsteps.push_back(step);
   const FootstepState start = standing_state({0, 0}, 0, character);
   const auto widest = [](const SearchResult& result) {
     double y = 0.0;
@@ -452,7 +452,7 @@ TEST(Planner, AWalkingAgentsRestStandsForItsGraceOnly) {
   ASSERT_FALSE(straight.footsteps.empty());
   EXPECT_LT(widest(straight), 0.4);
   EXPECT_LT(straight.end_state.com.x, 8.0);
-  for (const Footstep& step : straight.footsteps) EXPECT_FALSE(planner.collides(step, {&crossing}));
+  for (const Footstep& step : straight.footsteps) EXPECT_FALSE(planner.validity().collides(step, {&crossing}));
 }
 
 // The crowd searches a blocked agent's wish among only some of the agents

@@ -9,13 +9,14 @@
 namespace footfall {
 
 /// Outcome of a planning call. Expected outcomes are values, not exceptions.
+/// (Why an agent's whole walk ended early, at the crowd's time limit for
+/// one, is its plan's AgentStatus and reason.)
 enum class Status {
   kSuccess,  ///< The goal was reached.
-  kPartial,  ///< The horizon or time limit was reached first; the result leads toward the goal.
+  kPartial,  ///< The horizon was reached first; the result leads toward the goal.
   kNoPath,   ///< No progress toward the goal is possible from the start.
   kInvalidStart,  ///< The start state collides with an obstacle.
   kInvalidGoal,   ///< The goal lies inside an obstacle.
-  kTimeOut,       ///< Stopped by the simulated-time limit.
   kCancelled,     ///< Stopped by the caller's cancel flag.
 };
 

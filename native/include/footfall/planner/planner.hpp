@@ -11,37 +11,9 @@
 #include "footfall/model/obstacles.hpp"
 #include "footfall/model/params.hpp"
 #include "footfall/model/status.hpp"
+#include "footfall/planner/validity_checker.hpp"
 
 namespace footfall {
-
-struct AgentPlan;
-class PlanBounds;
-namespace detail {
-class SampledAgents;
-class PlanSamples;
-}
-
-/// Another agent's plan, which a search keeps clear of as a moving obstacle:
-/// at every sampled time of a step, the five circles the plan gives at that
-/// time (section 4). It is taken to share the planner's character.
-struct MovingObstacle {
-  /// Implicit: a list of plans alone is a list of moving obstacles.
-  MovingObstacle(const AgentPlan* its_plan, const PlanBounds* its_bounds = nullptr,
-                 const detail::PlanSamples* its_samples = nullptr)
-      : plan(its_plan), bounds(its_bounds), samples(its_samples) {}
-  const AgentPlan* plan;
-  /// Its PlanBounds, when the caller keeps them (a crowd does); null: a
-  /// search finds the bounds it needs itself.
-  const PlanBounds* bounds;
-  /// Samples of the plan already taken, when the caller keeps them (a crowd
-  /// keeps those of its commit check); null: a search samples it itself.
-  const detail::PlanSamples* samples;
-};
-using MovingObstacles = std::vector<MovingObstacle>;
-
-/// Discs that a search's rests keep out of: the way another agent waits to
-/// take (the crowd's yielding). The steps may cross them.
-using KeepOut = std::vector<Circle>;
 
 /// What one search is asked besides reaching its goal.
 struct SearchOptions {
@@ -61,13 +33,6 @@ struct SearchOptions {
   /// Nodes expanded without one nearer the goal before the search stops;
   /// 0: the planner's stall_expansions. [>= 0]
   int stall = 0;
-};
-
-/// Stop steps that bring a character to rest, and where they leave it.
-struct Rest {
-  std::vector<Footstep> steps;
-  FootstepState state;    ///< After the steps.
-  bool complete = false;  ///< False when even the shortest stop would run into an obstacle.
 };
 
 /// Result of one footstep search.
@@ -124,100 +89,23 @@ class FootstepPlanner {
   /// COM travel of one normal step. [m]
   double expected_step_length() const { return expected_step_length_; }
 
-  /// True if the step collides with an obstacle (its landing foot, or the
-  /// torso circles at samples no further apart than the sample spacing), or
-  /// if at an instant of the contact grid (every 0.05 s, as the crowd's
-  /// commit check and `footfall metrics` sample) its torso or planted foot
-  /// touches a circle of one of `others`.
-  bool collides(const Footstep& step, const MovingObstacles& others = {}) const;
-  /// True if the standing or walking state's planted feet or torso collide.
-  bool collides(const FootstepState& state) const;
-  /// Brings the character to rest with its feet side by side: a stop to
-  /// decelerate (when walking), then one to close the feet, each halved in
-  /// duration (down to an eighth) while it would run into an obstacle or one
-  /// of `others` (the COM still coasts while it decelerates). The rest is
-  /// complete only if the character, standing there, keeps room to turn on
-  /// the spot among `others` while their plans last.
-  Rest come_to_rest(const FootstepState& state, const MovingObstacles& others = {}) const;
-  /// True if the character, standing at `state` from its time on, keeps
-  /// clear of `others` while their plans last (after them, they stand too),
-  /// with room to turn: a disc half the torso width round its COM, grown by
-  /// 0.1 m against those standing still. A rest complete among `others`
-  /// (come_to_rest) stands clear of them.
-  bool stands_clear(const FootstepState& state, const MovingObstacles& others) const;
-  /// For each agent of `others`, stands_clear(state, {that agent}): 1 if the
-  /// character keeps clear of that agent's plan alone, 0 if not.
-  std::vector<char> stands_clear_of_each(const FootstepState& state,
-                                         const MovingObstacles& others) const;
-  /// True if a character standing with its COM at `com` could turn on the
-  /// spot: no static obstacle within half the torso width.
-  bool room_to_turn(Vec2 com) const;
-  /// True if a character standing at `rested` keeps out of every disc of
-  /// `keep_out`: none of its five circles overlaps one.
-  bool keeps_out(const FootstepState& rested, const KeepOut& keep_out) const;
-  /// The indices of the first `at_most` of `states` (all at one time) that
-  /// stand clear of `others` (stands_clear), sampling their plans once.
-  std::vector<std::size_t> standing_clear(const std::vector<FootstepState>& states,
-                                          const MovingObstacles& others,
-                                          std::size_t at_most) const;
-  /// True if a character standing at `rested` has room to turn and can set
-  /// off: one of the tabled walking steps, the side step straight across or
-  /// a pivot from there is clear of the static obstacles. A search that ends
-  /// short of its goal ends where its rest leaves the character free to set
-  /// off, so that the next search from there is not trapped. Room to turn
-  /// alone is not enough: a walk sets off along the facing, and the steps'
-  /// checks pad the torso, so a character facing a wall just over half its
-  /// width away could otherwise take no step at all.
-  bool free_to_set_off(const FootstepState& rested) const;
-  /// The stop step from `state` lasting `duration`, with validity kCollides if
-  /// it runs into an obstacle.
-  StepResult stop_step(const FootstepState& state, double duration,
-                       const MovingObstacles& others = {}) const;
-  /// The stop step of the planner's stop_duration.
-  StepResult stop_step(const FootstepState& state, const MovingObstacles& others = {}) const;
-
   /// The character parameters.
-  const CharacterParams& character() const { return character_; }
+  const CharacterParams& character() const { return validity_.character(); }
   /// The planner parameters.
-  const PlannerParams& params() const { return params_; }
+  const PlannerParams& params() const { return validity_.params(); }
+
+  /// The checks the search applies, for callers that check states and steps
+  /// the same way (a crowd's rests, room and commits).
+  const ValidityChecker& validity() const { return validity_; }
 
  private:
   struct Node;
   struct Search;
-  // A walking action of the discretised set, precomputed in its local frame.
-  struct TabledAction;
   void expand(Search& search, int index, Vec2 goal) const;
-  // Calls visit(step, phi, shape) for each tabled walking step `foot` may
-  // take from `state`, until one call returns true (then returns true).
-  template <class Visit>
-  bool tabled_walks(const FootstepState& state, Foot foot, Visit&& visit) const;
-  // The checks against other agents, reading `others` sampled once per search.
-  // `from_standing`: the step sets off from a standing state.
-  bool collides(const Footstep& step, detail::SampledAgents& others, bool from_standing) const;
-  bool hits_obstacles(const Footstep& step) const;
-  bool touches_agents(const Footstep& step, detail::SampledAgents& others,
-                      bool from_standing) const;
-  void cut_before_rests(const FootstepState& start, detail::SampledAgents& others,
-                        SearchResult& result) const;
-  Rest come_to_rest(const FootstepState& state, detail::SampledAgents& others) const;
-  bool stands_clear(const FootstepState& state, detail::SampledAgents& others) const;
-  StepResult stop_step(const FootstepState& state, double duration,
-                       detail::SampledAgents& others) const;
-  // True if the character comes to rest from `state` among `others`, outside
-  // `keep_out`, free to set off from there.
-  bool rests_well(const FootstepState& state, detail::SampledAgents& others,
-                  const KeepOut& keep_out) const;
-  // A side step the search tries from standing, toward `way`: by the foot
-  // that did not step last, at kSideStepSpeed, for the stop duration.
-  StepResult side_step(const FootstepState& standing, double way) const;
 
-  CharacterParams character_;
-  PlannerParams params_;
-  const ObstacleMap& obstacles_;
+  ValidityChecker validity_;
   double expected_step_cost_ = 0;
   double expected_step_length_ = 0;
-  double torso_extent_ = 0;  // how far the torso circles reach from the COM [m]
-  std::vector<TabledAction> actions_;
 };
 
 /// Chooses exact foot orientations (section 4's post-process): each interval

@@ -1,7 +1,7 @@
 // Footfall — one plan sampled at the instants of the contact grid, kept with
-// the plan: the commit check takes these samples of an agent's new plan
-// anyway, and every later check and search against that plan reads them
-// instead of sampling it again (an eighth of the two-way hall of 200).
+// the plan: the crowd's commit check takes these samples of an agent's new
+// plan anyway, and every later check and search against that plan reads them
+// instead of sampling it again.
 #pragma once
 
 #include <algorithm>
@@ -10,7 +10,7 @@
 
 #include "footfall/plan/plan.hpp"
 
-namespace footfall::detail {
+namespace footfall {
 
 /// A plan at one instant k of the contact grid (t = k * kContactDt).
 struct PlanSample {
@@ -47,4 +47,4 @@ class PlanSamples {
   std::vector<PlanSample> samples_;  ///< [k - first_], k from first_ to still_
 };
 
-}  // namespace footfall::detail
+}  // namespace footfall

@@ -1,0 +1,133 @@
+// Footfall — the validity checks of footstep states and steps: static
+// obstacles, and other agents' plans as moving obstacles. The footstep search
+// and the crowd driver share them (the crowd checks rests, room and commits
+// with the same tests the search applies), so they stand apart from the
+// search, as OMPL keeps its StateValidityChecker apart from its planners.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "footfall/model/footstep.hpp"
+#include "footfall/model/obstacles.hpp"
+#include "footfall/model/params.hpp"
+#include "footfall/plan/plan.hpp"
+#include "footfall/plan/plan_samples.hpp"
+
+namespace footfall {
+
+/// Another agent's plan, which a search keeps clear of as a moving obstacle:
+/// at every sampled time of a step, the five circles the plan gives at that
+/// time (section 4). It is taken to share the planner's character.
+struct MovingObstacle {
+  /// Implicit: a list of plans alone is a list of moving obstacles.
+  MovingObstacle(const AgentPlan* its_plan, const PlanBounds* its_bounds = nullptr,
+                 const PlanSamples* its_samples = nullptr)
+      : plan(its_plan), bounds(its_bounds), samples(its_samples) {}
+  const AgentPlan* plan;
+  /// Its PlanBounds, when the caller keeps them (a crowd does); null: a
+  /// search finds the bounds it needs itself.
+  const PlanBounds* bounds;
+  /// Samples of the plan already taken, when the caller keeps them (a crowd
+  /// keeps those of its commit check); null: a search samples it itself.
+  const PlanSamples* samples;
+};
+using MovingObstacles = std::vector<MovingObstacle>;
+
+/// Discs that a search's rests keep out of: the way another agent waits to
+/// take (the crowd's yielding). The steps may cross them.
+using KeepOut = std::vector<Circle>;
+
+/// Discs that a search's rests keep out of: the way another agent waits to
+/// take (the crowd's yielding). The steps may cross them.
+using KeepOut = std::vector<Circle>;
+
+/// Stop steps that bring a character to rest, and where they leave it.
+struct Rest {
+  std::vector<Footstep> steps;
+  FootstepState state;    ///< After the steps.
+  bool complete = false;  ///< False when even the shortest stop would run into an obstacle.
+};
+
+/// The validity checks for one character among static obstacles. Stateless
+/// between calls; const methods may run on several threads at once.
+class ValidityChecker {
+ public:
+  /// Validates both parameter sets (std::invalid_argument). `obstacles` must
+  /// outlive the checker.
+  ValidityChecker(const CharacterParams& character, const PlannerParams& planner,
+                  const ObstacleMap& obstacles);
+  ~ValidityChecker();
+  ValidityChecker(const ValidityChecker&) = delete;
+  ValidityChecker& operator=(const ValidityChecker&) = delete;
+
+  /// True if the step collides with an obstacle (its landing foot, or the
+  /// torso circles at samples no further apart than the sample spacing), or
+  /// if at an instant of the contact grid (every 0.05 s, as the crowd's
+  /// commit check and `footfall metrics` sample) its torso or planted foot
+  /// touches a circle of one of `others`.
+  bool collides(const Footstep& step, const MovingObstacles& others = {}) const;
+  /// True if the standing or walking state's planted feet or torso collide.
+  bool collides(const FootstepState& state) const;
+  /// Brings the character to rest with its feet side by side: a stop to
+  /// decelerate (when walking), then one to close the feet, each halved in
+  /// duration (down to an eighth) while it would run into an obstacle or one
+  /// of `others` (the COM still coasts while it decelerates). The rest is
+  /// complete only if the character, standing there, keeps room to turn on
+  /// the spot among `others` while their plans last.
+  Rest come_to_rest(const FootstepState& state, const MovingObstacles& others = {}) const;
+  /// True if the character, standing at `state` from its time on, keeps
+  /// clear of `others` while their plans last (after them, they stand too),
+  /// with room to turn: a disc half the torso width round its COM, grown by
+  /// 0.1 m against those standing still. A rest complete among `others`
+  /// (come_to_rest) stands clear of them.
+  bool stands_clear(const FootstepState& state, const MovingObstacles& others) const;
+  /// For each agent of `others`, stands_clear(state, {that agent}): 1 if the
+  /// character keeps clear of that agent's plan alone, 0 if not.
+  std::vector<char> stands_clear_of_each(const FootstepState& state,
+                                         const MovingObstacles& others) const;
+  /// True if a character standing with its COM at `com` could turn on the
+  /// spot: no static obstacle within half the torso width.
+  bool room_to_turn(Vec2 com) const;
+  /// True if a character standing at `rested` keeps out of every disc of
+  /// `keep_out`: none of its five circles overlaps one.
+  bool keeps_out(const FootstepState& rested, const KeepOut& keep_out) const;
+  /// The indices of the first `at_most` of `states` (all at one time) that
+  /// stand clear of `others` (stands_clear), sampling their plans once.
+  std::vector<std::size_t> standing_clear(const std::vector<FootstepState>& states,
+                                          const MovingObstacles& others,
+                                          std::size_t at_most) const;
+  /// True if a character standing at `rested` has room to turn and can set
+  /// off: one of the tabled walking steps, the side step straight across or
+  /// a pivot from there is clear of the static obstacles. A search that ends
+  /// short of its goal ends where its rest leaves the character free to set
+  /// off, so that the next search from there is not trapped. Room to turn
+  /// alone is not enough: a walk sets off along the facing, and the steps'
+  /// checks pad the torso, so a character facing a wall just over half its
+  /// width away could otherwise take no step at all.
+  bool free_to_set_off(const FootstepState& rested) const;
+  /// The stop step from `state` lasting `duration`, with validity kCollides if
+  /// it runs into an obstacle.
+  StepResult stop_step(const FootstepState& state, double duration,
+                       const MovingObstacles& others = {}) const;
+  /// The stop step of the planner's stop_duration.
+  StepResult stop_step(const FootstepState& state, const MovingObstacles& others = {}) const;
+  /// True if the step's landing foot, or its torso circles at samples no
+  /// further apart than the sample spacing, overlap a static obstacle.
+  bool hits_obstacles(const Footstep& step) const;
+
+  /// The character parameters.
+  const CharacterParams& character() const;
+  /// The planner parameters.
+  const PlannerParams& params() const;
+
+  /// The implementation, which the footstep search calls with the other
+  /// agents it samples once per search (planner/validity_impl.hpp).
+  struct Impl;
+  const Impl& impl() const { return *impl_; }
+
+ private:
+  std::unique_ptr<const Impl> impl_;
+};
+
+}  // namespace footfall

@@ -1,0 +1,459 @@
+#include "footfall/planner/validity_checker.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "model/contact.hpp"
+#include "planner/validity_impl.hpp"
+
+namespace footfall {
+namespace {
+
+// A disc that holds the torso throughout the step, grown by `margin`: the
+// whole step's COM lies within half the chord plus the sway of the chord's
+// midpoint.
+Circle sweep_bound(const Footstep& step, const CharacterParams& character, double margin) {
+  const double chord = distance(step.com_start, step.com_end);
+  const double sway = step.alpha * step.duration() * step.duration() / 4.0;
+  return {0.5 * (step.com_start + step.com_end),
+          0.5 * chord + sway + 0.5 * character.torso_width + margin};
+}
+
+// `others` sampled from time `from` on, for a check outside a search (which
+// keeps its own samples for all its steps).
+detail::SampledAgents& sampled(const MovingObstacles& others, const CharacterParams& character,
+                               double from) {
+  thread_local detail::SampledAgents samples;
+  samples.reset(others, character, from);
+  return samples;
+}
+
+// A character standing at a state, checked against other agents' plans from
+// the state's time on, with room to turn on the spot, as room_to_turn() asks
+// of static obstacles: two agents resting face to face a few centimetres
+// apart could never step again, every turn swinging a shoulder into the other.
+class StandingCheck {
+ public:
+  StandingCheck(const FootstepState& state, const CharacterParams& character)
+      : com_(state.com),
+        mine_{Circle{state.com, 0.5 * character.torso_width},
+              Circle{state.feet[0], character.foot_radius},
+              Circle{state.feet[1], character.foot_radius}},
+        first_(first_contact_instant(state.time)) {
+    extent_ = mine_.front().radius + kRestRoom;
+    for (const Circle& circle : mine_)
+      extent_ = std::max(extent_, distance(circle.center, com_) + circle.radius);
+  }
+
+  // True if it touches agent j of `others` (sampled from the state's time).
+  bool touches(detail::SampledAgents& others, std::size_t j) const {
+    // After its plan ends, the other stands too: the first instant from then
+    // on is the last that can differ.
+    const long last = std::max(first_, first_contact_instant(others.plan(j).end_time()));
+    const double span = static_cast<double>(last - first_) * kContactDt;
+    const PlanBounds::From& bounds = others.bounds(j);
+    const double near = extent_ + bounds.reach + 0.5 * bounds.top_speed * kContactDt;
+    if (squared_distance(bounds.com_box, {com_, com_}) > near * near) return false;
+    if (distance(others.at(j, first_).com, com_) > near + bounds.top_speed * span) return false;
+    double start_gap = std::numeric_limits<double>::infinity();  // see touching()
+    for (long k = first_; k <= last; ++k) {
+      const detail::AgentWhere& them = others.at(j, k);
+      if (!them.present) break;  // gone for good
+      if (distance(them.com, com_) > near) continue;
+      const detail::AgentShape& shape = others.shape(j, k);
+      const double pad = 0.5 * them.speed * kContactDt;
+      if (k != first_ && distance(them.com, com_) - extent_ - shape.extent - pad > 0.0) continue;
+      // Room kept from those standing still (the torso disc only).
+      const double room = standing_still(0.0, them.speed) ? kRestRoom : 0.0;
+      Gap gap;
+      for (int i = 0; i < shape.count; ++i)
+        for (std::size_t m = 0; m < mine_.size(); ++m) {
+          Circle circle = mine_[m];
+          if (m == 0) circle.radius += room;
+          gap.add(circle, shape.circles[i], pad);
+        }
+      if (k == first_ && standing_still(0.0, them.speed)) start_gap = gap.outright;
+      if (touching(gap, start_gap)) return true;
+    }
+    return false;
+  }
+
+ private:
+  Vec2 com_;
+  std::array<Circle, 3> mine_;  // the torso disc and the feet
+  double extent_ = 0.0;         // how far they reach from the COM, room included
+  long first_ = 0;
+};
+
+}  // namespace
+
+using planner::detail::kPivotTurn;
+using planner::detail::kSideStepSpeed;
+
+ValidityChecker::ValidityChecker(const CharacterParams& character, const PlannerParams& planner,
+                                 const ObstacleMap& obstacles)
+    : impl_(std::make_unique<const Impl>(character, planner, obstacles)) {}
+
+ValidityChecker::~ValidityChecker() = default;
+
+const CharacterParams& ValidityChecker::character() const { return impl_->character_; }
+const PlannerParams& ValidityChecker::params() const { return impl_->params_; }
+bool ValidityChecker::collides(const FootstepState& state) const { return impl_->collides(state); }
+bool ValidityChecker::collides(const Footstep& step, const MovingObstacles& others) const {
+  return impl_->collides(step, others);
+}
+Rest ValidityChecker::come_to_rest(const FootstepState& state, const MovingObstacles& others) const {
+  return impl_->come_to_rest(state, others);
+}
+bool ValidityChecker::stands_clear(const FootstepState& state, const MovingObstacles& others) const {
+  return impl_->stands_clear(state, others);
+}
+std::vector<char> ValidityChecker::stands_clear_of_each(const FootstepState& state,
+                                                        const MovingObstacles& others) const {
+  return impl_->stands_clear_of_each(state, others);
+}
+std::vector<std::size_t> ValidityChecker::standing_clear(const std::vector<FootstepState>& states,
+                                                         const MovingObstacles& others,
+                                                         std::size_t at_most) const {
+  return impl_->standing_clear(states, others, at_most);
+}
+bool ValidityChecker::room_to_turn(Vec2 com) const { return impl_->room_to_turn(com); }
+bool ValidityChecker::keeps_out(const FootstepState& rested, const KeepOut& keep_out) const {
+  return impl_->keeps_out(rested, keep_out);
+}
+bool ValidityChecker::free_to_set_off(const FootstepState& rested) const {
+  return impl_->free_to_set_off(rested);
+}
+StepResult ValidityChecker::stop_step(const FootstepState& state, double duration,
+                                      const MovingObstacles& others) const {
+  return impl_->stop_step(state, duration, others);
+}
+StepResult ValidityChecker::stop_step(const FootstepState& state,
+                                      const MovingObstacles& others) const {
+  return impl_->stop_step(state, others);
+}
+bool ValidityChecker::hits_obstacles(const Footstep& step) const {
+  return impl_->hits_obstacles(step);
+}
+
+ValidityChecker::Impl::Impl(const CharacterParams& character, const PlannerParams& planner,
+                            const ObstacleMap& obstacles)
+    : character_(character), params_(planner), obstacles_(obstacles) {
+  validate(character_);
+  validate(params_);
+  for (const Gait& gait : params_.gaits) {
+    for (const double turn : params_.turn_angles) {
+      TabledAction action{detail::step_shape(gait.speed, gait.duration, turn, character_), {}};
+      action.allowed[0] =
+          detail::check_limits(action.shape, character_.left) == StepValidity::kValid;
+      action.allowed[1] =
+          detail::check_limits(action.shape, character_.right) == StepValidity::kValid;
+      if (action.allowed[0] || action.allowed[1]) actions_.push_back(action);
+    }
+  }
+  for (const Circle& circle : torso_circles({0.0, 0.0}, 0.0, character_))
+    torso_extent_ = std::max(torso_extent_, length(circle.center) + circle.radius);
+}
+
+bool ValidityChecker::Impl::collides(const FootstepState& state) const {
+  for (const Vec2& foot : state.feet) {
+    if (obstacles_.overlaps({foot, character_.foot_radius})) return true;
+  }
+  for (const Circle& circle : torso_circles(state.com, state.facing, character_)) {
+    if (obstacles_.overlaps(circle)) return true;
+  }
+  return false;
+}
+
+bool ValidityChecker::Impl::collides(const Footstep& step, const MovingObstacles& others) const {
+  return collides(step, sampled(others, character_, step.start_time), false);
+}
+
+bool ValidityChecker::Impl::collides(const Footstep& step, detail::SampledAgents& others,
+                               bool from_standing) const {
+  // Agents first: in a crowd they turn down most candidate steps.
+  return touches_agents(step, others, from_standing) || hits_obstacles(step);
+}
+
+bool ValidityChecker::Impl::hits_obstacles(const Footstep& step) const {
+  if (obstacles_.overlaps({step.foot_position, character_.foot_radius})) return true;
+  // Samples no further apart along the COM path than `spacing`: the path is
+  // never longer than speed * time between samples, where the COM speed of a
+  // walking step is at most its speed at either end.
+  const double top_speed = std::max(length(step.com_velocity_start), length(step.com_velocity_end));
+  const double spacing = params_.collision_sample_spacing;
+  // The circles are grown by half the spacing, the COM's travel to the
+  // nearest sample. A step that does not move the COM (a wait, or a pivot,
+  // whose shoulders swing within the room to turn its rest kept) needs none:
+  // grown, a pivot by a wall it stands 0.3 m from would never be clear.
+  const double pad = top_speed > 0.0 ? 0.5 * spacing : 0.0;
+  thread_local std::vector<int> near;
+  near.clear();
+  obstacles_.gather(sweep_bound(step, character_, pad), near);
+  if (near.empty()) return false;
+  const int samples =
+      std::max(1, static_cast<int>(std::ceil(top_speed * step.duration() / spacing)));
+  const double dt = step.duration() / samples;
+  // The torso keeps its facing through the step: its circles' offsets from
+  // the COM are found once.
+  const auto torso = torso_circles({0.0, 0.0}, step.phi, character_, pad);
+  for (int i = 0; i <= samples; ++i) {
+    const Vec2 com = com_at(step, step.start_time + dt * i).position;
+    for (const Circle& offset : torso)
+      if (obstacles_.first_overlap({com + offset.center, offset.radius}, near) >= 0) return true;
+  }
+  return false;
+}
+
+bool ValidityChecker::Impl::touches_agents(const Footstep& step, detail::SampledAgents& others,
+                                     bool from_standing) const {
+  // The contact instants while the step is under way; the one at its end
+  // belongs to the next step.
+  const long first = first_contact_instant(step.start_time);
+  const long last = first_contact_instant(step.end_time) - 1;
+  if (others.size() == 0 || last < first) return false;
+  // Agents that cannot come near the step at one of its instants are left out
+  // before sampling: between the middle instant and the step's ends, a COM
+  // moves at most at the top speed of its plan, and its circles reach no
+  // farther from it than its plan's circle_reach.
+  const long middle = first + (last - first) / 2;
+  const double span = static_cast<double>(last - middle) * kContactDt;
+  const Circle sweep = sweep_bound(step, character_, 0.0);
+  const Circle foot{step.foot_position, character_.foot_radius};
+  const double my_reach = std::max(sweep.radius, distance(foot.center, sweep.center) + foot.radius);
+  const double my_top_speed =
+      std::max(length(step.com_velocity_start), length(step.com_velocity_end));
+  const auto may_come_near = [&](std::size_t j) {
+    const PlanBounds::From& bounds = others.bounds(j);
+    const double pad = 0.5 * (my_top_speed + bounds.top_speed) * kContactDt;
+    const double close = my_reach + bounds.reach + pad;
+    // Its COM keeps out of a box: far from that, it needs no sample.
+    if (squared_distance(bounds.com_box, {sweep.center, sweep.center}) > close * close)
+      return false;
+    const double reach = close + bounds.top_speed * span;
+    const Vec2 d = others.at(j, middle).com - sweep.center;
+    return dot(d, d) <= reach * reach;
+  };
+  // The character at each instant, sampled when first wanted: COM, speed,
+  // torso circles, and how far those and the foot reach from the COM.
+  struct Instant {
+    bool sampled = false;
+    Vec2 com;
+    double speed = 0.0;
+    std::array<Circle, 3> torso;
+    double extent = 0.0;
+  };
+  thread_local std::vector<Instant> mine;
+  mine.assign(static_cast<std::size_t>(last - first + 1), Instant{});
+  const auto torso_offsets = torso_circles({0.0, 0.0}, step.phi, character_);  // as above
+  const auto instant = [&](long k) -> const Instant& {
+    Instant& sample = mine[static_cast<std::size_t>(k - first)];
+    if (!sample.sampled) {
+      const ComSample me = com_at(step, static_cast<double>(k) * kContactDt);
+      sample = {true, me.position, length(me.velocity), torso_offsets,
+                std::max(torso_extent_, distance(foot.center, me.position) + foot.radius)};
+      for (Circle& circle : sample.torso) circle.center = me.position + circle.center;
+    }
+    return sample;
+  };
+  // A step from standing that starts on an instant starts where the
+  // character stood: it stood still there, whatever speed the step sets off at.
+  const bool stood_at_first =
+      from_standing && std::fabs(static_cast<double>(first) * kContactDt - step.start_time) < 1e-9;
+  // True if the character touches agent j at instant k, if j counts then
+  // (up to `counted_until`; its circles reach `reach`); the first instant
+  // sets `start_gap` (see touching()), which the later ones need.
+  const auto touches_at = [&](std::size_t j, long k, double counted_until, double reach,
+                              double& start_gap) {
+    const detail::AgentWhere& them = others.at(j, k);
+    if (!them.present || static_cast<double>(k) * kContactDt > counted_until) return false;
+    const Instant& me = instant(k);
+    // Both move between instants: the circles are grown by half the travel.
+    const double pad = 0.5 * (me.speed + them.speed) * kContactDt;
+    const Vec2 between = me.com - them.com;
+    const double near = me.extent + reach + pad;
+    if (dot(between, between) > near * near) return false;
+    const detail::AgentShape& shape = others.shape(j, k);
+    // Too far apart for any pair of circles to come within the padding; at
+    // the first instant the gap is still wanted for the exception below.
+    const double apart = length(between) - me.extent - shape.extent - pad;
+    if (k != first && apart > 0.0) return false;
+    Gap gap;  // of the torso: the foot is put down clear of everyone, standing close or not
+    for (int i = 0; i < shape.count; ++i) {
+      const Circle& theirs = shape.circles[i];
+      const Vec2 to_foot = foot.center - theirs.center;
+      const double foot_touch = foot.radius + theirs.radius + pad;
+      if (dot(to_foot, to_foot) <= foot_touch * foot_touch) return true;
+      for (const Circle& circle : me.torso) gap.add(circle, theirs, pad);
+    }
+    if (k == first && standing_still(stood_at_first ? 0.0 : me.speed, them.speed))
+      start_gap = gap.outright;
+    return touching(gap, start_gap);
+  };
+  // After the first instant, the last: a step turned down mostly walks into
+  // someone as it ends (the one ahead in a queue). Then those between. (One
+  // call in one loop, which the compiler inlines.)
+  const auto touches = [&](std::size_t j) {
+    const double until = others.counted_until(j), reach = others.bounds(j).reach;
+    double start_gap = std::numeric_limits<double>::infinity();
+    for (long n = 0; n <= last - first; ++n) {
+      const long k = n == 0 ? first : n == 1 ? last : first + n - 1;
+      if (touches_at(j, k, until, reach, start_gap)) return true;
+    }
+    return false;
+  };
+  // The agent that turned down the last step checked is tried first: a
+  // search's candidates, siblings and cousins, mostly run into the same one.
+  const std::size_t blocker = others.blocker();
+  if (blocker < others.size() && may_come_near(blocker) && touches(blocker)) return true;
+  for (std::size_t j = 0; j < others.size(); ++j) {
+    if (j != blocker && may_come_near(j) && touches(j)) {
+      others.turned_down_by(j);
+      return true;
+    }
+  }
+  return false;
+}
+
+Rest ValidityChecker::Impl::come_to_rest(const FootstepState& state,
+                                   const MovingObstacles& others) const {
+  return come_to_rest(state, sampled(others, character_, state.time));
+}
+
+Rest ValidityChecker::Impl::come_to_rest(const FootstepState& state,
+                                   detail::SampledAgents& others) const {
+  Rest rest{{}, state, false};
+  const auto stop = [&] {
+    double duration = params_.stop_duration;
+    for (int attempt = 0; attempt < 4; ++attempt, duration *= 0.5) {
+      const StepResult step = stop_step(rest.state, duration, others);
+      if (step.valid()) {
+        rest.steps.push_back(step.step);
+        rest.state = step.state;
+        return true;
+      }
+    }
+    return false;
+  };
+  rest.complete = (rest.state.standing() || stop()) && stop() && stands_clear(rest.state, others);
+  return rest;
+}
+
+bool ValidityChecker::Impl::stands_clear(const FootstepState& state,
+                                   const MovingObstacles& others) const {
+  return stands_clear(state, sampled(others, character_, state.time));
+}
+
+bool ValidityChecker::Impl::stands_clear(const FootstepState& state,
+                                   detail::SampledAgents& others) const {
+  const StandingCheck check(state, character_);
+  // As in touches_agents: the agent that turned down the last check first.
+  const std::size_t blocker = others.blocker();
+  if (blocker < others.size() && check.touches(others, blocker)) return false;
+  for (std::size_t j = 0; j < others.size(); ++j) {
+    if (j != blocker && check.touches(others, j)) {
+      others.turned_down_by(j);
+      return false;
+    }
+  }
+  return true;
+}
+
+std::vector<char> ValidityChecker::Impl::stands_clear_of_each(const FootstepState& state,
+                                                        const MovingObstacles& others) const {
+  detail::SampledAgents& samples = sampled(others, character_, state.time);
+  const StandingCheck check(state, character_);
+  std::vector<char> clear(others.size());
+  for (std::size_t j = 0; j < others.size(); ++j) clear[j] = !check.touches(samples, j);
+  return clear;
+}
+
+std::vector<std::size_t> ValidityChecker::Impl::standing_clear(const std::vector<FootstepState>& states,
+                                                         const MovingObstacles& others,
+                                                         std::size_t at_most) const {
+  std::vector<std::size_t> clear;
+  if (states.empty()) return clear;
+  detail::SampledAgents& samples = sampled(others, character_, states.front().time);
+  for (std::size_t k = 0; k < states.size() && clear.size() < at_most; ++k)
+    if (stands_clear(states[k], samples)) clear.push_back(k);
+  return clear;
+}
+
+bool ValidityChecker::Impl::rests_well(const FootstepState& state, detail::SampledAgents& others,
+                                 const KeepOut& keep_out) const {
+  const Rest rest = come_to_rest(state, others);
+  return rest.complete && keeps_out(rest.state, keep_out) && free_to_set_off(rest.state);
+}
+
+bool ValidityChecker::Impl::room_to_turn(Vec2 com) const {
+  return !obstacles_.overlaps({com, 0.5 * character_.torso_width});
+}
+
+bool ValidityChecker::Impl::keeps_out(const FootstepState& rested, const KeepOut& keep_out) const {
+  if (keep_out.empty()) return true;
+  const auto torso = torso_circles(rested.com, rested.facing, character_);
+  const std::array<Circle, 5> mine{Circle{rested.feet[0], character_.foot_radius},
+                                   Circle{rested.feet[1], character_.foot_radius}, torso[0],
+                                   torso[1], torso[2]};
+  double reach = 0.0;  // of the circles from the COM, with a margin for rounding
+  for (const Circle& circle : mine)
+    reach = std::max(reach, distance(circle.center, rested.com) + circle.radius + 1e-9);
+  for (const Circle& disc : keep_out) {
+    const Vec2 d = disc.center - rested.com;
+    if (dot(d, d) >= (reach + disc.radius) * (reach + disc.radius)) continue;  // far from all
+    for (const Circle& circle : mine)
+      if (distance(circle.center, disc.center) < circle.radius + disc.radius) return false;
+  }
+  return true;
+}
+
+StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double duration,
+                                      const MovingObstacles& others) const {
+  return stop_step(state, duration, sampled(others, character_, state.time));
+}
+
+StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double duration,
+                                      detail::SampledAgents& others) const {
+  StepResult stop = create_footstep(
+      state, {StepKind::kStop, other(state.last_foot), state.facing, 0.0, duration}, character_);
+  if (stop.valid() && collides(stop.step, others, state.standing()))
+    stop.validity = StepValidity::kCollides;
+  return stop;
+}
+
+StepResult ValidityChecker::Impl::stop_step(const FootstepState& state,
+                                      const MovingObstacles& others) const {
+  return stop_step(state, params_.stop_duration, others);
+}
+
+StepResult ValidityChecker::Impl::side_step(const FootstepState& standing, double way) const {
+  return create_footstep(
+      standing,
+      {StepKind::kSideStep, other(standing.last_foot), way, kSideStepSpeed, params_.stop_duration},
+      character_);
+}
+
+bool ValidityChecker::Impl::free_to_set_off(const FootstepState& rested) const {
+  if (!room_to_turn(rested.com)) return false;
+  const auto clear = [&](const StepResult& step, double, const detail::StepShape&) {
+    return step.valid() && !hits_obstacles(step.step);
+  };
+  if (tabled_walks(rested, Foot::kLeft, clear) || tabled_walks(rested, Foot::kRight, clear))
+    return true;
+  // Or a side step, or a pivot toward a way out (the steps' checks pad the
+  // torso, so room to turn alone does not promise one).
+  const double across = rested.facing + outward_sign(other(rested.last_foot)) * 0.5 * kPi;
+  if (clear(side_step(rested, across), 0.0, {})) return true;
+  for (const double turn : {kPivotTurn, -kPivotTurn, kMaxPivot, -kMaxPivot}) {
+    const StepResult pivot = create_footstep(rested,
+                                             {StepKind::kStop, other(rested.last_foot),
+                                              rested.facing + turn, 0.0, params_.stop_duration},
+                                             character_);
+    if (clear(pivot, 0.0, {})) return true;
+  }
+  return false;
+}
+
+}  // namespace footfall

@@ -1,0 +1,94 @@
+// Footfall — the validity checks' implementation. The footstep search calls
+// it directly, with the other agents it samples once per search
+// (SampledAgents); ValidityChecker's methods sample them per call.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "footfall/planner/validity_checker.hpp"
+#include "model/footstep_shape.hpp"
+#include "planner/sampled_agents.hpp"
+
+namespace footfall {
+
+namespace planner::detail {
+constexpr double kPivotTurn = 0.25 * kPi;  // [rad] the smaller pivot the search tries
+// [m/s] the side steps' speed: with the stop duration (0.5 s), 0.25 m across.
+constexpr double kSideStepSpeed = 1.0;
+}  // namespace planner::detail
+
+struct ValidityChecker::Impl {
+  // A walking action of the discretised set, precomputed in its local frame.
+  struct TabledAction {
+    detail::StepShape shape;
+    std::array<bool, 2> allowed{};  // within each foot's limits
+  };
+
+  Impl(const CharacterParams& character, const PlannerParams& planner,
+       const ObstacleMap& obstacles);
+
+  // As ValidityChecker's, which forward here.
+  bool collides(const FootstepState& state) const;
+  bool collides(const Footstep& step, const MovingObstacles& others) const;
+  Rest come_to_rest(const FootstepState& state, const MovingObstacles& others) const;
+  bool stands_clear(const FootstepState& state, const MovingObstacles& others) const;
+  std::vector<char> stands_clear_of_each(const FootstepState& state,
+                                         const MovingObstacles& others) const;
+  std::vector<std::size_t> standing_clear(const std::vector<FootstepState>& states,
+                                          const MovingObstacles& others,
+                                          std::size_t at_most) const;
+  bool room_to_turn(Vec2 com) const;
+  bool keeps_out(const FootstepState& rested, const KeepOut& keep_out) const;
+  bool free_to_set_off(const FootstepState& rested) const;
+  StepResult stop_step(const FootstepState& state, double duration,
+                       const MovingObstacles& others) const;
+  StepResult stop_step(const FootstepState& state, const MovingObstacles& others) const;
+  bool hits_obstacles(const Footstep& step) const;
+
+  // The same checks against `others` sampled once for many of them.
+  // `from_standing`: the step sets off from a standing state.
+  bool collides(const Footstep& step, detail::SampledAgents& others, bool from_standing) const;
+  bool touches_agents(const Footstep& step, detail::SampledAgents& others,
+                      bool from_standing) const;
+  Rest come_to_rest(const FootstepState& state, detail::SampledAgents& others) const;
+  bool stands_clear(const FootstepState& state, detail::SampledAgents& others) const;
+  StepResult stop_step(const FootstepState& state, double duration,
+                       detail::SampledAgents& others) const;
+  // True if the character comes to rest from `state` among `others`, outside
+  // `keep_out`, free to set off from there.
+  bool rests_well(const FootstepState& state, detail::SampledAgents& others,
+                  const KeepOut& keep_out) const;
+  // A side step the search tries from standing, toward `way`: by the foot
+  // that did not step last, at kSideStepSpeed, for the stop duration.
+  StepResult side_step(const FootstepState& standing, double way) const;
+  // Calls visit(step, phi, shape) for each tabled walking step `foot` may
+  // take from `state`, until one call returns true (then returns true).
+  template <class Visit>
+  bool tabled_walks(const FootstepState& state, Foot foot, Visit&& visit) const;
+
+  CharacterParams character_;
+  PlannerParams params_;
+  const ObstacleMap& obstacles_;
+  double torso_extent_ = 0;  // how far the torso circles reach from the COM [m]
+  std::vector<TabledAction> actions_;
+};
+
+template <class Visit>
+bool ValidityChecker::Impl::tabled_walks(const FootstepState& state, Foot foot, Visit&& visit) const {
+  const footfall::detail::Heading heading = detail::heading_of(state);
+  const int f = static_cast<int>(foot);
+  const double inward = -outward_sign(foot);
+  const OrientationInterval reach = reachable_orientations(
+      state.foot_orientation[static_cast<int>(other(foot))], other(foot), character_.max_foot_turn);
+  for (const TabledAction& action : actions_) {
+    if (!action.allowed[f]) continue;
+    const double phi = wrap_angle(heading.angle + inward * action.shape.turn);
+    if (visit(detail::walk_step(state, foot, heading, action.shape, phi, reach, character_), phi,
+              action.shape))
+      return true;
+  }
+  return false;
+}
+
+}  // namespace footfall
