@@ -1,100 +1,136 @@
 // Footfall — the parameter structs and obstacles read from and written to
-// JSON (io/param_fields.hpp).
-#include <stdexcept>
+// JSON (io/param_json.hpp).
+#include "io/param_json.hpp"
 
-#include "io/json_reader.hpp"
-#include "io/param_fields.hpp"
+#include <type_traits>
+
+#include "model/param_checks.hpp"
 
 namespace footfall {
 namespace detail {
 
 namespace {
 
-// Looks `key` up in `table`; applies a number to the field. False if unknown.
-template <typename Struct, size_t N>
-bool read_double(const DoubleField<Struct> (&table)[N], const std::string& key, const Json& value,
-                 const std::string& path, Struct& target) {
-  for (const auto& field : table) {
-    if (key == field.name) {
-      target.*field.member = number(value, path);
-      return true;
-    }
-  }
-  return false;
-}
+template <class S>
+bool read_field(const Json& value, const std::string& key, const std::string& path, S& target);
 
-void read_foot_limits(const Json& json, const std::string& path, FootLimits& limits) {
+// Reads every key of the object `json` into `target`; false for the first key
+// that is not a field of S, when `unknown` is null (else it is told of it).
+template <class S, class Unknown>
+void read_struct(const Json& json, const std::string& path, S& target, Unknown unknown) {
   if (!json.is_object()) fail(path, "expected an object, got " + type_name(json));
   for (auto it = json.begin(); it != json.end(); ++it) {
-    if (!read_double(kFootLimitFields, it.key(), it.value(), child(path, it.key()), limits)) {
-      fail(child(path, it.key()), "unknown field");
-    }
+    const std::string field = child(path, it.key());
+    if (!read_field(it.value(), it.key(), field, target)) unknown(it.key(), it.value(), field);
   }
 }
 
-template <typename Struct, size_t N>
-Json fields_to_json(const DoubleField<Struct> (&table)[N], const Struct& source) {
+template <class S>
+void read_struct(const Json& json, const std::string& path, S& target) {
+  read_struct(json, path, target, [](const std::string&, const Json&, const std::string& field) {
+    fail(field, "unknown field");
+  });
+}
+
+// One table entry read from `value`, if its name is `key`.
+template <class S>
+struct FieldReader {
+  const Json& value;
+  const std::string& key;
+  const std::string& path;
+  S& target;
+  bool found = false;
+
+  void operator()(const ScalarParam<S, double>& field) {
+    if (claim(field.name)) target.*field.member = number(value, path);
+  }
+  void operator()(const ScalarParam<S, int>& field) {
+    if (!claim(field.name)) return;
+    const long long whole = integer(value, path);
+    check_range(target, static_cast<double>(whole), field.range, path);  // before narrowing
+    target.*field.member = static_cast<int>(whole);
+  }
+  template <class N>
+  void operator()(const NestedParam<S, N>& field) {
+    if (claim(field.name)) read_struct(value, path, target.*field.member);
+  }
+  void operator()(const NumberListParam<S>& field) {
+    if (!claim(field.name)) return;
+    std::vector<double>& list = target.*field.member;
+    list.clear();
+    const Json& items = array(value, path);
+    for (std::size_t i = 0; i < items.size(); ++i) list.push_back(number(items[i], item(path, i)));
+  }
+  template <class E>
+  void operator()(const StructListParam<S, E>& field) {
+    if (!claim(field.name)) return;
+    std::vector<E>& list = target.*field.member;
+    list.clear();
+    const Json& items = array(value, path);
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      const std::string item_path = item(path, i);
+      E element;
+      read_struct(items[i], item_path, element);
+      // Every field of an item is given: an item is a whole, not an override.
+      for_each_param<E>([&](const auto& f) { require(items[i], item_path, f.name); });
+      list.push_back(element);
+    }
+  }
+
+ private:
+  bool claim(const char* name) {
+    if (found || key != name) return false;
+    found = true;
+    return true;
+  }
+};
+
+template <class S>
+bool read_field(const Json& value, const std::string& key, const std::string& path, S& target) {
+  FieldReader<S> reader{value, key, path, target};
+  for_each_param<S>([&](const auto& field) { reader(field); });
+  return reader.found;
+}
+
+// Every number and nested struct of `source`, by the table's names.
+template <class S>
+Json struct_to_json(const S& source) {
   Json json = Json::object();
-  for (const auto& field : table) json[field.name] = source.*field.member;
+  for_each_param<S>([&](const auto& field) {
+    using Field = std::decay_t<decltype(field)>;
+    if constexpr (std::is_same_v<Field, ScalarParam<S, double>> ||
+                  std::is_same_v<Field, ScalarParam<S, int>>) {
+      json[field.name] = source.*field.member;
+    } else if constexpr (std::is_same_v<Field, NumberListParam<S>>) {
+      json[field.name] = source.*field.member;
+    } else if constexpr (std::is_same_v<Field, NestedParam<S, FootLimits>>) {
+      json[field.name] = struct_to_json(source.*field.member);
+    } else {
+      Json items = Json::array();
+      for (const auto& element : source.*field.member) items.push_back(struct_to_json(element));
+      json[field.name] = items;
+    }
+  });
   return json;
 }
 
 }  // namespace
 
 void read_character(const Json& json, const std::string& path, CharacterParams& params) {
-  if (!json.is_object()) fail(path, "expected an object, got " + type_name(json));
-  for (auto it = json.begin(); it != json.end(); ++it) {
-    const std::string& key = it.key();
-    const std::string field = child(path, key);
-    if (read_double(kCharacterFields, key, it.value(), field, params)) continue;
-    if (key == "left" || key == "right") continue;  // applied below
-    if (read_double(kFootLimitFields, key, it.value(), field, params.left)) {
-      read_double(kFootLimitFields, key, it.value(), field, params.right);
-    } else {
-      fail(field, "unknown field");
-    }
-  }
+  // A flat foot-limit key sets both feet.
+  read_struct(json, path, params, [&](const std::string& key, const Json& value,
+                                      const std::string& field) {
+    if (!read_field(value, key, field, params.left)) fail(field, "unknown field");
+    read_field(value, key, field, params.right);
+  });
   // Per-foot objects win over flat keys, whatever their order in the file.
-  for (const char* side : {"left", "right"}) {
-    if (json.contains(side)) {
-      read_foot_limits(json[side], child(path, side), side[0] == 'l' ? params.left : params.right);
-    }
-  }
+  for (const char* side : {"left", "right"})
+    if (json.contains(side))
+      read_struct(json[side], child(path, side), side[0] == 'l' ? params.left : params.right);
 }
 
 void read_planner(const Json& json, const std::string& path, PlannerParams& params) {
-  if (!json.is_object()) fail(path, "expected an object, got " + type_name(json));
-  for (auto it = json.begin(); it != json.end(); ++it) {
-    const std::string& key = it.key();
-    const std::string field = child(path, key);
-    if (read_double(kPlannerFields, key, it.value(), field, params)) continue;
-    if (key == "max_expansions" || key == "stall_expansions") {
-      const long long low = key == "max_expansions" ? 1 : 0;
-      const long long value = integer(it.value(), field);
-      if (value < low || value > 1000000)
-        fail(field,
-             "must be in [" + std::to_string(low) + ", 1000000], got " + std::to_string(value));
-      (key == "max_expansions" ? params.max_expansions : params.stall_expansions) =
-          static_cast<int>(value);
-    } else if (key == "gaits") {
-      params.gaits.clear();
-      const Json& gaits = array(it.value(), field);
-      for (size_t i = 0; i < gaits.size(); ++i) {
-        const std::string gait_path = item(field, i);
-        expect_object(gaits[i], gait_path, {"speed", "duration"});
-        params.gaits.push_back(
-            {number(require(gaits[i], gait_path, "speed"), child(gait_path, "speed")),
-             number(require(gaits[i], gait_path, "duration"), child(gait_path, "duration"))});
-      }
-    } else if (key == "turn_angles") {
-      params.turn_angles.clear();
-      const Json& angles = array(it.value(), field);
-      for (size_t i = 0; i < angles.size(); ++i)
-        params.turn_angles.push_back(number(angles[i], item(field, i)));
-    } else {
-      fail(field, "unknown field");
-    }
-  }
+  read_struct(json, path, params);
 }
 
 std::vector<Obstacle> read_obstacles(const Json& json) {
@@ -117,12 +153,7 @@ std::vector<Obstacle> read_obstacles(const Json& json) {
   return result;
 }
 
-Json character_to_json(const CharacterParams& params) {
-  Json json = fields_to_json(kCharacterFields, params);
-  json["left"] = fields_to_json(kFootLimitFields, params.left);
-  json["right"] = fields_to_json(kFootLimitFields, params.right);
-  return json;
-}
+Json character_to_json(const CharacterParams& params) { return struct_to_json(params); }
 
 }  // namespace detail
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "io/json_reader.hpp"
-#include "io/param_fields.hpp"
+#include "io/param_json.hpp"
 
 namespace footfall {
 

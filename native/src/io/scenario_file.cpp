@@ -5,7 +5,7 @@
 
 #include "footfall/io/steersuite.hpp"
 #include "io/json_reader.hpp"
-#include "io/param_fields.hpp"
+#include "io/param_json.hpp"
 
 namespace footfall {
 

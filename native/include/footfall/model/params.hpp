@@ -1,91 +1,171 @@
-// Footfall — the character and planner parameters. Plain structs with the
+// Footfall — the character and planner parameters: plain structs with the
 // paper's defaults (Singh et al., "Footstep Navigation for Dynamic Crowds",
-// section 5); every field names its unit and valid range, and validate()
-// enforces the ranges.
+// section 5), each followed by its table, which declares every field's name,
+// unit, valid range and meaning once (param_table.hpp). validate() enforces
+// the ranges; the files, the Python module and docs/parameters.md read the
+// same tables.
 #pragma once
 
 #include <string>
+#include <tuple>
 #include <vector>
+
+#include "footfall/model/param_table.hpp"
 
 namespace footfall {
 
 /// Limits on the steps taken by one foot. Separate limits per foot make a limp
-/// a parameter change (section 3.2).
+/// a parameter change (section 3.2). Fields: ParamTable<FootLimits>.
 struct FootLimits {
-  double min_step_duration = 0.2;  ///< Shortest step. [s] [> 0]
-  double max_step_duration = 0.8;  ///< Longest step. [s] [>= min_step_duration, <= 5]
-  double min_step_length = 0.1;    ///< Shortest COM travel (chord) over a walking step. [m] [> 0]
-  double max_step_length =
-      1.0;  ///< Longest COM travel (chord) over a walking step. [m] [>= min_step_length, <= 3]
-  double min_speed = 0.2;  ///< Slowest desired COM speed of a walking step. [m/s] [> 0]
-  double max_speed =
-      2.5;  ///< Fastest desired COM speed of a walking step. [m/s] [>= min_speed, <= 10]
+  double min_step_duration = 0.2;
+  double max_step_duration = 0.8;
+  double min_step_length = 0.1;
+  double max_step_length = 1.0;
+  double min_speed = 0.2;
+  double max_speed = 2.5;
+};
+
+template <>
+struct ParamTable<FootLimits> {
+  using S = FootLimits;
+  static constexpr const char* name = "FootLimits";
+  static constexpr auto fields = std::make_tuple(
+      param("min_step_duration", &S::min_step_duration, "s", above_up_to(0, 5), "Shortest step."),
+      param("max_step_duration", &S::max_step_duration, "s", from_field("min_step_duration", 5),
+            "Longest step."),
+      param("min_step_length", &S::min_step_length, "m", above_up_to(0, 3),
+            "Shortest COM travel (chord) over a walking step."),
+      param("max_step_length", &S::max_step_length, "m", from_field("min_step_length", 3),
+            "Longest COM travel (chord) over a walking step."),
+      param("min_speed", &S::min_speed, "m/s", above_up_to(0, 10),
+            "Slowest desired COM speed of a walking step."),
+      param("max_speed", &S::max_speed, "m/s", from_field("min_speed", 10),
+            "Fastest desired COM speed of a walking step."));
 };
 
 /// The walking character: pendulum model, energy model and collision model.
+/// Fields: ParamTable<CharacterParams>.
 struct CharacterParams {
-  double com_height = 1.0;  ///< Height of the centre of mass, the pendulum length. [m] [0.2, 3]
-  double mass = 70.0;       ///< Body mass m. [kg] (0, 500]
-  /// Fixed energy rate R (equation 3). The default puts the cheapest cost per
-  /// metre of the default gaits at the preferred speed. [J/s] [0, 1e5]
+  double com_height = 1.0;
+  double mass = 70.0;
   double energy_rate = 150.0;
-  double curvature_weight =
-      0.35;  ///< Curvature weight w (equation 5); the paper uses 0.2-0.5. [1] [0, 1]
-  double foot_offset =
-      0.1;  ///< Lateral distance d from the COM to the stance foot at rest. [m] (0, 0.5]
-  double torso_width = 0.6;      ///< Shoulder to shoulder. [m] (0, 1.5]
-  double torso_radius = 0.15;    ///< Radius of the central torso circle. [m] (0, torso_width / 2]
-  double shoulder_radius = 0.1;  ///< Radius of each shoulder circle; its outer edge is at
-                                 ///< torso_width / 2. [m] (0, torso_width / 2]
-  double foot_radius = 0.08;     ///< Radius of a planted foot's circle. [m] (0, 0.5]
-  double preferred_speed = 1.3;  ///< Speed of a normal step, used by the heuristic. [m/s] (0, 10]
-  double preferred_step_duration =
-      0.5;  ///< Duration of a normal step, used by the heuristic. [s] (0, 5]
-  /// How far the next foot may turn outward past the previous foot's inner
-  /// bound (the pi/2 of the orientation rule, section 3.2). [rad] (0, pi]
+  double curvature_weight = 0.35;
+  double foot_offset = 0.1;
+  double torso_width = 0.6;
+  double torso_radius = 0.15;
+  double shoulder_radius = 0.1;
+  double foot_radius = 0.08;
+  double preferred_speed = 1.3;
+  double preferred_step_duration = 0.5;
   double max_foot_turn = 1.5707963267948966;
-  FootLimits left;   ///< Limits on left-foot steps.
-  FootLimits right;  ///< Limits on right-foot steps.
+  FootLimits left;
+  FootLimits right;
+};
+
+template <>
+struct ParamTable<CharacterParams> {
+  using S = CharacterParams;
+  static constexpr const char* name = "CharacterParams";
+  static constexpr auto fields = std::make_tuple(
+      param("com_height", &S::com_height, "m", closed(0.2, 3),
+            "Height of the centre of mass, the pendulum length."),
+      param("mass", &S::mass, "kg", above_up_to(0, 500), "Body mass m."),
+      param("energy_rate", &S::energy_rate, "J/s", closed(0, 1e5),
+            "Fixed energy rate R (equation 3). The default puts the cheapest cost per metre of "
+            "the default gaits at the preferred speed."),
+      param("curvature_weight", &S::curvature_weight, "1", closed(0, 1),
+            "Curvature weight w (equation 5); the paper uses 0.2-0.5."),
+      param("foot_offset", &S::foot_offset, "m", above_up_to(0, 0.5),
+            "Lateral distance d from the COM to the stance foot at rest."),
+      param("torso_width", &S::torso_width, "m", above_up_to(0, 1.5), "Shoulder to shoulder."),
+      param("torso_radius", &S::torso_radius, "m", above_up_to_field(0, "torso_width", 0.5),
+            "Radius of the central torso circle."),
+      param("shoulder_radius", &S::shoulder_radius, "m",
+            above_up_to_field(0, "torso_width", 0.5),
+            "Radius of each shoulder circle; its outer edge is at torso_width / 2."),
+      param("foot_radius", &S::foot_radius, "m", above_up_to(0, 0.5),
+            "Radius of a planted foot's circle."),
+      param("preferred_speed", &S::preferred_speed, "m/s", above_up_to(0, 10),
+            "Speed of a normal step, used by the heuristic."),
+      param("preferred_step_duration", &S::preferred_step_duration, "s", above_up_to(0, 5),
+            "Duration of a normal step, used by the heuristic."),
+      param("max_foot_turn", &S::max_foot_turn, "rad", above_up_to(0, 3.141592653589793),
+            "How far the next foot may turn outward past the previous foot's inner bound (the "
+            "pi/2 of the orientation rule, section 3.2)."),
+      nested_param("left", &S::left, "Limits on left-foot steps."),
+      nested_param("right", &S::right, "Limits on right-foot steps."));
 };
 
 /// One walking gait of the discretised action space: a desired speed and a
 /// step duration, paired because the two are inversely correlated (section 4).
 struct Gait {
-  double speed = 1.3;     ///< Desired COM speed. [m/s] (0, 10]
-  double duration = 0.5;  ///< Step duration. [s] (0, 5]
+  double speed = 1.3;
+  double duration = 0.5;
+};
+
+template <>
+struct ParamTable<Gait> {
+  using S = Gait;
+  static constexpr const char* name = "Gait";
+  static constexpr auto fields =
+      std::make_tuple(param("speed", &S::speed, "m/s", above_up_to(0, 10), "Desired COM speed."),
+                      param("duration", &S::duration, "s", above_up_to(0, 5), "Step duration."));
 };
 
 /// The short-horizon best-first footstep planner (section 4).
+/// Fields: ParamTable<PlannerParams>.
 struct PlannerParams {
-  int max_expansions = 1000;  ///< Horizon: nodes expanded per search. [1] [1, 1000000]
-  /// A search that has expanded no node nearer its goal (lower h) for this
-  /// many nodes stops there, as at the horizon; 0: never. [1] [0, 1000000]
+  int max_expansions = 1000;
   int stall_expansions = 300;
-  /// Weight of h in f = g + weight * h. 1 is the paper's plain A*; the
-  /// default 1.5 leans the search toward the goal and expands 3-10 times
-  /// fewer nodes around obstacles (equation 6's h is not admissible, so this
-  /// is a preference, not a bound on the cost). [1] [1, 10]
   double heuristic_weight = 1.5;
-  /// The goal is reached when the COM is this close. [m] (0, 10], < local_goal_distance
   double goal_tolerance = 0.3;
-  /// Each search aims at most this far along the way. [m] [1, 1000]
   double local_goal_distance = 10;
-  double max_time = 300;       ///< Simulated time limit per agent. [s] (0, 100000]
-  double stop_duration = 0.5;  ///< Duration of a stop (or wait) step. [s] (0, 5]
-  /// Largest COM travel between two collision samples; circles are padded by
-  /// half of it, so a thin obstacle is never stepped through. [m] [0.005, 0.05]
+  double max_time = 300;
+  double stop_duration = 0.5;
   double collision_sample_spacing = 0.05;
-  /// A search that shortens the agent's way to its goal by less than this
-  /// gains nothing; in a crowd, 15 s without a gain means stuck. [m] (0, 10]
   double min_progress = 0.05;
-  /// Gaits tried at every expansion. Three are enough with the goal-directed
-  /// phi (section 4); more cost time, not quality. [non-empty, at most 16]
   std::vector<Gait> gaits{{0.6, 0.65}, {1.3, 0.5}, {1.6, 0.45}};
-  /// Parabola orientations tried at every expansion, as inward angles between
-  /// the incoming velocity and phi; the chord turns by twice the angle, so
-  /// values near pi/2 are almost U-turns. Small ones matter most: the
-  /// goal-directed phi covers the rest. [rad] each in (0, pi/2) [at most 32]
   std::vector<double> turn_angles{0.04, 0.15, 0.35, 0.7, 1.1, 1.4};
+};
+
+template <>
+struct ParamTable<PlannerParams> {
+  using S = PlannerParams;
+  static constexpr const char* name = "PlannerParams";
+  static constexpr auto fields = std::make_tuple(
+      param("max_expansions", &S::max_expansions, "1", closed(1, 1000000),
+            "Horizon: nodes expanded per search."),
+      param("stall_expansions", &S::stall_expansions, "1", closed(0, 1000000),
+            "A search that has expanded no node nearer its goal (lower h) for this many nodes "
+            "stops there, as at the horizon; 0: never."),
+      param("heuristic_weight", &S::heuristic_weight, "1", closed(1, 10),
+            "Weight of h in f = g + weight * h. 1 is the paper's plain A*; 1.5 leans the search "
+            "toward the goal and expands 3-10 times fewer nodes around obstacles (equation 6's "
+            "h is not admissible, so this is a preference, not a bound on the cost)."),
+      param("goal_tolerance", &S::goal_tolerance, "m",
+            and_below(above_up_to(0, 10), "local_goal_distance"),
+            "The goal is reached when the COM is this close."),
+      param("local_goal_distance", &S::local_goal_distance, "m", closed(1, 1000),
+            "Each search aims at most this far along the way."),
+      param("max_time", &S::max_time, "s", above_up_to(0, 100000),
+            "Simulated time limit per agent."),
+      param("stop_duration", &S::stop_duration, "s", above_up_to(0, 5),
+            "Duration of a stop (or wait) step."),
+      param("collision_sample_spacing", &S::collision_sample_spacing, "m", closed(0.005, 0.05),
+            "Largest COM travel between two collision samples; circles are padded by half of "
+            "it, so a thin obstacle is never stepped through."),
+      param("min_progress", &S::min_progress, "m", above_up_to(0, 10),
+            "A search that shortens the agent's way to its goal by less than this gains "
+            "nothing; in a crowd, 15 s without a gain means stuck."),
+      StructListParam<S, Gait>{"gaits", &S::gaits, 1, 16, "gaits",
+                               "Gaits tried at every expansion. Three are enough with the "
+                               "goal-directed phi (section 4); more cost time, not quality."},
+      NumberListParam<S>{"turn_angles", &S::turn_angles, 1, 32, "angles", "rad",
+                         open_range(0, 1.5707963267948966),
+                         "Parabola orientations tried at every expansion, as inward angles "
+                         "between the incoming velocity and phi; the chord turns by twice the "
+                         "angle, so values near pi/2 are almost U-turns. Small ones matter "
+                         "most: the goal-directed phi covers the rest."});
 };
 
 /// Throws std::invalid_argument naming the field (prefixed by `path`, e.g.
