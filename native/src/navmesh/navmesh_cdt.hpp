@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "footfall/model/geometry.hpp"
+#include "util/open_hash_map.hpp"
 
 namespace footfall {
 
@@ -48,62 +49,20 @@ namespace CGAL {
 /// The map from face to mark that CGAL's get_bounded_faces keeps, for our
 /// face handles. It runs for every constraint edge inserted across faces
 /// (Constrained_triangulation_plus_2 then discards what it found), and
-/// CGAL's own map allocates and fills an 18 KB table each time: a tenth of
-/// moving a box on the 10k-box scene, mostly in evicting the cache. Open
-/// addressing on the face's address, 64 slots inline.
+/// CGAL's own map allocates and fills a large table each time: ours keeps
+/// its first 64 slots inline.
 template <>
 class Unique_hash_map<footfall::CdtBase::Face_handle, bool, Handle_hash_function,
                       std::allocator<bool>> {
  public:
   using Data = bool;
-  Unique_hash_map() = default;
-  Unique_hash_map(const Unique_hash_map&) = delete;
-  Unique_hash_map& operator=(const Unique_hash_map&) = delete;
-
   /// The mark of `f` (false until set); valid until the next new face.
   bool& operator[](const footfall::CdtBase::Face_handle& f) {
-    const void* key = &*f;
-    for (std::size_t i = home(key);; i = (i + 1) & mask_) {
-      if (slots_[i].key == key) return slots_[i].mark;
-      if (slots_[i].key == nullptr) {
-        if (2 * ++size_ > mask_ + 1) {
-          grow();
-          return (*this)[f];
-        }
-        slots_[i].key = key;
-        return slots_[i].mark;
-      }
-    }
+    return *marks_.insert(&*f, false).first;
   }
 
  private:
-  struct Slot {
-    const void* key = nullptr;
-    bool mark = false;
-  };
-  std::size_t home(const void* key) const {
-    const auto bits = static_cast<std::uint64_t>(reinterpret_cast<std::uintptr_t>(key));
-    return static_cast<std::size_t>((bits * 0x9E3779B97F4A7C15ull) >> 32) & mask_;
-  }
-  void grow() {
-    std::vector<Slot> old(slots_, slots_ + mask_ + 1);
-    heap_.assign(2 * old.size(), Slot{});
-    slots_ = heap_.data();
-    mask_ = heap_.size() - 1;
-    size_ = 0;
-    for (const Slot& s : old)
-      if (s.key != nullptr)
-        for (std::size_t i = home(s.key);; i = (i + 1) & mask_)
-          if (slots_[i].key == nullptr) {
-            slots_[i] = s;
-            ++size_;
-            break;
-          }
-  }
-  std::array<Slot, 64> inline_{};
-  std::vector<Slot> heap_;
-  Slot* slots_ = inline_.data();
-  std::size_t mask_ = 63, size_ = 0;
+  footfall::util::OpenHashMap<const void*, bool, footfall::util::AddressHash, 64> marks_;
 };
 }  // namespace CGAL
 

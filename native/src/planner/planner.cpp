@@ -11,6 +11,7 @@
 #include "model/footstep_shape.hpp"
 #include "planner/validity_impl.hpp"
 #include "util/huge_page_allocator.hpp"
+#include "util/open_hash_map.hpp"
 
 namespace footfall {
 namespace {
@@ -40,55 +41,15 @@ std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, F
          static_cast<std::uint64_t>(last_foot) << 48 | 1ull << 63;
 }
 
-// Open-addressing set of state keys, reused from search to search. Each
-// search starts with a table for a typical search's keys (a few hundred) that
-// doubles if more come. Sized for the horizon instead, it was 128 KB to zero
-// for every full search, and reallocated whenever a blocked agent's shorter
-// horizon alternated with the full one. The memory is kept, never handed back.
-class KeySet {
- public:
-  void clear() {
-    used_ = kFirstSize;
-    if (slots_.size() < used_) slots_.resize(used_);
-    std::fill_n(slots_.begin(), used_, 0);
-    size_ = 0;
-  }
-  // True if `key` was not there yet.
-  bool insert(std::uint64_t key) {
-    if (2 * (size_ + 1) > used_) grow();
-    const size_t mask = used_ - 1;
-    for (size_t i = mix(key) & mask;; i = (i + 1) & mask) {
-      if (slots_[i] == key) return false;
-      if (slots_[i] == 0) {
-        slots_[i] = key;
-        ++size_;
-        return true;
-      }
-    }
-  }
-
- private:
-  static constexpr size_t kFirstSize = 2048;
-  static size_t mix(std::uint64_t key) {
+// The state keys a search has seen, kept per thread from search to search.
+struct KeyHash {
+  std::size_t operator()(std::uint64_t key) const {
     key ^= key >> 33;
     key *= 0xFF51AFD7ED558CCDull;
-    return static_cast<size_t>(key ^ (key >> 33));
+    return static_cast<std::size_t>(key ^ (key >> 33));
   }
-  void grow() {
-    old_.assign(slots_.begin(), slots_.begin() + static_cast<std::ptrdiff_t>(used_));
-    used_ *= 2;
-    if (slots_.size() < used_) slots_.resize(used_);
-    std::fill_n(slots_.begin(), used_, 0);
-    size_ = 0;
-    for (const std::uint64_t key : old_) {
-      if (key != 0) insert(key);
-    }
-  }
-  LargeVector<std::uint64_t> slots_;  ///< The first used_ are the table.
-  std::vector<std::uint64_t> old_;    ///< The keys being rehashed.
-  size_t used_ = kFirstSize;
-  size_t size_ = 0;
 };
+using KeySet = util::OpenHashMap<std::uint64_t, util::NoValue, KeyHash, 2048, HugePageAllocator>;
 
 // The search took walking agents' rests to end after their grace; nothing
 // returned may rely on that, so the steps stop before the first that runs
@@ -203,7 +164,7 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   const auto add = [&](const StepResult& next, double speed, double heading_after) {
     if (!next.valid()) return;
     if (!search.seen.insert(state_key(next.state.com, heading_after, speed,
-                                      next.state.standing(), next.step.foot))) {
+                                      next.state.standing(), next.step.foot)).second) {
       return;
     }
     search.push(Node{next.state, g + next.step.cost.total(), heuristic(next.state, goal), index,
