@@ -17,8 +17,8 @@ constexpr double kMinAhead = 1.5;
 /// tightest: kRoomyDetour times, plus kRoomyExtra. The tightest is dear and
 /// chancy for the footsteps (a side step through a gap narrower than the
 /// shoulders takes some 140 nodes, and a slot a little wider than the torso
-/// circle may pass none): a detour of up to 1.25 times plus 2 m left twice
-/// as many agents stuck among boxes (docs/footstep-model.md).
+/// circle may pass none): shorter detours leave more agents stuck among boxes
+/// (docs/footstep-model.md).
 constexpr double kRoomyDetour = 2.0;
 constexpr double kRoomyExtra = 6.0;  // [m]
 /// Room beside the shoulders, where there is room, for the body's sway. [m]
@@ -64,7 +64,7 @@ Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from,
   };
   // The tight way is no shorter than the straight line: a roomiest way that
   // is not much longer than the line needs no tight way to compare with
-  // (most ways, in the open; a third of a crowd's time went to these queries).
+  // (most ways, in the open), so most ways take one query, not two.
   PathResult roomiest = mesh->find_path({from, goal, upright + kSwayMargin, kRouteArcTolerance});
   if (roomy_enough(roomiest, way.length)) return {std::move(roomiest.points), roomiest.length};
   PathResult tight = mesh->find_path({from, goal, character.torso_radius, kRouteArcTolerance});

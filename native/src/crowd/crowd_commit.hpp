@@ -1,4 +1,4 @@
-// Footfall — committing the crowd's new plans (crowd.cpp). A new plan is
+// Footfall — committing the crowd's new plans (crowd_planner.cpp). A new plan is
 // committed only if it keeps clear of every other agent's plan, rest
 // included, seen or not; otherwise the agent waits where its rest leaves it.
 // The check against the plans of the view the search read is made on the

@@ -325,8 +325,8 @@ bool stuck(const std::vector<Walker>& walkers, std::size_t i) {
 /// roomiest way there is (way_toward()). The tightest way, with room only to
 /// side-step, passes any gap the torso's circle fits through, but the
 /// footsteps need more (their checks pad the torso, and it turns at the
-/// corners): among boxes, agents stood for good where their ways led into
-/// slots 0.37 m wide. Its next search is news (nothing_new()).
+/// corners): a slot a little wider than the torso's circle may let no step
+/// through. Its next search is news (nothing_new()).
 void take_roomy_ways(Walker& w, double t) {
   w.roomy = true;
   w.ways.clear();

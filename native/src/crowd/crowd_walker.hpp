@@ -1,4 +1,4 @@
-// Footfall — what the crowd driver (crowd.cpp) keeps of each agent, what one
+// Footfall — what the crowd driver (crowd_planner.cpp) keeps of each agent, what one
 // of its searches gives, and where everyone is at a tick; the constants that
 // tune the driver's rules, and the small questions every part of it asks.
 #pragma once
@@ -84,9 +84,8 @@ constexpr double kWishPad = 0.05;
 /// kKeepRightAhead ahead and kKeepRightBand beside that line moves its local
 /// goal up to kKeepRightShift to its right, where there is kKeepRightRoom all
 /// along the way there (not through a door). The room is a little less than
-/// a torso's width (0.6 m): with 1.5 m, those walking near a wall, the ones
-/// most in the way, never kept right, and a hall 8 m wide jammed for 3 seeds
-/// of 8 (of 30 seeds, 26 now reach 200 of 200).
+/// a torso's width (0.6 m), so that those walking near a wall, the ones most
+/// in the way, keep right too.
 constexpr double kKeepRightAhead = 30.0;  ///< [m]
 constexpr double kKeepRightBand = 2.0;    ///< [m]
 constexpr double kOncomingSpeed = 0.8;    ///< [m/s]
@@ -186,7 +185,7 @@ struct Attempt {
   FootstepState from;  ///< Where the search started.
   /// The ways it measured, from where it started and, unless the steps reach
   /// the goal, from their end: the agent's next search mostly starts at one
-  /// of them (among boxes, measuring ways took a ninth of the planning).
+  /// of them, and takes its way from there instead of measuring it anew.
   std::vector<KnownWay> ways;
 };
 

@@ -1,4 +1,4 @@
-// Footfall — how the crowd's agents make way for each other (crowd.cpp). A
+// Footfall — how the crowd's agents make way for each other (crowd_planner.cpp). A
 // blocked agent shows the agents after it (in the order of way left) that rest
 // in its way where it would go; they rest out of it. In a face-off, where no
 // one can rest ahead, those in the way of one bound against them step aside to
@@ -35,8 +35,8 @@ bool gives_way(const std::vector<Walker>& walkers, std::size_t i, const Snapshot
 /// kKeepRightShift, else by less, 0.5 m at the least, where it could stand
 /// with room all along the way there), if one it sees walks the other way
 /// ahead near that line and it has room round it; `target` otherwise. Lanes
-/// form before two blocks of agents meet: in a hall 8 m wide, two hundred
-/// walking both ways stood wall to wall in the middle without it.
+/// form before two blocks of agents meet: without it, a dense two-way hall can
+/// jam wall to wall where the flows meet.
 LocalGoal keep_right(const std::vector<Walker>& walkers, std::size_t i, LocalGoal target,
                      const std::vector<std::size_t>& seen, const Snapshot& now,
                      const FootstepPlanner& planner, const NavMesh* mesh);

@@ -1,8 +1,8 @@
 // Footfall — where to start CGAL's point location: a grid over the domain
 // keeping one mesh vertex per cell. Without a start CGAL walks from the hull,
-// past some sqrt(n) faces, so a local update of a large mesh cost more in
-// finding its place than in changing it, and a query located its start and
-// goal, and every path it measured, from afar.
+// past some sqrt(n) faces, so a local update of a large mesh would cost more
+// in finding its place than in changing it, and a query would locate its start
+// and goal, and every path it measures, from afar.
 #pragma once
 
 #include <algorithm>

@@ -305,8 +305,8 @@ void NavMeshState::remove_if_orphan(Vertex v) {
   // No constraint runs through v, so the faces around it share one winding
   // number, and so do the faces CGAL fills its hole with: found from the
   // faces across the hole's rim, which stay. (Re-deriving them from their
-  // neighbours meant visiting every face round v's neighbours, mostly
-  // faces no other part of the update touches: cache misses in a large mesh.)
+  // neighbours would visit every face round v's neighbours, mostly faces no
+  // other part of the update touches: cache misses in a large mesh.)
   const int winding = v->face()->info().winding;
   std::vector<std::pair<Face, int>> rim;  // the face across each rim edge, and that edge in it
   rim.reserve(16);                        // six on average: one allocation

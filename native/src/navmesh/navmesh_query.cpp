@@ -25,7 +25,7 @@
 #include "navmesh/face_numbers.hpp"
 #include "navmesh/navmesh_impl.hpp"
 #include "navmesh/obstacle_distance.hpp"
-#include "util/open_list.hpp"
+#include "navmesh/open_list.hpp"
 #include "util/scratch_vector.hpp"
 
 namespace footfall {
@@ -50,17 +50,14 @@ constexpr double kLengthTolerance = 0.003;
 /// relaxed length by more than this share shows that the relaxation, which
 /// prices the turns at gate ends as chords, misjudged it: a channel the
 /// search pruned for a longer relaxed length may then be shorter for the
-/// disc, so the search runs again with rivals. Most queries never need it
-/// (0.5 % of the benchmark's; 1 % is the oracle tests' allowance).
+/// disc, so the search runs again with rivals. Most queries never need it;
+/// 1 % is the oracle tests' allowance.
 constexpr double kRelaxedTrust = 0.01;
 /// The flood that tells a goal sealed off in a pocket goes on every
 /// kPocketCheckEvery expansions of the search, up to kPocketFloodStart states
 /// and one more for every kPocketFloodShare nodes expanded, and gives up
-/// after kPocketFlood states. Most pockets are small (on the room scene at
-/// r = 0.25 m, 5-20 states, where the search expands 50-250 nodes around the
-/// start); a larger share would slow the queries that have a path to find
-/// (on the 2,000-box scene a share of 1 floods 75 % as many states as the
-/// search expands).
+/// after kPocketFlood states. Most pockets are small; a larger share would
+/// slow the queries that have a path to find.
 constexpr int kPocketCheckEvery = 16;
 constexpr int kPocketFloodStart = 16;
 constexpr int kPocketFloodShare = 8;
@@ -405,8 +402,8 @@ class ChannelSearch {
 
   bool passable(const Node& node, FaceSearch& here, int exit) {
     const Face f = node.face;
-    // Tested before the corner: the edge's test costs a third of a corner's
-    // walk, and at r = 3 m on the 10k-box scene nearly half the edges fail it.
+    // Tested before the corner: the edge's test is cheaper than a corner's
+    // walk, and with a large radius many edges fail it.
     Tested& crossing = here.crossing[exit];
     if (crossing == kUntested) crossing = crossable(f, exit) ? kPasses : kFails;
     if (crossing == kFails) return false;

@@ -1,8 +1,8 @@
 // Footfall — other agents' plans sampled at the instants of the contact grid,
 // each sample computed once per search, however many candidate steps read it.
 // A search checks hundreds of candidate steps against the same few plans at
-// the same instants; sampling a plan (its COM, its feet, its circles) cost
-// most of a crowd's planning time before this cache.
+// the same instants, so each plan is sampled (its COM, its feet, its circles)
+// once per instant, not once per candidate.
 #pragma once
 
 #include <algorithm>

@@ -1,9 +1,7 @@
 // Footfall — an allocator that backs large blocks with transparent huge pages.
 // The planners' per-thread scratch (search nodes, sampled agents) grows to
 // tens of megabytes, per thread; each 4 KiB page it touches first costs a
-// page fault, and under a hypervisor a fault costs microseconds. Planning 500
-// agents among boxes took 14k faults on one thread and 23k on two; with huge
-// pages 7k and 9k, and the planning 5 % and 10 % less time.
+// page fault, and under a hypervisor a fault costs microseconds.
 // Blocks of 2 MiB and more are mapped on their own, aligned to 2 MiB and
 // marked for huge pages (Linux's "madvise" THP mode), so one fault maps 2 MiB.
 // Smaller blocks, and systems without madvise, come from the heap.

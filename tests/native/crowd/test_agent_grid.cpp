@@ -1,4 +1,4 @@
-// The crowd's neighbour grid (native/src/agent_grid.hpp): every agent within
+// The crowd's neighbour grid (native/src/crowd/agent_grid.hpp): every agent within
 // the radius comes back, in ascending order, whatever the crowd's spread.
 #include <gtest/gtest.h>
 

@@ -151,8 +151,8 @@ TEST(Crowd, AgentsFaceToFaceTurnOnTheSpotAndPart) {
 }
 
 // Twenty agents leave a room by one door 1.2 m wide: every one gets out.
-// Before yielding (one blocked asks those behind it in its way to step out
-// of it) and room at rest, three of them jammed in the door for good. The
+// Yielding (one blocked asks those behind it in its way to step out of it)
+// and room at rest keep them from jamming in the door for good. The
 // yielding, decided as plans are committed, is the same on 2 threads.
 TEST(Crowd, AnEgressThroughOneDoorClears) {
   const Scenario egress = egress_scenario(20, 3);
@@ -161,9 +161,8 @@ TEST(Crowd, AnEgressThroughOneDoorClears) {
 }
 
 // Two blocks of 100 walking through a hall 8 m wide form lanes by keeping
-// right: without keep_right() they met wall to wall and 36 of 200 reached
-// (seed 1); while only agents 1.5 m from the walls kept right, seed 4 jammed
-// with 77 of 200 reached.
+// right: without keep_right() they meet wall to wall (seed 1), and seed 4
+// jams while only agents 1.5 m from the walls keep right.
 TEST(Crowd, DenseCounterflowFormsLanes) {
   RunControl control;
   control.threads = 2;
@@ -180,11 +179,10 @@ TEST(Crowd, DenseCounterflowFormsLanes) {
 
 // Two blocks of 12 (6 abreast, 2 deep) meet head-on in a corridor 5 m wide:
 // no one can pass on its own way, so those in the way of one bound against
-// them step aside (must_make_room). Waiting instead, 5 of them stood for
-// good (19 of 24 reached); in a corridor 4 m wide with blocks of 15 (5
-// abreast, 3 deep), all 30 did. In one 3 m wide with blocks of 12 (4
-// abreast, 3 deep) the front rows have no room aside: 21 of 24 stood for
-// good until those behind them made room too (Walker::wish_makes_room).
+// them step aside (must_make_room); waiting instead, some stand for good.
+// The same in a corridor 4 m wide with blocks of 15 (5 abreast, 3 deep). In
+// one 3 m wide with blocks of 12 (4 abreast, 3 deep) the front rows have no
+// room aside: those behind them make room too (Walker::wish_makes_room).
 TEST(Crowd, BlocksMeetingHeadOnMakeRoomAndPass) {
   for (const auto& [width, rows, columns] :
        {std::array<double, 3>{5.0, 6, 2}, std::array<double, 3>{4.0, 5, 3},
@@ -213,8 +211,8 @@ TEST(Crowd, BlocksMeetingHeadOnMakeRoomAndPass) {
 
 // Seed 28 of the table-1 crowd among boxes: agent347, waiting in a gap
 // between boxes at (9.2, 16.4), counts as stuck at 31.9 s. Standing there
-// for good, it held agent206 until that one was stuck too (498 of 500
-// reached). Stuck agents now only sleep: when one within 5 m commits steps
+// for good, it would hold agent206 until that one was stuck too. Stuck agents
+// only sleep: when one within 5 m commits steps
 // that move, agent347 searches again (at 33.9 s) and walks on. Waking is
 // decided in the commits' order, so 1 thread plans the same.
 TEST(Crowd, AStuckAgentTriesAgainWhenOneNearMoves) {

@@ -376,7 +376,7 @@ TEST(NavMesh, UpdatesAnswerLikeARebuild) { check_updates_against_rebuilds(false)
 TEST(NavMesh, OverlappingUpdatesAnswerLikeARebuild) { check_updates_against_rebuilds(true); }
 
 // Four of the benchmark's queries on its 10,000 boxes at r = 3 m, once
-// answered "no path" after 300-600 ms: a portal pinched by a vertex of the
+// answered "no path": a portal pinched by a vertex of the
 // next triangle (5.987 m from the box edge, under the disc's 6 m) passed the
 // corner tests (each looks across the opposite edge only), and its channels,
 // shorter by the search's bound, pruned every one a disc can take (queries

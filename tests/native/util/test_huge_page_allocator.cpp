@@ -1,4 +1,4 @@
-// The planners' large scratch vectors (native/src/huge_page_allocator.hpp):
+// The planners' large scratch vectors (native/src/util/huge_page_allocator.hpp):
 // blocks of 2 MiB and more are mapped on their own, aligned for huge pages;
 // growing, shrinking and copying across that size keep every element.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The crowd's thread pool (native/src/workers.hpp): every job of every batch
+// The crowd's thread pool (native/src/util/workers.hpp): every job of every batch
 // runs exactly once, batches do not mix, a batch launched while another is
 // still running runs too, and a job's exception reaches the caller.
 #include <gtest/gtest.h>

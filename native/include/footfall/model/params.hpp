@@ -140,7 +140,7 @@ struct ParamTable<PlannerParams> {
             "stops there, as at the horizon; 0: never."),
       param("heuristic_weight", &S::heuristic_weight, "1", closed(1, 10),
             "Weight of h in f = g + weight * h. 1 is the paper's plain A*; 1.5 leans the search "
-            "toward the goal and expands 3-10 times fewer nodes around obstacles (equation 6's "
+            "toward the goal and expands far fewer nodes around obstacles (equation 6's "
             "h is not admissible, so this is a preference, not a bound on the cost)."),
       param("goal_tolerance", &S::goal_tolerance, "m",
             and_below(above_up_to(0, 10), "local_goal_distance"),

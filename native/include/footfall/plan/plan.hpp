@@ -83,8 +83,8 @@ double circle_reach(const AgentPlan& plan, const CharacterParams& character, dou
 /// top_com_speed, circle_reach and a box round the COM path of one plan,
 /// from any time on, found in O(log steps): kept per step as maxima over the
 /// steps from there on. A crowd checks every plan against dozens of others
-/// at every commit and search; scanning each plan's steps for these cost more
-/// than the checks they skip. A copy of what it needs: rebuild it whenever
+/// at every commit and search; scanning each plan's steps for these would cost
+/// more than the checks they skip. A copy of what it needs: rebuild it whenever
 /// the plan changes.
 class PlanBounds {
  public:

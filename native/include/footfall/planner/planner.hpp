@@ -43,8 +43,9 @@ struct SearchResult {
   /// kPartial: the horizon was reached first and `footsteps` lead to the
   /// closed node with the best heuristic among those the character can come
   /// to rest from, outside the keep-out discs and free to set off again where
-  /// it rests (free_to_set_off). A standing start takes only a node nearer the
-  /// goal, unless it stands in a keep-out disc; with none, a single wait step.
+  /// it rests (ValidityChecker::free_to_set_off). A standing start takes only
+  /// a node nearer the goal, unless it stands in a keep-out disc; with none, a
+  /// single wait step.
   /// Also kPartial: steps cut before a rest taken for good (rest_grace);
   /// where the character can rest then is for the caller to find.
   /// kNoPath: not even that is possible. kInvalidStart: the start collides.

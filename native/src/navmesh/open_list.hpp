@@ -1,9 +1,8 @@
 // Footfall — the path search's open list: (bound, node) entries, the least
 // first, ties by the node's number. The least entry is kept beside a binary
 // heap: the node a search expands next is often a child it has just made
-// (its weighted bound falls as it heads for the goal; 43-72 % of the nodes
-// expanded at r = 0.25 m on the box scenes, 10 % at r = 3 m), and such a
-// child then never enters the heap. Entries come out in exactly the order of
+// (its weighted bound falls as it heads for the goal), and such a child then
+// never enters the heap. Entries come out in exactly the order of
 // a plain priority queue.
 #pragma once
 
