@@ -26,7 +26,11 @@ inline double outward_sign(Foot foot) { return foot == Foot::kLeft ? 1.0 : -1.0;
 /// "left" or "right".
 const char* to_string(Foot foot);
 
-/// What a step does.
+/// What a step does with the feet and the centre of mass (the footstep model).
+/// Its behaviour (Behavior) is another axis: the posture of the path section
+/// the step belongs to, which the animation plays. A lateral step is always
+/// of a side-step section; a side-step section may also hold the stop that
+/// ends it, and a walk may belong to an arms-in section.
 enum class StepKind {
   kWalk,  ///< A parabolic step (equation 1).
   kStop,  ///< The special stop action: the COM comes to rest, the feet side by side.
@@ -44,8 +48,10 @@ constexpr double kMaxSideStepSkew = 0.39269908169872414;
 /// "walk", "stop" or "side_step".
 const char* to_string(StepKind kind);
 
-/// The behaviour a step belongs to; the planner of this model emits kWalk, and
-/// kSideStep for its side steps.
+/// The behaviour of the path section a step belongs to (Juarez-Perez and
+/// Kallmann): regular walking, walking with the arms held in, lateral
+/// side-stepping. Today the footstep planner gives kWalk, and kSideStep to
+/// its lateral steps (StepKind::kSideStep); kArmsIn comes only from plan files.
 enum class Behavior { kWalk, kArmsIn, kSideStep };
 /// "walk", "arms_in" or "side_step".
 const char* to_string(Behavior behavior);
