@@ -13,6 +13,9 @@ void bind_planner(py::module_& m) {
   py::class_<Obstacle>(m, "Obstacle", "A polygon [m] extruded to a height [m].")
       .def(py::init<>())
       .def(py::init([](std::vector<Vec2> polygon, double height) {
+             if (polygon.size() < 3)
+               throw std::invalid_argument("Obstacle: polygon needs at least 3 points, got " +
+                                           std::to_string(polygon.size()));
              return Obstacle{std::move(polygon), height};
            }),
            py::arg("polygon"), py::arg("height") = 2.0)

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cctype>
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -23,8 +26,12 @@
 #include "footfall/plan/metrics.hpp"
 #include "footfall/plan/plan.hpp"
 #include "footfall/scenes/scenes.hpp"
+#include "util/pending_files.hpp"
+#include "util/quoted.hpp"
 
 namespace {
+
+using footfall::detail::user_text;
 
 constexpr int kExitBadInput = 2;
 
@@ -140,6 +147,17 @@ struct Options {
   int threads = 1;
 };
 
+// A whole number from lo to hi, or a usage error naming the flag.
+int parse_whole(const std::string& flag, const std::string& text, int lo, int hi) {
+  const bool digits = !text.empty() && text.size() <= 9 &&
+                      text.find_first_not_of("0123456789") == std::string::npos;
+  const int n = digits ? std::atoi(text.c_str()) : -1;
+  if (n < lo || n > hi)
+    throw UsageError(flag + ": expected a whole number from " + std::to_string(lo) + " to " +
+                     std::to_string(hi) + ", got " + user_text(text));
+  return n;
+}
+
 // Reads the options after the verb; returns the positional arguments.
 std::vector<std::string> parse_arguments(int argc, char** argv, Options& options) {
   std::vector<std::string> positional;
@@ -150,13 +168,9 @@ std::vector<std::string> parse_arguments(int argc, char** argv, Options& options
       options.output = argv[++i];
     } else if (arg == "--threads") {
       if (i + 1 >= argc) throw UsageError("--threads needs a number");
-      const std::string text = argv[++i];
-      const int n = std::atoi(text.c_str());
-      if (text.find_first_not_of("0123456789") != std::string::npos || n < 1 || n > 64)
-        throw UsageError("--threads: expected a whole number from 1 to 64, got '" + text + "'");
-      options.threads = n;
+      options.threads = parse_whole(arg, argv[++i], 1, 64);
     } else if (!arg.empty() && arg[0] == '-') {
-      throw UsageError("unknown option " + arg);
+      throw UsageError("unknown option " + user_text(arg));
     } else {
       positional.push_back(arg);
     }
@@ -164,24 +178,26 @@ std::vector<std::string> parse_arguments(int argc, char** argv, Options& options
   return positional;
 }
 
-// A finite number, or a usage error naming the flag.
+// A finite number, or a usage error naming the flag. (strtod, not stod: a
+// number too small for a normal double is still a number.)
 double parse_number(const std::string& flag, const std::string& text) {
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(value))
-    throw UsageError(flag + ": expected a finite number, got '" + text + "'");
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  const bool whole = !text.empty() && !std::isspace(static_cast<unsigned char>(text[0])) &&
+                     end == text.c_str() + text.size();
+  if (!whole || !std::isfinite(value))
+    throw UsageError(flag + ": expected a finite number, got " + user_text(text));
   return value;
 }
 
 footfall::Vec2 parse_point(const std::string& flag, const std::string& text) {
   const std::size_t comma = text.find(',');
-  if (comma == std::string::npos) throw UsageError(flag + ": expected X,Y, got '" + text + "'");
-  return {parse_number(flag, text.substr(0, comma)), parse_number(flag, text.substr(comma + 1))};
+  if (comma == std::string::npos) throw UsageError(flag + ": expected X,Y, got " + user_text(text));
+  const footfall::Vec2 point{parse_number(flag, text.substr(0, comma)),
+                             parse_number(flag, text.substr(comma + 1))};
+  if (!footfall::in_world(point))
+    throw UsageError(flag + ": must be within 1e9 m of the origin, got " + user_text(text));
+  return point;
 }
 
 // footfall path SCENARIO --from X,Y --to X,Y --radius R
@@ -200,9 +216,10 @@ int print_path(int argc, char** argv) {
       to = true;
     } else if (arg == "--radius" && has_value) {
       query.radius = parse_number(arg, argv[++i]);
+      if (query.radius < 0) throw UsageError("--radius: must be >= 0, got " + user_text(argv[i]));
       radius = true;
     } else if (!arg.empty() && arg[0] == '-') {
-      throw UsageError("path: unknown option or missing value: " + arg);
+      throw UsageError("path: unknown option or missing value: " + user_text(arg));
     } else if (scenario.empty()) {
       scenario = arg;
     } else {
@@ -211,7 +228,6 @@ int print_path(int argc, char** argv) {
   }
   if (scenario.empty() || !from || !to || !radius)
     throw UsageError("path needs SCENARIO, --from X,Y, --to X,Y and --radius R");
-  if (query.radius < 0) throw UsageError("--radius must be >= 0");
   const footfall::NavMesh mesh = footfall::navmesh_of(footfall::load_scenario_file(scenario));
   std::cout << footfall::to_json(mesh.find_path(query)) << "\n";
   return 0;
@@ -255,16 +271,15 @@ int run(int argc, char** argv) {
     int repeat = 0, threads = 1;  // repeat 0: each kind's default
     bool crowds = false;
     for (int i = 2; i < argc; ++i) {
-      if (std::strcmp(argv[i], "--repeat") == 0 && i + 1 < argc) {
-        repeat = std::atoi(argv[++i]);
-        if (repeat < 1) throw UsageError("--repeat needs a positive number");
-      } else if (std::strcmp(argv[i], "--threads") == 0 && i + 1 < argc) {
-        threads = std::atoi(argv[++i]);
-        if (threads < 1 || threads > 64) throw UsageError("--threads needs a number from 1 to 64");
-      } else if (std::strcmp(argv[i], "--crowds") == 0) {
+      const std::string arg = argv[i];
+      if (arg == "--repeat" && i + 1 < argc) {
+        repeat = parse_whole(arg, argv[++i], 1, 1000000);
+      } else if (arg == "--threads" && i + 1 < argc) {
+        threads = parse_whole(arg, argv[++i], 1, 64);
+      } else if (arg == "--crowds") {
         crowds = true;
       } else {
-        throw UsageError(std::string("unknown option ") + argv[i]);
+        throw UsageError("unknown option or missing value: " + user_text(arg));
       }
     }
     if (crowds)
@@ -273,16 +288,25 @@ int run(int argc, char** argv) {
       footfall::tools::run_bench(repeat > 0 ? repeat : 20, std::cout);
     return 0;
   }
-  throw UsageError("unknown command " + verb);
+  throw UsageError("unknown command " + user_text(verb));
 }
 
 }  // namespace
 
+// Stopped while writing a plan: no half-written file is left behind.
+extern "C" void remove_pending_and_stop(int signal_number) {
+  footfall::detail::remove_pending_files();
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+}
+
 int main(int argc, char** argv) {
+  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP})
+    std::signal(signal_number, remove_pending_and_stop);
   try {
     return run(argc, argv);
   } catch (const UsageError& error) {
-    std::cerr << "footfall: " << error.what() << "\n" << kUsage;
+    std::cerr << "footfall: " << error.what() << " (footfall --help shows the usage)\n";
     return kExitBadInput;
   } catch (const std::invalid_argument& error) {
     std::cerr << "footfall: " << error.what() << "\n";

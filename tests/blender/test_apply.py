@@ -376,7 +376,7 @@ def test_failures_leave_the_scene_as_it_was():
     bad = TMP / "bad-plan.json"
     bad.write_text(path.read_text().replace('"foot": "left"', '"foot": "middle"', 1))
     before = inventory()
-    expect_error(bpy.ops.footfall.apply, 'footsteps[0].foot: "middle" is not one of', plan_filepath=str(bad))
+    expect_error(bpy.ops.footfall.apply, "footsteps[0].foot: 'middle' is not one of", plan_filepath=str(bad))
     check(inventory() == before, "a failed apply changed the scene")
 
 

@@ -298,7 +298,7 @@ def test_errors_leave_the_scene_as_it_was():
 
     example = str(STEERSUITE / "EXAMPLE.xml")  # a goal type Footfall does not follow
     message = operator_error(bpy.ops.footfall.load_scenario, filepath=example)
-    check("agent 'Agent A' (agent[4]): goal type fleeDynamicTarget is not supported" in message, message)
+    check("agent 'Agent A' (agent[4]): goal type 'fleeDynamicTarget' is not supported" in message, message)
     check(inventory() == before, "a refused SteerSuite case changed the scene")
 
     message = operator_error(bpy.ops.footfall.load_scenario, filepath=good)

@@ -1,7 +1,9 @@
 """The footfall command line: plan, demo, bench, and bad input."""
 
 import json
+import pathlib
 import subprocess
+import time
 
 import pytest
 
@@ -41,6 +43,22 @@ BAD = {
         "agents[0].position: the standing agent overlaps obstacles[0]",
     ),
     "unknown.json": (scenario_json(planner={"depth": 3}), "planner.depth: unknown field"),
+    # Too large for a double: named like NaN, not the JSON library's own words.
+    "overflow.json": (
+        scenario_json(agents=[{"position": [0, 0], "goals": [[1, 1]]}]).replace("[0, 0]", "[1e400, 0]"),
+        "agents[0].position[0]: must be a finite number, got 1e400",
+    ),
+    "digits.json": (
+        scenario_json(agents=[{"position": [0, 0], "goals": [[1, 1]]}]).replace("[0, 0]", "[" + "9" * 400 + ", 0]"),
+        "agents[0].position[0]: must be a finite number, got 99999999999999999999...",
+    ),
+    # What the file holds is quoted and escaped: it cannot add a line.
+    "key.json": (scenario_json(planner={"de\npth\u001b[31m": 3}), "planner.'de\\npth\\x1b[31m': unknown field"),
+    "names.json": (
+        scenario_json(agents=[{"name": "a\nfootfall: ok", "position": [0, 0], "goals": [[1, 1]]},
+                              {"name": "a\nfootfall: ok", "position": [3, 0], "goals": [[4, 1]]}]),
+        "agents[1].name: 'a\\nfootfall: ok' is used twice",
+    ),
 }
 
 
@@ -65,6 +83,68 @@ def test_usage_errors_exit_2(cli):
     assert run(cli, "fly").returncode == 2
     assert run(cli, "bench", "--crowds", "--repeat", "0").returncode == 2
     assert run(cli, "--help").returncode == 0
+
+
+@pytest.mark.parametrize("args, message", [
+    (["plan", "scene.json"], "plan needs -o PLAN"),
+    (["bench", "--repeat", "1abc"], "--repeat: expected a whole number from 1 to 1000000, got '1abc'"),
+    (["plan", "s.json", "-o", "p.json", "--threads", "99"], "--threads: expected a whole number from 1 to 64, got '99'"),
+    (["path", "s.json", "--from", "0,0", "--to", "1e10,0", "--radius", "0.3"],
+     "--to: must be within 1e9 m of the origin, got '1e10,0'"),
+    (["path", "s.json", "--from", "0,0", "--to", "1,0", "--radius", "-1"], "--radius: must be >= 0, got '-1'"),
+    (["pl\x1b[31man\nfootfall: ok"], "unknown command 'pl\\x1b[31man\\nfootfall: ok'"),
+])
+def test_a_usage_error_is_one_line_that_names_the_flag_and_value(cli, tmp_path, args, message):
+    result = run(cli, *args, cwd=tmp_path)
+    assert result.returncode == 2
+    assert result.stderr.splitlines() == [f"footfall: {message} (footfall --help shows the usage)"]
+
+
+def test_a_radius_too_small_for_a_normal_double_is_still_a_number(cli, tmp_path):
+    scenario = tmp_path / "empty.json"
+    scenario.write_text(scenario_json())
+    result = run(cli, "path", str(scenario), "--from", "0,0", "--to", "1,0", "--radius", "1e-320")
+    assert result.returncode == 0, result.stderr
+    assert json.loads(result.stdout)["status"] == "found"
+
+
+def test_two_runs_writing_one_plan_at_once_both_succeed(cli, tmp_path):
+    scenario = tmp_path / "walk.json"
+    scenario.write_text(scenario_json(agents=[{"name": "ann", "position": [0, 0], "goals": [[30, 0]]}]))
+    out = tmp_path / "plan.json"
+    for _ in range(5):
+        runs = [subprocess.Popen([cli, "plan", str(scenario), "-o", str(out)], stdout=subprocess.DEVNULL,
+                                 stderr=subprocess.PIPE, text=True) for _ in range(2)]
+        for process in runs:
+            assert process.wait(timeout=120) == 0, process.stderr.read()
+        assert json.loads(out.read_text())["agents"][0]["status"] == "reached"
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["plan.json", "walk.json"]
+
+
+def test_a_temporary_left_by_a_stopped_run_is_removed(cli, tmp_path):
+    scenario = tmp_path / "walk.json"
+    scenario.write_text(scenario_json(agents=[{"name": "ann", "position": [0, 0], "goals": [[3, 0]]}]))
+    stale = tmp_path / ".plan.json.999999999-0.partial"  # no process has that number
+    stale.write_text("{half a pla")
+    mine = tmp_path / ".other.json.999999999-0.partial"  # another plan's: not ours to remove
+    mine.write_text("{")
+    assert run(cli, "plan", str(scenario), "-o", str(tmp_path / "plan.json")).returncode == 0
+    assert not stale.exists() and mine.exists()
+
+
+def test_a_stopped_run_leaves_no_half_written_plan(cli, tmp_path):
+    """SIGTERM at any moment of a run that plans and writes a large plan: no
+    temporary stays behind, and the plan is there whole or not at all."""
+    out = tmp_path / "plan.json"
+    case = pathlib.Path(__file__).resolve().parents[1] / "data" / "steersuite" / "hallway-two-way.xml"
+    for delay in (0.3, 1.0, 2.0, 3.0):
+        process = subprocess.Popen([cli, "plan", str(case), "-o", str(out)], stdout=subprocess.DEVNULL)
+        time.sleep(delay)
+        process.terminate()
+        process.wait(timeout=120)
+        assert [path.name for path in tmp_path.iterdir() if path.name != "plan.json"] == []
+        if out.exists():
+            assert json.loads(out.read_text())["format"] == "footfall-plan"
 
 
 def test_bench_prints_every_workload(cli):

@@ -53,6 +53,24 @@ def test_bad_scenarios_raise_value_error_naming_the_field(ff, parts, message):
     assert str(error.value) == "scene.json: " + message
 
 
+def test_a_number_too_large_for_a_double_is_a_value_error_naming_the_field(ff):
+    text = scenario_json(agents=[{"position": [0, 0], "goals": [[1, 1]]}]).replace("[0, 0]", "[0, -2e308]")
+    with pytest.raises(ValueError, match=r"^scene.json: agents\[0\].position\[1\]: must be a finite number, got -2e308$"):
+        ff.parse_scenario(text, "scene.json")
+
+
+def test_an_obstacle_of_fewer_than_three_points_is_refused(ff):
+    with pytest.raises(ValueError, match="polygon needs at least 3 points, got 2"):
+        ff.Obstacle([(0, 0), (1, 0)])
+
+
+def test_a_plan_path_with_a_nul_byte_is_refused(ff, tmp_path):
+    plan = ff.plan_scenario(ff.demo_scenario())
+    with pytest.raises(ValueError, match="a file name cannot hold a NUL byte"):
+        ff.write_plan_file(plan, str(tmp_path / "plan.json") + "\0.txt")
+    assert not list(tmp_path.iterdir())
+
+
 def test_malformed_json_names_the_position(ff):
     with pytest.raises(ValueError, match=r"^scene.json: not valid JSON: .*line 1, column \d+"):
         ff.parse_scenario('{"format": "footfall-scenario",', "scene.json")

@@ -69,7 +69,7 @@ def test_path_command_prints_json(cli, tmp_path):
 @pytest.mark.parametrize("args, message", [
     (["--from", "1,x", "--to", "9,5", "--radius", "0.4"], "--from: expected a finite number"),
     (["--from", "1,5", "--to", "9,5"], "path needs SCENARIO"),
-    (["--from", "1,5", "--to", "9,5", "--radius", "-1"], "--radius must be >= 0"),
+    (["--from", "1,5", "--to", "9,5", "--radius", "-1"], "--radius: must be >= 0"),
 ])
 def test_path_command_bad_input(cli, tmp_path, args, message):
     scenario = tmp_path / "gap.json"

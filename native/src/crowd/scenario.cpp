@@ -8,12 +8,14 @@
 #include "footfall/model/footstep.hpp"
 #include "footfall/planner/planner.hpp"
 #include "util/field_path.hpp"
+#include "util/quoted.hpp"
 
 namespace footfall {
 
 using detail::child;
 using detail::fail;
 using detail::item;
+using detail::user_text;
 
 void validate(const Scenario& scenario) {
   validate(scenario.character, "character");
@@ -26,7 +28,7 @@ void validate(const Scenario& scenario) {
     const std::string path = item("agents", i);
     if (agent.name.empty()) fail(child(path, "name"), "must not be empty");
     if (!names.insert(agent.name).second)
-      fail(child(path, "name"), "\"" + agent.name + "\" is used twice");
+      fail(child(path, "name"), user_text(agent.name) + " is used twice");
     if (!in_world(agent.position))
       fail(child(path, "position"), "must be finite and within 1e9 m of the origin");
     if (!std::isfinite(agent.facing)) fail(child(path, "facing"), "must be finite");

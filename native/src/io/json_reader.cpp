@@ -1,20 +1,46 @@
 #include "io/json_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
+#include "util/quoted.hpp"
+
 namespace footfall::detail {
 
 namespace {
 
 // Python's json module writes NaN, Infinity and -Infinity as bare tokens, which
-// JSON forbids. They are turned into marker strings so that number() can name
-// the field that holds them.
+// JSON forbids, and a number too large for a double (1e400) stops the JSON
+// parser with no field to name. Both are turned into marker strings so that
+// number() can name the field that holds them.
 constexpr const char* kNonFiniteMarker = "\x01non-finite:";
+
+// The length of the JSON number at text[i] (0 if none starts there), and
+// whether it is too large for a double.
+std::pair<size_t, bool> number_at(const std::string& text, size_t i) {
+  const char c = text[i];
+  if (c != '-' && (c < '0' || c > '9')) return {0, false};
+  size_t n = 0;
+  bool exponent = false;
+  for (; i + n < text.size() && std::strchr("+-0123456789.eE", text[i + n]) != nullptr; ++n)
+    exponent = exponent || text[i + n] == 'e' || text[i + n] == 'E';
+  // Without an exponent, only 309 digits or more overflow: most numbers need no strtod.
+  if (!exponent && n < 309) return {n, false};
+  return {n, std::isinf(std::strtod(text.c_str() + i, nullptr))};
+}
+
+// A marker for `token` as written, cut short if long (a 400-digit number).
+std::string marker_of(const std::string& token) {
+  const std::string shown = token.size() > 24 ? token.substr(0, 20) + "..." : token;
+  return std::string("\"") + "\\u0001non-finite:" + shown + "\"";
+}
 
 // Returns the text with the tokens replaced; `shifts` gets, for each
 // replacement, where it ends in the new text and how many characters it added.
@@ -35,19 +61,25 @@ std::string mark_non_finite(const std::string& text,
       continue;
     }
     if (c == '"') in_string = true;
-    bool replaced = false;
+    size_t n = 0;
     for (const char* token : {"NaN", "Infinity", "-Infinity"}) {
-      const size_t n = std::char_traits<char>::length(token);
-      if (text.compare(i, n, token) == 0) {
-        const std::string marker = std::string("\"") + "\\u0001non-finite:" + token + "\"";
-        out += marker;
-        shifts.emplace_back(out.size(), marker.size() - n);
-        i += n - 1;
-        replaced = true;
-        break;
-      }
+      if (text.compare(i, std::char_traits<char>::length(token), token) == 0)
+        n = std::char_traits<char>::length(token);
     }
-    if (!replaced) out += c;
+    if (n == 0) {
+      const auto [length, too_large] = number_at(text, i);
+      if (!too_large) {
+        // Not a marker: the number is copied whole (its digits cannot start a token).
+        out.append(text, i, std::max<size_t>(length, 1));
+        i += std::max<size_t>(length, 1) - 1;
+        continue;
+      }
+      n = length;
+    }
+    const std::string marker = marker_of(text.substr(i, n));
+    out += marker;
+    shifts.emplace_back(out.size(), marker.size() - n);
+    i += n - 1;
   }
   return out;
 }
@@ -169,7 +201,7 @@ void expect_header(const Json& root, const char* format, int version) {
   if (!root.is_object()) fail("(top level)", "expected an object, got " + type_name(root));
   const std::string found = string(require(root, "", "format"), "format");
   if (found != format)
-    fail("format", std::string("expected \"") + format + "\", got \"" + found + "\"");
+    fail("format", std::string("expected \"") + format + "\", got " + user_text(found));
   const long long v = integer(require(root, "", "version"), "version");
   if (v != version) {
     fail("version", "unsupported version " + std::to_string(v) + " (this Footfall reads version " +

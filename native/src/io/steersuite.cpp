@@ -13,6 +13,7 @@
 #include "footfall/planner/planner.hpp"
 #include "io/json_reader.hpp"
 #include "util/seeded_random.hpp"
+#include "util/quoted.hpp"
 
 namespace footfall {
 namespace {
@@ -21,6 +22,7 @@ constexpr int kCircleSides = 16;
 constexpr int kPlacementTries = 10000;
 
 using detail::fail;
+using detail::user_text;
 
 // A SteerSuite ground point (x, z) in Footfall's frame.
 Vec2 ground(double x, double z) { return {x, -z}; }
@@ -83,7 +85,7 @@ class Reader {
     const double value = std::strtod(text.c_str(), &end);
     while (end != nullptr && *end != '\0' && std::isspace(static_cast<unsigned char>(*end))) ++end;
     if (text.empty() || end == nullptr || *end != '\0')
-      fail(where, "expected a number, got \"" + text + "\"");
+      fail(where, "expected a number, got " + user_text(text));
     if (!std::isfinite(value)) fail(where, "must be a finite number");
     return value;
   }
@@ -185,7 +187,7 @@ class Reader {
     agent.name = region ? where + "-" + std::to_string(number_in)
                         : std::string(node.child("name").text().get());
     if (agent.name.empty()) agent.name = "agent" + std::to_string(scenario_.agents.size());
-    const std::string who = "agent '" + agent.name + "' (" + where + ")";
+    const std::string who = "agent " + user_text(agent.name) + " (" + where + ")";
     const double radius =
         initial.child("radius") ? number(initial.child("radius"), who + ": radius") : 0.5;
     // The facing first: where an agent fits depends on how its shoulders turn.
@@ -210,7 +212,7 @@ class Reader {
     for (const pugi::xml_node& goal : node.child("goalSequence").children()) {
       const std::string type = goal.name();
       if (type != "seekStaticTarget")
-        fail(who, "goal type " + type + " is not supported (only seekStaticTarget)");
+        fail(who, "goal type " + user_text(type) + " is not supported (only seekStaticTarget)");
       const pugi::xml_node target = goal.child("targetLocation");
       if (is_random(goal) || is_random(target)) {
         Vec2 point_in;

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "util/quoted.hpp"
+
 namespace footfall::detail {
 
 /// Throws std::invalid_argument "PATH: MESSAGE".
@@ -13,9 +15,14 @@ namespace footfall::detail {
   throw std::invalid_argument(path + ": " + message);
 }
 
-/// "path.key", or "key" at the top.
+/// "path.key", or "key" at the top; a key that is not a plain name (letters,
+/// digits, '_') is quoted, so that what a file holds cannot break the message.
 inline std::string child(const std::string& path, const std::string& key) {
-  return path.empty() ? key : path + "." + key;
+  const bool plain = !key.empty() && key.size() <= 80 &&
+                     key.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                           "0123456789_") == std::string::npos;
+  const std::string shown = plain ? key : user_text(key);
+  return path.empty() ? shown : path + "." + shown;
 }
 
 /// "path[index]".

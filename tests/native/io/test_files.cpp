@@ -94,7 +94,7 @@ TEST(ScenarioFile, BadInputIsNamedByFileAndField) {
   EXPECT_EQ(error_of(scenario_text(R"("agents": [{"position": [0, 0]}])")),
             "scene.json: agents[0].goals: missing");
   EXPECT_EQ(error_of(R"({"format": "footfall-plan", "version": 1})"),
-            "scene.json: format: expected \"footfall-scenario\", got \"footfall-plan\"");
+            "scene.json: format: expected \"footfall-scenario\", got 'footfall-plan'");
   EXPECT_EQ(error_of(R"({"format": "footfall-scenario", "version": 2})"),
             "scene.json: version: unsupported version 2 (this Footfall reads version 1)");
   EXPECT_EQ(error_of(scenario_text(R"("agents": {})")),
@@ -170,7 +170,7 @@ TEST(PlanFile, BadPlansAreNamedByField) {
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(),
-                 "p.json: agents[0].status: \"lost\" is not one of \"reached\", \"partial\"");
+                 "p.json: agents[0].status: 'lost' is not one of \"reached\", \"partial\"");
   }
 }
 

@@ -82,7 +82,7 @@ TEST(SteerSuite, EveryCaseLoadsOrIsRefusedByName) {
         ADD_FAILURE() << "no error";
       } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find(
-                      "agent 'Agent A' (agent[4]): goal type fleeDynamicTarget is not supported"),
+                      "agent 'Agent A' (agent[4]): goal type 'fleeDynamicTarget' is not supported"),
                   std::string::npos)
             << e.what();
       }
@@ -126,14 +126,14 @@ TEST(SteerSuite, BadInputIsNamed) {
   bad.replace(bad.find("<x>-10</x>"), 10, "<x>abc</x>");
   EXPECT_EQ(error_of(test_case(bad)),
             "case.xml: agent 'A' (agent[0]): initialConditions.position.x: expected a number, got "
-            "\"abc\"");
+            "'abc'");
   EXPECT_EQ(error_of(test_case("<sphere/>")),
             "case.xml: sphere[0]: not an element of a SteerSuite test case");
   std::string flee = kAgent;
   flee.replace(flee.find("seekStaticTarget"), 16, "seekDynamicTarget");
   flee.replace(flee.rfind("seekStaticTarget"), 16, "seekDynamicTarget");
   EXPECT_EQ(error_of(test_case(flee)),
-            "case.xml: agent 'A' (agent[0]): goal type seekDynamicTarget is not supported (only "
+            "case.xml: agent 'A' (agent[0]): goal type 'seekDynamicTarget' is not supported (only "
             "seekStaticTarget)");
 }
 

@@ -14,8 +14,11 @@ std::string plan_to_json(const Plan& plan);
 /// std::invalid_argument: "SOURCE: FIELD.PATH: what is wrong".
 Plan parse_plan(const std::string& text, const std::string& source = "<string>");
 
-/// Writes the plan file atomically: to a temporary file beside `path`, then
-/// renamed, so a failure leaves no half-written file. Throws footfall::Error.
+/// Writes the plan file atomically: to a temporary file beside `path`
+/// (".NAME.<pid>-<n>.partial", unique to the write), then renamed, so a
+/// failure leaves no half-written file and two writers of one path do not
+/// collide. Temporaries that stopped runs left are removed first. A NUL byte
+/// in `path` is std::invalid_argument; other failures footfall::Error.
 void write_plan_file(const Plan& plan, const std::string& path);
 
 /// Reads a plan file (errors as parse_plan).
