@@ -177,6 +177,37 @@ def test_measure_plan(ff):
         ff.measure_plan(ff.plan_scenario(ff.demo_scenario()), 0.0)
 
 
+@pytest.mark.parametrize("rate", [1e7, 1e300, float("inf")])
+def test_measure_plan_refuses_a_rate_that_would_run_for_minutes(ff, rate):
+    with pytest.raises(ValueError, match=r"^rate: must be in \(0, 1000\] Hz"):
+        ff.measure_plan(ff.plan_scenario(ff.demo_scenario()), rate)
+
+
+@pytest.mark.parametrize("time", [1e8, 2e9, -1.0])
+def test_a_plan_file_time_out_of_bounds_is_refused_by_field(ff, tmp_path, time):
+    path = tmp_path / "plan.json"
+    ff.write_plan_file(ff.plan_scenario(ff.demo_scenario()), str(path))
+    plan = json.loads(path.read_text())
+    last = plan["agents"][0]["footsteps"][-1]
+    if time > 0:
+        last["end_time"] = time
+        field = "end_time"
+    else:
+        plan["agents"][0]["footsteps"][0]["start_time"] = time
+        field = "start_time"
+    path.write_text(json.dumps(plan))
+    with pytest.raises(ValueError, match=rf"footsteps\[\d+\]\.{field}: must be in \[0, 200000\] s"):
+        ff.load_plan(str(path))
+
+
+def test_a_scene_at_the_edge_of_the_world_has_a_navigation_mesh(ff):
+    text = scenario_json(
+        obstacles=[{"polygon": [[999999990, -1], [999999991, -1], [999999991, 1], [999999990, 1]]}],
+        agents=[{"position": [999999985, 0], "goals": [[999999999.5, 0]]}])
+    mesh = ff.navmesh_of(ff.parse_scenario(text))
+    assert mesh.find_path((999999985, 0), (999999999.5, 0), 0.3)["status"] == "found"
+
+
 def test_search_keeps_clear_of_other_plans(ff):
     character = ff.CharacterParams()
     planner = ff.FootstepPlanner(character, ff.PlannerParams(), ff.ObstacleMap([]))

@@ -86,7 +86,10 @@ NavMesh navmesh_of(const Scenario& scenario, double margin) {
     grow(a.position);
     for (Vec2 g : a.goals) grow(g);
   }
-  NavMesh mesh(lo - Vec2{margin, margin}, hi + Vec2{margin, margin});
+  // The margin stops at the world's edge: everything lies within it already.
+  const auto inside = [](double v) { return std::clamp(v, -kMaxCoordinate, kMaxCoordinate); };
+  NavMesh mesh({inside(lo.x - margin), inside(lo.y - margin)},
+               {inside(hi.x + margin), inside(hi.y + margin)});
   for (std::size_t i = 0; i < scenario.obstacles.size(); ++i)
     mesh.add_polygon(scenario.obstacles[i].polygon, "obstacles[" + std::to_string(i) + "]");
   return mesh;

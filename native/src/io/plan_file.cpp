@@ -132,6 +132,9 @@ Footstep read_footstep(const Json& json, const std::string& path) {
   step.start_time = number(field("start_time"), child(path, "start_time"));
   step.end_time = number(field("end_time"), child(path, "end_time"));
   if (!(step.end_time > step.start_time)) fail(child(path, "end_time"), "must be after start_time");
+  for (const auto& [key, time] : {std::pair{"start_time", step.start_time}, {"end_time", step.end_time}})
+    if (time < 0.0 || time > kMaxPlanTime)
+      fail(child(path, key), "must be in [0, 200000] s, got " + std::to_string(time));
   step.foot_position = point(field("foot_position"), child(path, "foot_position"));
   step.foot_orientation = number(field("foot_orientation"), child(path, "foot_orientation"));
   step.orientation_interval = {step.foot_orientation, step.foot_orientation};

@@ -25,16 +25,24 @@ bool circles_overlap(const Circle& a, const Circle& b) {
 // lies within a stride plus a foot of its COM. [m]
 constexpr double kNear = 3.0;
 
+// The highest sampling rate: beyond it the samples say nothing new and cost
+// time in proportion. [Hz]
+constexpr double kMaxRate = 1000.0;
+
 }  // namespace
 
 PlanMetrics measure_plan(const Plan& plan, double rate) {
-  if (!(rate > 0.0 && std::isfinite(rate)))
-    throw std::invalid_argument("rate: must be a positive number");
+  if (!(rate > 0.0 && rate <= kMaxRate))
+    throw std::invalid_argument("rate: must be in (0, 1000] Hz, got " + std::to_string(rate));
   const ObstacleMap map(plan.obstacles);
   const size_t n = plan.agents.size();
   double end = 0.0;
   for (const AgentPlan& agent : plan.agents) end = std::max(end, agent.end_time());
-  const int samples = static_cast<int>(std::floor(end * rate)) + 1;
+  // Checked before the conversion: a plan read from a file may last long.
+  if (!(end <= kMaxPlanTime))
+    throw std::invalid_argument("the plan ends at " + std::to_string(end) +
+                                " s, after the latest time a plan may hold (200000 s)");
+  const long samples = static_cast<long>(std::floor(end * rate)) + 1;
 
   PlanMetrics result;
   result.rate = rate;
@@ -50,8 +58,8 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
   std::vector<bool> colliding(n, false), present(n, true);
   std::vector<std::vector<Circle>> circles(n);
   const double dt = 1.0 / rate;
-  for (int s = 0; s < samples; ++s) {
-    const double t = s * dt;
+  for (long s = 0; s < samples; ++s) {
+    const double t = static_cast<double>(s) * dt;
     for (size_t a = 0; a < n; ++a) {
       position[a] = com_at(plan.agents[a], t).position;
       circles[a] = collision_circles(plan.agents[a], plan.character, t);

@@ -32,8 +32,8 @@ void validate(const Scenario& scenario);
 Plan plan_scenario(const Scenario& scenario, const RunControl& control = {});
 
 /// The navigation mesh of a scenario. The domain is the bounding box of its
-/// obstacles, agent positions and goals, grown by `margin` on every side;
-/// obstacle i gets id i. [m] [margin > 0]
+/// obstacles, agent positions and goals, grown by `margin` on every side (up
+/// to kMaxCoordinate); obstacle i gets id i. [m] [margin > 0]
 NavMesh navmesh_of(const Scenario& scenario, double margin = 5.0);
 
 }  // namespace footfall

@@ -38,8 +38,10 @@ constexpr double kSteerBenchRadius = 0.15;
 /// SteerBench counts an overlap deeper than this. [m]
 constexpr double kSteerBenchPenetration = 0.001;
 
-/// Measures `plan` sampled at `rate` [Hz] (> 0) from time 0 to the end of the
+/// Measures `plan` sampled at `rate` [Hz] (0, 1000] from time 0 to the end of the
 /// longest agent plan; an agent past the end of its plan stands where it ended.
+/// Throws std::invalid_argument for a rate out of range or a plan that ends
+/// after kMaxPlanTime.
 PlanMetrics measure_plan(const Plan& plan, double rate = 20.0);
 
 }  // namespace footfall

@@ -51,6 +51,11 @@ inline bool present_at(const AgentPlan& plan, double t) {
   return !plan.leaves || t <= plan.end_time();
 }
 
+/// The latest time a plan may hold: twice the longest time limit the planner
+/// takes (PlannerParams::max_time), so that a plan read from a file costs a
+/// bounded effort to evaluate and measure. [s]
+constexpr double kMaxPlanTime = 2e5;
+
 /// The plan of a whole scenario.
 struct Plan {
   std::vector<AgentPlan> agents;     ///< One per scenario agent, in the same order.
