@@ -44,6 +44,16 @@ def test_create_footstep_from_python(ff):
             "agents[0].position: the standing agent overlaps obstacles[0]",
         ),
         ({"character": {"height": 2}}, "character.height: unknown field"),
+        (
+            {"agents": [{"name": "ann", "position": [0, 0], "goals": [[5, 0]]},
+                        {"name": "bo", "position": [3, 0], "goals": [[5, 2]]},
+                        {"name": "cy", "position": [0.3, 0.1], "goals": [[5, 4]]}]},
+            "agents[2].position: the standing agent overlaps agents[0] ('ann')",
+        ),
+        (
+            {"agents": [{"name": f"a{i}", "position": [1, 1], "goals": [[5, i]]} for i in range(200)]},
+            "agents[1].position: the standing agent overlaps agents[0] ('a0')",
+        ),
         ({"planner": {"max_expansions": 1.5}}, "planner.max_expansions: expected an integer, got number"),
     ],
 )
@@ -150,7 +160,8 @@ def test_progress_callback_errors_propagate(ff):
 def test_planning_releases_the_gil(ff):
     # While one thread plans, another Python thread keeps running.
     scenario = ff.demo_scenario()
-    scenario.agents = [ff.AgentSpec(f"a{i}", (0.0, 0.5), 0.0, [(11.0, 0.3)]) for i in range(30)]
+    scenario.agents = [ff.AgentSpec(f"a{i}", (-0.8 * (i % 5), -1.6 + 0.8 * (i // 5)), 0.0, [(-20.0, 0.8 * i)])
+                       for i in range(20)]
     ticks = []
     done = threading.Event()
 

@@ -2,8 +2,10 @@
 #include "footfall/crowd/scenario.hpp"
 
 #include <algorithm>
+#include <array>
 #include <set>
 #include <stdexcept>
+#include <vector>
 
 #include "footfall/model/footstep.hpp"
 #include "footfall/planner/planner.hpp"
@@ -16,6 +18,54 @@ using detail::child;
 using detail::fail;
 using detail::item;
 using detail::user_text;
+
+namespace {
+
+// Refuses two agents whose standing bodies (torso circles and feet) overlap:
+// neither could take a step. Swept along x, so that a crowd of thousands
+// costs about a sort.
+void check_standing_apart(const Scenario& scenario) {
+  struct Body {
+    std::size_t agent;
+    std::array<Circle, 5> circles;
+    double reach = 0.0;  // from the COM [m]
+  };
+  std::vector<Body> bodies;
+  bodies.reserve(scenario.agents.size());
+  double widest = 0.0;
+  for (std::size_t i = 0; i < scenario.agents.size(); ++i) {
+    const AgentSpec& agent = scenario.agents[i];
+    const FootstepState s = standing_state(agent.position, agent.facing, scenario.character);
+    const auto torso = torso_circles(s.com, s.facing, scenario.character);
+    Body body{i, {torso[0], torso[1], torso[2], Circle{s.feet[0], scenario.character.foot_radius},
+                  Circle{s.feet[1], scenario.character.foot_radius}}};
+    for (const Circle& c : body.circles)
+      body.reach = std::max(body.reach, distance(c.center, s.com) + c.radius);
+    widest = std::max(widest, body.reach);
+    bodies.push_back(body);
+  }
+  const auto x = [&](const Body& b) { return scenario.agents[b.agent].position.x; };
+  std::sort(bodies.begin(), bodies.end(), [&](const Body& a, const Body& b) {
+    return x(a) != x(b) ? x(a) < x(b) : a.agent < b.agent;
+  });
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    for (std::size_t j = i + 1; j < bodies.size() && x(bodies[j]) - x(bodies[i]) < 2 * widest; ++j) {
+      const Body& a = bodies[i];
+      const Body& b = bodies[j];
+      bool overlap = false;
+      for (const Circle& p : a.circles)
+        for (const Circle& q : b.circles)
+          overlap = overlap || distance(p.center, q.center) < p.radius + q.radius;
+      if (!overlap) continue;
+      const std::size_t first = std::min(a.agent, b.agent), second = std::max(a.agent, b.agent);
+      fail(child(item("agents", second), "position"),
+           "the standing agent overlaps agents[" + std::to_string(first) + "] (" +
+               user_text(scenario.agents[first].name) + ")");
+    }
+  }
+}
+
+}  // namespace
 
 void validate(const Scenario& scenario) {
   validate(scenario.character, "character");
@@ -56,6 +106,7 @@ void validate(const Scenario& scenario) {
       }
     }
   }
+  check_standing_apart(scenario);
 }
 
 Plan plan_scenario(const Scenario& scenario, const RunControl& control) {
