@@ -7,6 +7,7 @@ packages=(
   cmake g++ make
   pybind11-dev nlohmann-json3-dev libpugixml-dev libcgal-dev python3-dev
   libgtest-dev libbenchmark-dev
+  clang libclang-rt-14-dev
   python3-pytest python3-numpy
   blender
 )

@@ -3,7 +3,8 @@
 # runs all three tiers (GoogleTest, pytest, Blender background tests), then
 # the native and Python tiers again built with AddressSanitizer and
 # UndefinedBehaviorSanitizer, and the native tier built with ThreadSanitizer
-# (the crowd plans on a pool of threads, pipelining its ticks).
+# (the crowd plans on a pool of threads, pipelining its ticks); last, a short
+# run of each fuzzing target (tests/fuzz) under the sanitizers.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -21,3 +22,7 @@ ctest --test-dir build-sanitize --output-on-failure -L 'native|python'
 BUILD_DIR=build-tsan scripts/build.sh -DFOOTFALL_TSAN=ON -DFOOTFALL_BUILD_PYTHON=OFF \
   -DFOOTFALL_BUILD_BENCHMARKS=OFF
 setarch "$(uname -m)" -R ctest --test-dir build-tsan --output-on-failure -L native
+
+# Coverage-guided fuzzing of every reader and of the navigation mesh's
+# updates, 20 s a target, replaying the seed and regression corpus first.
+scripts/fuzz.sh 20
