@@ -26,6 +26,10 @@ using planner::detail::kSideStepSpeed;
 constexpr double kCellPosition = 0.04;
 constexpr double kCellHeading = 4.0 * kPi / 180.0;
 constexpr double kCellSpeed = 0.1;
+// A search holds at most this many nodes (about 180 MB), and then stops as at
+// its horizon, whatever max_expansions says: a full search of the default
+// horizon holds some 50,000.
+constexpr std::size_t kMaxSearchNodes = 500000;
 constexpr double kDuplicateTurn = 1e-3;    // [rad] goal-directed turn equal to a tabled one
 
 std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, Foot last_foot) {
@@ -271,7 +275,8 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   std::vector<int> closed;                                   // expanded nodes, the root excluded
   double nearest = std::numeric_limits<double>::infinity();  // the lowest h expanded
   int nearest_at = 0;
-  while (!search.open.empty() && result.nodes_expanded < horizon) {
+  while (!search.open.empty() && result.nodes_expanded < horizon &&
+         search.nodes.size() < kMaxSearchNodes) {
     const int current = search.pop();
     // Collisions are checked lazily, when a node is taken off the open list:
     // most generated nodes are never expanded.

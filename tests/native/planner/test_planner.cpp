@@ -79,6 +79,25 @@ void expect_reached(const AgentPlan& agent, Vec2 goal, const PlannerParams& para
   EXPECT_LT(distance(agent.footsteps.back().com_end, goal), params.goal_tolerance + 0.6);
 }
 
+// A boxed-in character with a horizon of a million and no stall limit: the
+// search stops at its cap on nodes instead of filling gigabytes.
+TEST(Planner, ASearchHoldsABoundedNumberOfNodes) {
+  std::vector<Obstacle> walls = wall_with_door(2.0, 0.0, 0.0, 3.0);  // doors of no width
+  const std::vector<Obstacle> west = wall_with_door(-2.0, 0.0, 0.0, 3.0);
+  walls.insert(walls.end(), west.begin(), west.end());
+  walls.push_back(box_obstacle({0.0, 3.0}, {4.4, 0.2}));
+  walls.push_back(box_obstacle({0.0, -3.0}, {4.4, 0.2}));
+  const ObstacleMap map(walls);
+  PlannerParams params;
+  params.max_expansions = 1000000;
+  params.stall_expansions = 0;
+  const FootstepPlanner planner(CharacterParams{}, params, map);
+  const SearchResult result = planner.plan(standing_state({0, 0}, 0.0, CharacterParams{}), {8, 0});
+  EXPECT_NE(result.status, Status::kSuccess);
+  EXPECT_LT(result.nodes_expanded, params.max_expansions);
+  EXPECT_LE(result.nodes_generated, 500000 + 100);
+}
+
 TEST(Planner, StraightWalkReachesTheGoal) {
   const AgentPlan agent = plan_and_check(one_agent({}, {0, 0}, 0, {10, 0}));
   expect_reached(agent, {10, 0});

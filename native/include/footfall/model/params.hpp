@@ -134,7 +134,8 @@ struct ParamTable<PlannerParams> {
   static constexpr const char* name = "PlannerParams";
   static constexpr auto fields = std::make_tuple(
       param("max_expansions", &S::max_expansions, "1", closed(1, 1000000),
-            "Horizon: nodes expanded per search."),
+            "Horizon: nodes expanded per search. A search also stops once it holds 500,000 "
+            "nodes (about 180 MB), whatever the horizon; the default horizon holds some 50,000."),
       param("stall_expansions", &S::stall_expansions, "1", closed(0, 1000000),
             "A search that has expanded no node nearer its goal (lower h) for this many nodes "
             "stops there, as at the horizon; 0: never."),
