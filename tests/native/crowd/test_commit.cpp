@@ -11,44 +11,16 @@
 #include <vector>
 
 #include "crowd/crowd_commit.hpp"
+#include "crowd/crowd_fixture.hpp"
 #include "crowd/crowd_walker.hpp"
 #include "footfall/planner/planner.hpp"
 
 namespace footfall::crowd {
 namespace {
 
-/// A few agents standing on open ground, kept as the crowd driver keeps them.
-struct Crowd {
-  ObstacleMap ground;
-  FootstepPlanner planner{CharacterParams{}, PlannerParams{}, ground};
-  std::vector<AgentSpec> specs;
-  std::vector<Walker> walkers;
-
-  explicit Crowd(std::vector<AgentSpec> agents) : specs(std::move(agents)) {
-    for (const AgentSpec& spec : specs) {
-      Walker w;
-      w.spec = &spec;
-      w.plan.name = spec.name;
-      w.plan.start = standing_state(spec.position, spec.facing, planner.character());
-      w.state = w.plan.start;
-      w.bounds = std::make_shared<const PlanBounds>(w.plan, planner.character());
-      walkers.push_back(std::move(w));
-    }
-  }
-
-  /// Where everyone is at time t, as a tick's searches see it.
-  Snapshot at(double t) const {
-    Snapshot s;
-    s.t = t;
-    for (const Walker& w : walkers) {
-      s.com.push_back(com_at(w.plan, t).position);
-      s.present.push_back(present_at(w.plan, t));
-      s.bounds.push_back(w.bounds->from(0.0));
-    }
-    s.grid = AgentGrid(s.com, kGridCell);
-    s.giving_way.assign(walkers.size(), 0);
-    return s;
-  }
+/// A few agents standing on open ground.
+struct Crowd : CrowdFixture {
+  using CrowdFixture::CrowdFixture;
 
   /// Agent i's attempt toward `goal`, searched alone (whoever is in the way),
   /// followed by the stops that bring it to rest in the open.

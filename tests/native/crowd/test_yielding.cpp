@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "crowd/crowd_fixture.hpp"
 #include "crowd/crowd_walker.hpp"
 #include "crowd/crowd_yielding.hpp"
 #include "footfall/navmesh/navmesh.hpp"
@@ -19,39 +20,9 @@
 namespace footfall::crowd {
 namespace {
 
-/// A few agents among `obstacles`, kept as the crowd driver keeps them.
-struct Crowd {
-  ObstacleMap map;
-  FootstepPlanner planner{CharacterParams{}, PlannerParams{}, map};
-  std::vector<AgentSpec> specs;
-  std::vector<Walker> walkers;
-
-  explicit Crowd(std::vector<AgentSpec> agents, std::vector<Obstacle> obstacles = {})
-      : map(std::move(obstacles)), specs(std::move(agents)) {
-    for (const AgentSpec& spec : specs) {
-      Walker w;
-      w.spec = &spec;
-      w.plan.start = standing_state(spec.position, spec.facing, planner.character());
-      w.state = w.plan.start;
-      w.bounds = std::make_shared<const PlanBounds>(w.plan, planner.character());
-      w.way = distance(spec.position, spec.goals.back());
-      walkers.push_back(std::move(w));
-    }
-  }
-
-  /// Where everyone is at time t, as a tick's searches see it.
-  Snapshot at(double t) const {
-    Snapshot s;
-    s.t = t;
-    for (const Walker& w : walkers) {
-      s.com.push_back(com_at(w.plan, t).position);
-      s.present.push_back(present_at(w.plan, t));
-      s.bounds.push_back(w.bounds->from(0.0));
-    }
-    s.grid = AgentGrid(s.com, kGridCell);
-    s.giving_way.assign(walkers.size(), 0);
-    return s;
-  }
+/// A few agents among obstacles.
+struct Crowd : CrowdFixture {
+  using CrowdFixture::CrowdFixture;
 
   /// Agent i's steps toward `goal`, searched alone (whoever is in the way).
   std::vector<Footstep> steps_toward(std::size_t i, Vec2 goal) const {
