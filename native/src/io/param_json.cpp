@@ -14,8 +14,8 @@ namespace {
 template <class S>
 bool read_field(const Json& value, const std::string& key, const std::string& path, S& target);
 
-// Reads every key of the object `json` into `target`; false for the first key
-// that is not a field of S, when `unknown` is null (else it is told of it).
+// Reads every key of the object `json` into `target`, by S's table; a key
+// that is no field of S goes to unknown(key, value, path) (by default: refused).
 template <class S, class Unknown>
 void read_struct(const Json& json, const std::string& path, S& target, Unknown unknown) {
   if (!json.is_object()) fail(path, "expected an object, got " + type_name(json));
