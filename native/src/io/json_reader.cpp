@@ -29,7 +29,10 @@ std::pair<size_t, bool> number_at(const std::string& text, size_t i) {
   if (c != '-' && (c < '0' || c > '9')) return {0, false};
   size_t n = 0;
   bool exponent = false;
-  for (; i + n < text.size() && std::strchr("+-0123456789.eE", text[i + n]) != nullptr; ++n)
+  // (strchr finds the terminator too: a NUL in the text ends the number.)
+  for (; i + n < text.size() && text[i + n] != '\0' &&
+         std::strchr("+-0123456789.eE", text[i + n]) != nullptr;
+       ++n)
     exponent = exponent || text[i + n] == 'e' || text[i + n] == 'E';
   // Without an exponent, only 309 digits or more overflow: most numbers need no strtod.
   if (!exponent && n < 309) return {n, false};

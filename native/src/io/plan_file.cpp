@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -134,7 +135,8 @@ Footstep read_footstep(const Json& json, const std::string& path) {
   if (!(step.end_time > step.start_time)) fail(child(path, "end_time"), "must be after start_time");
   for (const auto& [key, time] : {std::pair{"start_time", step.start_time}, {"end_time", step.end_time}})
     if (time < 0.0 || time > kMaxPlanTime)
-      fail(child(path, key), "must be in [0, 200000] s, got " + std::to_string(time));
+      fail(child(path, key), "must be in [0, " + std::to_string(std::lround(kMaxPlanTime)) +
+                                 "] s, got " + std::to_string(time));
   step.foot_position = point(field("foot_position"), child(path, "foot_position"));
   step.foot_orientation = number(field("foot_orientation"), child(path, "foot_orientation"));
   step.orientation_interval = {step.foot_orientation, step.foot_orientation};

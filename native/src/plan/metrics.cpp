@@ -33,7 +33,8 @@ constexpr double kMaxRate = 1000.0;
 
 PlanMetrics measure_plan(const Plan& plan, double rate) {
   if (!(rate > 0.0 && rate <= kMaxRate))
-    throw std::invalid_argument("rate: must be in (0, 1000] Hz, got " + std::to_string(rate));
+    throw std::invalid_argument("rate: must be in (0, " + std::to_string(std::lround(kMaxRate)) +
+                                "] Hz, got " + std::to_string(rate));
   const ObstacleMap map(plan.obstacles);
   const size_t n = plan.agents.size();
   double end = 0.0;
@@ -41,7 +42,8 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
   // Checked before the conversion: a plan read from a file may last long.
   if (!(end <= kMaxPlanTime))
     throw std::invalid_argument("the plan ends at " + std::to_string(end) +
-                                " s, after the latest time a plan may hold (200000 s)");
+                                " s, after the latest time a plan may hold (" +
+                                std::to_string(std::lround(kMaxPlanTime)) + " s)");
   const long samples = static_cast<long>(std::floor(end * rate)) + 1;
 
   PlanMetrics result;
