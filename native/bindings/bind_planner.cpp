@@ -1,3 +1,4 @@
+#include <array>
 #include <limits>
 
 #include "bindings.hpp"
@@ -10,17 +11,32 @@ namespace py = pybind11;
 namespace footfall::bindings {
 
 void bind_planner(py::module_& m) {
-  py::class_<Obstacle>(m, "Obstacle", "A polygon [m] extruded to a height [m].")
+  py::class_<Obstacle>(m, "Obstacle",
+                       "A polygon [m] extruded from a base to a height [m], or a triangle mesh.")
       .def(py::init<>())
-      .def(py::init([](std::vector<Vec2> polygon, double height) {
-             if (polygon.size() < 3)
-               throw std::invalid_argument("Obstacle: polygon needs at least 3 points, got " +
-                                           std::to_string(polygon.size()));
-             return Obstacle{std::move(polygon), height};
+      .def(py::init([](std::vector<Vec2> polygon, double height, double base) {
+             Obstacle obstacle = prism(std::move(polygon), height, base);
+             validate(obstacle, "Obstacle");
+             return obstacle;
            }),
-           py::arg("polygon"), py::arg("height") = 2.0)
+           py::arg("polygon"), py::arg("height") = 2.0, py::arg("base") = 0.0)
+      .def_static(
+          "from_mesh",
+          [](const std::vector<std::array<double, 3>>& vertices,
+             const std::vector<std::array<int, 3>>& triangles) {
+            Obstacle obstacle;
+            for (const auto& v : vertices) obstacle.mesh.vertices.push_back({v[0], v[1], v[2]});
+            obstacle.mesh.triangles = triangles;
+            validate(obstacle, "Obstacle");
+            return obstacle;
+          },
+          "An obstacle of any shape: vertices [[x, y, z], ...] [m] and triangles [[i, j, k], "
+          "...]. Raises ValueError for a bad index, a non-finite vertex or no triangles.",
+          py::arg("vertices"), py::arg("triangles"))
       .def_readwrite("polygon", &Obstacle::polygon)
-      .def_readwrite("height", &Obstacle::height);
+      .def_readwrite("height", &Obstacle::height)
+      .def_readwrite("base", &Obstacle::base)
+      .def_property_readonly("is_mesh", &Obstacle::is_mesh);
 
   py::class_<ObstacleMap>(m, "ObstacleMap", "Static obstacles indexed for circle queries.")
       .def(py::init<std::vector<Obstacle>>(), py::arg("obstacles"))

@@ -15,4 +15,5 @@ PYBIND11_MODULE(_native, m) {
   footfall::bindings::bind_planner(m);
   footfall::bindings::bind_scenario(m);
   footfall::bindings::bind_navmesh(m);
+  footfall::bindings::bind_fullbody(m);
 }

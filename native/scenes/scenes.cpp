@@ -5,11 +5,11 @@ namespace footfall {
 
 Obstacle box_obstacle(Vec2 center, Vec2 size, double height) {
   const Vec2 h = 0.5 * size;
-  return {{{center.x - h.x, center.y - h.y},
-           {center.x + h.x, center.y - h.y},
-           {center.x + h.x, center.y + h.y},
-           {center.x - h.x, center.y + h.y}},
-          height};
+  return prism({{center.x - h.x, center.y - h.y},
+                {center.x + h.x, center.y - h.y},
+                {center.x + h.x, center.y + h.y},
+                {center.x - h.x, center.y + h.y}},
+               height);
 }
 
 std::vector<Obstacle> wall_with_door(double x, double door_width, double door_center,

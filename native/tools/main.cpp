@@ -45,6 +45,9 @@ const char* const kUsage =
     "       footfall metrics PLAN             our figures and SteerBench's, per agent, at 20 Hz\n"
     "       footfall path SCENARIO --from X,Y --to X,Y --radius R\n"
     "                                         shortest path for a disc of radius R, as JSON\n"
+    "       footfall path SCENARIO --from X,Y --to X,Y --behaviors\n"
+    "                                         the full-body planner's path, in sections of walk,\n"
+    "                                         arms_in and side_step, as JSON\n"
     "       footfall bench [--repeat N]       time the planner on the standard workloads\n"
     "       footfall bench --crowds [--threads N] [--repeat N]\n"
     "                                         plan the crowd workloads of the paper's table 1\n"
@@ -200,11 +203,11 @@ footfall::Vec2 parse_point(const std::string& flag, const std::string& text) {
   return point;
 }
 
-// footfall path SCENARIO --from X,Y --to X,Y --radius R
+// footfall path SCENARIO --from X,Y --to X,Y (--radius R | --behaviors)
 int print_path(int argc, char** argv) {
   std::string scenario;
   footfall::PathQuery query;
-  bool from = false, to = false, radius = false;
+  bool from = false, to = false, radius = false, behaviors = false;
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
     const bool has_value = i + 1 < argc;
@@ -218,6 +221,8 @@ int print_path(int argc, char** argv) {
       query.radius = parse_number(arg, argv[++i]);
       if (query.radius < 0) throw UsageError("--radius: must be >= 0, got " + user_text(argv[i]));
       radius = true;
+    } else if (arg == "--behaviors") {
+      behaviors = true;
     } else if (!arg.empty() && arg[0] == '-') {
       throw UsageError("path: unknown option or missing value: " + user_text(arg));
     } else if (scenario.empty()) {
@@ -226,10 +231,18 @@ int print_path(int argc, char** argv) {
       throw UsageError("path takes one scenario file");
     }
   }
-  if (scenario.empty() || !from || !to || !radius)
-    throw UsageError("path needs SCENARIO, --from X,Y, --to X,Y and --radius R");
-  const footfall::NavMesh mesh = footfall::navmesh_of(footfall::load_scenario_file(scenario));
-  std::cout << footfall::to_json(mesh.find_path(query)) << "\n";
+  if (scenario.empty() || !from || !to || radius == behaviors)
+    throw UsageError("path needs SCENARIO, --from X,Y, --to X,Y and one of --radius R, --behaviors");
+  const footfall::Scenario loaded = footfall::load_scenario_file(scenario);
+  footfall::NavMesh mesh = footfall::navmesh_of(loaded);
+  if (!behaviors) {
+    std::cout << footfall::to_json(mesh.find_path(query)) << "\n";
+    return 0;
+  }
+  const footfall::CollisionScene scene(loaded.obstacles);
+  const footfall::BodyModel body(loaded.character);
+  footfall::BehavioralPlanner planner(mesh, scene, body, loaded.planner);
+  std::cout << footfall::to_json(planner.plan(query.from, query.to)) << "\n";
   return 0;
 }
 

@@ -70,7 +70,7 @@ def test_a_number_too_large_for_a_double_is_a_value_error_naming_the_field(ff):
 
 
 def test_an_obstacle_of_fewer_than_three_points_is_refused(ff):
-    with pytest.raises(ValueError, match="polygon needs at least 3 points, got 2"):
+    with pytest.raises(ValueError, match="polygon: needs at least 3 points, got 2"):
         ff.Obstacle([(0, 0), (1, 0)])
 
 

@@ -70,7 +70,7 @@ void check_standing_apart(const Scenario& scenario) {
 void validate(const Scenario& scenario) {
   validate(scenario.character, "character");
   validate(scenario.planner, "planner");
-  const ObstacleMap obstacles(scenario.obstacles);
+  const ObstacleMap obstacles(scenario.obstacles, scenario.character.body_height);
   const FootstepPlanner planner(scenario.character, scenario.planner, obstacles);
   std::set<std::string> names;
   for (size_t i = 0; i < scenario.agents.size(); ++i) {
@@ -111,7 +111,7 @@ void validate(const Scenario& scenario) {
 
 Plan plan_scenario(const Scenario& scenario, const RunControl& control) {
   validate(scenario);
-  const ObstacleMap obstacles(scenario.obstacles);
+  const ObstacleMap obstacles(scenario.obstacles, scenario.character.body_height);
   const FootstepPlanner planner(scenario.character, scenario.planner, obstacles);
   const NavMesh mesh = navmesh_of(scenario);
   Plan plan;
@@ -131,8 +131,11 @@ NavMesh navmesh_of(const Scenario& scenario, double margin) {
     hi = any ? Vec2{std::max(hi.x, p.x), std::max(hi.y, p.y)} : p;
     any = true;
   };
-  for (const Obstacle& o : scenario.obstacles)
-    for (Vec2 p : o.polygon) grow(p);
+  std::vector<std::vector<Vec2>> footprints;
+  for (const Obstacle& o : scenario.obstacles) {
+    footprints.push_back(footprint(o, scenario.character.body_height));
+    for (Vec2 p : footprints.back()) grow(p);
+  }
   for (const AgentSpec& a : scenario.agents) {
     grow(a.position);
     for (Vec2 g : a.goals) grow(g);
@@ -141,8 +144,14 @@ NavMesh navmesh_of(const Scenario& scenario, double margin) {
   const auto inside = [](double v) { return std::clamp(v, -kMaxCoordinate, kMaxCoordinate); };
   NavMesh mesh({inside(lo.x - margin), inside(lo.y - margin)},
                {inside(hi.x + margin), inside(hi.y + margin)});
-  for (std::size_t i = 0; i < scenario.obstacles.size(); ++i)
-    mesh.add_polygon(scenario.obstacles[i].polygon, "obstacles[" + std::to_string(i) + "]");
+  // Obstacle i gets id i; one wholly above the head (no footprint) blocks nothing.
+  for (std::size_t i = 0; i < footprints.size(); ++i) {
+    const std::string name = "obstacles[" + std::to_string(i) + "]";
+    if (footprints[i].empty())
+      mesh.add_empty();
+    else
+      mesh.add_polygon(footprints[i], name);
+  }
   return mesh;
 }
 

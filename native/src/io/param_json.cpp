@@ -133,13 +133,57 @@ void read_planner(const Json& json, const std::string& path, PlannerParams& para
   read_struct(json, path, params);
 }
 
+namespace {
+
+TriangleMesh read_mesh(const Json& json, const std::string& path) {
+  expect_object(json, path, {"vertices", "triangles"});
+  TriangleMesh mesh;
+  const std::string vertices_path = child(path, "vertices");
+  const Json& vertices = array(require(json, path, "vertices"), vertices_path);
+  for (std::size_t k = 0; k < vertices.size(); ++k) {
+    const std::string at = item(vertices_path, k);
+    const Json& xyz = array(vertices[k], at);
+    if (xyz.size() != 3) fail(at, "expected [x, y, z], got " + std::to_string(xyz.size()) + " items");
+    mesh.vertices.push_back(
+        {number(xyz[0], item(at, 0)), number(xyz[1], item(at, 1)), number(xyz[2], item(at, 2))});
+  }
+  const std::string triangles_path = child(path, "triangles");
+  const Json& triangles = array(require(json, path, "triangles"), triangles_path);
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const std::string at = item(triangles_path, t);
+    const Json& ijk = array(triangles[t], at);
+    if (ijk.size() != 3) fail(at, "expected [i, j, k], got " + std::to_string(ijk.size()) + " items");
+    std::array<int, 3> triangle{};
+    for (int c = 0; c < 3; ++c) {
+      const long long index = integer(ijk[c], item(at, c));
+      if (index < 0 || index >= static_cast<long long>(vertices.size()))
+        fail(item(at, c), "vertex index " + std::to_string(index) + " is not in [0, " +
+                              std::to_string(vertices.size()) + ")");
+      triangle[c] = static_cast<int>(index);
+    }
+    mesh.triangles.push_back(triangle);
+  }
+  if (mesh.triangles.empty()) fail(triangles_path, "needs at least one triangle");
+  return mesh;
+}
+
+}  // namespace
+
 std::vector<Obstacle> read_obstacles(const Json& json) {
   std::vector<Obstacle> result;
   const Json& obstacles = array(json, "obstacles");
   for (size_t i = 0; i < obstacles.size(); ++i) {
     const std::string path = item("obstacles", i);
-    expect_object(obstacles[i], path, {"polygon", "height"});
+    expect_object(obstacles[i], path, {"polygon", "height", "base", "mesh"});
     Obstacle obstacle;
+    if (obstacles[i].contains("mesh")) {
+      for (const char* prism_field : {"polygon", "height", "base"})
+        if (obstacles[i].contains(prism_field))
+          fail(child(path, prism_field), "not with \"mesh\": a mesh gives its own shape");
+      obstacle.mesh = read_mesh(obstacles[i]["mesh"], child(path, "mesh"));
+      result.push_back(std::move(obstacle));
+      continue;
+    }
     const std::string polygon_path = child(path, "polygon");
     const Json& polygon = array(require(obstacles[i], path, "polygon"), polygon_path);
     for (size_t k = 0; k < polygon.size(); ++k) {
@@ -148,9 +192,26 @@ std::vector<Obstacle> read_obstacles(const Json& json) {
     if (obstacles[i].contains("height")) {
       obstacle.height = number(obstacles[i]["height"], child(path, "height"));
     }
+    if (obstacles[i].contains("base")) {
+      obstacle.base = number(obstacles[i]["base"], child(path, "base"));
+    }
     result.push_back(std::move(obstacle));
   }
   return result;
+}
+
+Json obstacle_to_json(const Obstacle& obstacle) {
+  if (obstacle.is_mesh()) {
+    Json vertices = Json::array(), triangles = Json::array();
+    for (const Vec3 v : obstacle.mesh.vertices) vertices.push_back({v.x, v.y, v.z});
+    for (const auto& t : obstacle.mesh.triangles) triangles.push_back({t[0], t[1], t[2]});
+    return {{"mesh", {{"vertices", std::move(vertices)}, {"triangles", std::move(triangles)}}}};
+  }
+  Json polygon = Json::array();
+  for (const Vec2 p : obstacle.polygon) polygon.push_back(to_json(p));
+  Json json{{"polygon", std::move(polygon)}, {"height", obstacle.height}};
+  if (obstacle.base != 0.0) json["base"] = obstacle.base;  // a prism from the ground says nothing
+  return json;
 }
 
 Json character_to_json(const CharacterParams& params) { return struct_to_json(params); }

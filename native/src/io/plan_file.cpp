@@ -263,11 +263,7 @@ std::string plan_to_json(const Plan& plan) {
     reached += agent.status == AgentStatus::kReached ? 1 : 0;
   }
   Json obstacles = Json::array();
-  for (const Obstacle& obstacle : plan.obstacles) {
-    Json polygon = Json::array();
-    for (const Vec2 p : obstacle.polygon) polygon.push_back(to_json(p));
-    obstacles.push_back({{"polygon", std::move(polygon)}, {"height", obstacle.height}});
-  }
+  for (const Obstacle& obstacle : plan.obstacles) obstacles.push_back(obstacle_to_json(obstacle));
   const Json root{
       {"format", "footfall-plan"},
       {"version", 1},

@@ -129,7 +129,7 @@ class Reader {
   }
 
   void add_box(std::vector<Vec2> polygon, double height) {
-    scenario_.obstacles.push_back({std::move(polygon), height > 0.0 ? height : 1.0});
+    scenario_.obstacles.push_back(prism(std::move(polygon), height > 0.0 ? height : 1.0));
   }
 
   void obstacle_region(const pugi::xml_node& node, const std::string& where) {

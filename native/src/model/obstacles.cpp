@@ -13,34 +13,119 @@ constexpr long long kMaxCells = 4'000'000;  // the cell grows for huge scenes
 
 }  // namespace
 
-ObstacleMap::ObstacleMap(std::vector<Obstacle> obstacles) : obstacles_(std::move(obstacles)) {
-  boxes_.reserve(obstacles_.size());
-  for (size_t i = 0; i < obstacles_.size(); ++i) {
-    const Obstacle& obstacle = obstacles_[i];
-    const std::string name = "obstacles[" + std::to_string(i) + "]";
-    if (obstacle.polygon.size() < 3) {
-      throw std::invalid_argument(name + ".polygon: needs at least 3 points, got " +
+namespace {
+
+[[noreturn]] void refuse(const std::string& field, const std::string& what) {
+  throw std::invalid_argument(field + ": " + what);
+}
+
+void validate_mesh(const TriangleMesh& mesh, const std::string& name) {
+  if (mesh.triangles.empty()) refuse(name + ".mesh.triangles", "needs at least one triangle");
+  for (std::size_t k = 0; k < mesh.vertices.size(); ++k) {
+    const Vec3 v = mesh.vertices[k];
+    if (!is_finite(v) || !in_world(ground(v)) || std::fabs(v.z) > 1000.0)
+      refuse(name + ".mesh.vertices[" + std::to_string(k) + "]",
+             "coordinates must be finite, x and y within 1e9 m of the origin, z within 1000 m");
+  }
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    for (int c = 0; c < 3; ++c) {
+      const int index = mesh.triangles[t][c];
+      if (index < 0 || index >= static_cast<int>(mesh.vertices.size()))
+        refuse(name + ".mesh.triangles[" + std::to_string(t) + "][" + std::to_string(c) + "]",
+               "vertex index " + std::to_string(index) + " is not in [0, " +
+                   std::to_string(mesh.vertices.size()) + ")");
+    }
+  }
+}
+
+// Andrew's monotone chain; collinear points are dropped, so a flat-on-edge
+// set gives its two ends (or one point).
+std::vector<Vec2> convex_hull(std::vector<Vec2> points) {
+  std::sort(points.begin(), points.end(),
+            [](Vec2 a, Vec2 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; });
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() < 3) return points;
+  std::vector<Vec2> hull(2 * points.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+}  // namespace
+
+void validate(const Obstacle& obstacle, const std::string& name) {
+  if (obstacle.is_mesh()) {
+    validate_mesh(obstacle.mesh, name);
+    return;
+  }
+  if (obstacle.polygon.size() < 3)
+    refuse(name + ".polygon", "needs at least 3 points, got " +
                                   std::to_string(obstacle.polygon.size()));
-    }
-    if (!(std::isfinite(obstacle.height) && obstacle.height > 0.0 && obstacle.height <= 1000.0)) {
-      throw std::invalid_argument(name + ".height: must be in (0, 1000], got " +
-                                  std::to_string(obstacle.height));
-    }
-    Box box{obstacle.polygon.front(), obstacle.polygon.front()};
-    for (size_t k = 0; k < obstacle.polygon.size(); ++k) {
-      const Vec2 p = obstacle.polygon[k];
-      if (!in_world(p)) {
-        throw std::invalid_argument(
-            name + ".polygon[" + std::to_string(k) +
-            "]: coordinates must be finite numbers within 1e9 m of the origin");
+  for (std::size_t k = 0; k < obstacle.polygon.size(); ++k) {
+    if (!in_world(obstacle.polygon[k]))
+      refuse(name + ".polygon[" + std::to_string(k) + "]",
+             "coordinates must be finite numbers within 1e9 m of the origin");
+  }
+  if (!(std::isfinite(obstacle.height) && obstacle.height > 0.0 && obstacle.height <= 1000.0))
+    refuse(name + ".height", "must be in (0, 1000], got " + std::to_string(obstacle.height));
+  if (!(std::isfinite(obstacle.base) && obstacle.base >= 0.0 && obstacle.base < obstacle.height))
+    refuse(name + ".base", "must be in [0, height) = [0, " + std::to_string(obstacle.height) +
+                               "), got " + std::to_string(obstacle.base));
+}
+
+std::vector<Vec2> footprint(const Obstacle& obstacle, double cut_height) {
+  if (!obstacle.is_mesh()) {
+    if (obstacle.base >= cut_height) return {};
+    return obstacle.polygon;
+  }
+  // The part below the cut: vertices below it, and where edges cross it.
+  std::vector<Vec2> below;
+  const auto& v = obstacle.mesh.vertices;
+  for (const auto& triangle : obstacle.mesh.triangles) {
+    for (int c = 0; c < 3; ++c) {
+      const Vec3 p = v[triangle[c]], q = v[triangle[(c + 1) % 3]];
+      if (p.z <= cut_height) below.push_back(ground(p));
+      if ((p.z < cut_height) != (q.z < cut_height) && p.z != q.z) {
+        const double t = (cut_height - p.z) / (q.z - p.z);
+        below.push_back(ground(p + t * (q - p)));
       }
-      box.take_in(p);
+    }
+  }
+  return convex_hull(std::move(below));
+}
+
+ObstacleMap::ObstacleMap(std::vector<Obstacle> obstacles, double cut_height)
+    : obstacles_(std::move(obstacles)) {
+  boxes_.reserve(obstacles_.size());
+  footprints_.reserve(obstacles_.size());
+  for (size_t i = 0; i < obstacles_.size(); ++i) {
+    validate(obstacles_[i], "obstacles[" + std::to_string(i) + "]");
+    footprints_.push_back(footprint(obstacles_[i], cut_height));
+    const std::vector<Vec2>& polygon = footprints_.back();
+    // An obstacle above the cut gets an empty box (min > max): nothing meets it.
+    Box box{{1, 1}, {-1, -1}};
+    if (!polygon.empty()) {
+      box = {polygon.front(), polygon.front()};
+      for (const Vec2 p : polygon) box.take_in(p);
     }
     boxes_.push_back(box);
   }
-  if (boxes_.empty()) return;
-  bounds_ = boxes_.front();
-  for (const Box& box : boxes_) bounds_.take_in(box);
+  bool any = false;
+  for (const Box& box : boxes_) {
+    if (box.min.x > box.max.x) continue;
+    if (!any) bounds_ = box;
+    bounds_.take_in(box);
+    any = true;
+  }
+  if (!any) return;
   const double w = bounds_.max.x - bounds_.min.x, h = bounds_.max.y - bounds_.min.y;
   // About kMaxCells cells at most: larger cells for larger scenes, and for long thin
   // ones a cap per axis.
@@ -51,6 +136,7 @@ ObstacleMap::ObstacleMap(std::vector<Obstacle> obstacles) : obstacles_(std::move
   cells_.assign(static_cast<size_t>(columns_) * rows_, {});
   for (size_t i = 0; i < boxes_.size(); ++i) {
     const Box& box = boxes_[i];
+    if (box.min.x > box.max.x) continue;
     const int c0 = cell_of(box.min.x, bounds_.min.x, columns_);
     const int c1 = cell_of(box.max.x, bounds_.min.x, columns_);
     const int r0 = cell_of(box.min.y, bounds_.min.y, rows_);
@@ -63,8 +149,9 @@ ObstacleMap::ObstacleMap(std::vector<Obstacle> obstacles) : obstacles_(std::move
 }
 
 bool ObstacleMap::contains(int index, Vec2 point) const {
-  const std::vector<Vec2>& polygon = obstacles_.at(index).polygon;
+  const std::vector<Vec2>& polygon = footprints_.at(index);
   bool inside = false;
+  if (polygon.empty()) return false;
   for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
     const Vec2 a = polygon[i], b = polygon[j];
     if ((a.y > point.y) != (b.y > point.y) &&
@@ -82,7 +169,8 @@ bool ObstacleMap::circle_overlaps(int index, const Circle& circle) const {
   if (c.x + r < box.min.x || c.x - r > box.max.x || c.y + r < box.min.y || c.y - r > box.max.y) {
     return false;
   }
-  const std::vector<Vec2>& polygon = obstacles_[index].polygon;
+  const std::vector<Vec2>& polygon = footprints_[index];
+  if (polygon.empty()) return false;
   for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
     if (distance_to_segment(c, polygon[j], polygon[i]) <= r) return true;
   }

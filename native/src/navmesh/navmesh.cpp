@@ -353,11 +353,7 @@ int NavMesh::add_polygon(const std::vector<Vec2>& polygon, const std::string& na
   std::vector<Vec2> cleaned =
       clip_to_rectangle(clean_polygon(polygon, name), m.min_corner, m.max_corner);
   if (cleaned.size() == 1) return add_point(cleaned.front(), name);
-  if (cleaned.empty()) {
-    // Wholly outside the domain: nothing to block, but the id stays valid.
-    m.obstacles.emplace(m.next_id, NavMeshState::Obstacle{});
-    return m.next_id++;
-  }
+  if (cleaned.empty()) return add_empty();  // wholly outside: blocks nothing, keeps its id
   // Counter-clockwise, so that overlapping obstacles add up instead of
   // cancelling (the non-zero rule per obstacle).
   if (twice_signed_area(cleaned) < 0) std::reverse(cleaned.begin(), cleaned.end());
@@ -373,6 +369,11 @@ int NavMesh::add_polygon(const std::vector<Vec2>& polygon, const std::string& na
   m.repair_windings(touched);
   m.obstacles.emplace(m.next_id, std::move(obstacle));
   return m.next_id++;
+}
+
+int NavMesh::add_empty() {
+  impl_->obstacles.emplace(impl_->next_id, NavMeshState::Obstacle{});
+  return impl_->next_id++;
 }
 
 int NavMesh::add_point(Vec2 point, const std::string& name) {

@@ -3,11 +3,17 @@
 
 #include <string>
 
+#include "footfall/fullbody/behavioral_planner.hpp"
 #include "footfall/navmesh/navmesh.hpp"
 
 namespace footfall {
 
 /// A path result as one line of JSON: {"status", "points", "length", "min_clearance"}.
 std::string to_json(const PathResult& result);
+/// An annotated path as one line of JSON: the same fields (the points of
+/// every section joined), then "sections" [{"behavior", "clearance",
+/// "points", "length"}], "point_obstacles", "poses_tested" and, when there
+/// is no path, "reason".
+std::string to_json(const BehaviorPath& path);
 
 }  // namespace footfall

@@ -10,6 +10,7 @@
 #include <tuple>
 #include <vector>
 
+#include "footfall/model/body.hpp"
 #include "footfall/model/param_table.hpp"
 
 namespace footfall {
@@ -58,8 +59,21 @@ struct CharacterParams {
   double preferred_speed = 1.3;
   double preferred_step_duration = 0.5;
   double max_foot_turn = 1.5707963267948966;
+  double body_height = 1.75;
+  double shoulder_width = 0.46;
+  double chest_depth = 0.26;
+  double arm_swing_width = 0.62;
+  double arm_radius = 0.045;
+  double leg_radius = 0.065;
+  double side_step_speed = 0.6;
+  double walk_clearance = 0;
+  double arms_in_clearance = 0;
+  double side_step_clearance = 0;
   FootLimits left;
   FootLimits right;
+  /// Sampled motions per behaviour (index: Behavior), from the scenario's
+  /// "behaviors"; an empty one is the built-in motion (fullbody/body_model.hpp).
+  std::array<BehaviorMotion, 3> motions;
 };
 
 template <>
@@ -92,6 +106,27 @@ struct ParamTable<CharacterParams> {
       param("max_foot_turn", &S::max_foot_turn, "rad", above_up_to(0, 3.141592653589793),
             "How far the next foot may turn outward past the previous foot's inner bound (the "
             "pi/2 of the orientation rule, section 3.2)."),
+      param("body_height", &S::body_height, "m", closed(0.5, 3),
+            "Standing height. Obstacles whose underside is at or above it are left out of the "
+            "navigation mesh and the footsteps' collision model."),
+      param("shoulder_width", &S::shoulder_width, "m", above_up_to(0, 1.5),
+            "Across the outside of the shoulders and the upper arms hanging at rest."),
+      param("chest_depth", &S::chest_depth, "m", above_up_to(0, 1), "Front to back at the chest."),
+      param("arm_swing_width", &S::arm_swing_width, "m", from_field("shoulder_width", 3),
+            "The hands' widest lateral extent, hand to hand, during the built-in walk's swing."),
+      param("arm_radius", &S::arm_radius, "m", above_up_to(0, 0.3),
+            "Radius of the arm capsules (the hand is inside the forearm's)."),
+      param("leg_radius", &S::leg_radius, "m", above_up_to(0, 0.3),
+            "Radius of the thigh and shin capsules."),
+      param("side_step_speed", &S::side_step_speed, "m/s", above_up_to(0, 5),
+            "Travel speed of the built-in side-step motion."),
+      param("walk_clearance", &S::walk_clearance, "m", closed(0, 2),
+            "Clearance c3 of walking; 0: derived from the body and its motion "
+            "(docs/full-body.md)."),
+      param("arms_in_clearance", &S::arms_in_clearance, "m", closed(0, 2),
+            "Clearance c2 of walking with the arms in; 0: derived."),
+      param("side_step_clearance", &S::side_step_clearance, "m", closed(0, 2),
+            "Clearance c1 of side-stepping; 0: derived."),
       nested_param("left", &S::left, "Limits on left-foot steps."),
       nested_param("right", &S::right, "Limits on right-foot steps."));
 };
@@ -124,6 +159,11 @@ struct PlannerParams {
   double stop_duration = 0.5;
   double collision_sample_spacing = 0.05;
   double min_progress = 0.05;
+  double pose_rate = 30;
+  double point_obstacle_fraction = 0.5;
+  double detour_limit = 2.0;
+  double behavior_horizon = 1000;
+  double behavior_time_limit = 0.5;
   std::vector<Gait> gaits{{0.6, 0.65}, {1.3, 0.5}, {1.6, 0.45}};
   std::vector<double> turn_angles{0.04, 0.15, 0.35, 0.7, 1.1, 1.4};
 };
@@ -158,6 +198,19 @@ struct ParamTable<PlannerParams> {
       param("min_progress", &S::min_progress, "m", above_up_to(0, 10),
             "A search that shortens the agent's way to its goal by less than this gains "
             "nothing; in a crowd, 15 s without a gain means stuck."),
+      param("pose_rate", &S::pose_rate, "1/s", closed(1, 1000),
+            "Body poses tested per second of motion by the full-body planner."),
+      param("point_obstacle_fraction", &S::point_obstacle_fraction, "1", open_range(0, 1),
+            "Where the full-body planner puts a point obstacle, from the floor projection of "
+            "the colliding limb point (0) to the root (1)."),
+      param("detour_limit", &S::detour_limit, "m", closed(0, 1000),
+            "l_t: a path bent by point obstacles is taken unless it is longer than this much "
+            "over the path it replaces; else a narrower behaviour is tried."),
+      param("behavior_horizon", &S::behavior_horizon, "m", above_up_to(0, 1e9),
+            "h: the full-body planner annotates the way up to this far; the rest is cut."),
+      param("behavior_time_limit", &S::behavior_time_limit, "s", above_up_to(0, 3600),
+            "Wall-clock limit of one full-body query; past it the best complete annotated "
+            "path so far is returned."),
       StructListParam<S, Gait>{"gaits", &S::gaits, 1, 16, "gaits",
                                "Gaits tried at every expansion. Three are enough with the "
                                "goal-directed phi (section 4); more cost time, not quality."},

@@ -85,6 +85,9 @@ class NavMesh {
   /// Adds a point obstacle and returns its id (outside the domain it blocks
   /// nothing). Throws like add_polygon.
   int add_point(Vec2 point, const std::string& name = "");
+  /// Adds an obstacle that blocks nothing (one with no footprint, such as an
+  /// obstacle wholly above the head) and returns its id.
+  int add_empty();
   /// Removes the obstacle with this id. Throws std::out_of_range if there is none.
   void remove(int id);
   /// True if an obstacle has this id.

@@ -1,0 +1,50 @@
+// Footfall — the scene's obstacles in 3-D as triangles under a bounding-volume
+// hierarchy, for testing the body's capsules against them.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "footfall/model/body.hpp"
+#include "footfall/model/geometry3.hpp"
+#include "footfall/model/obstacles.hpp"
+
+namespace footfall {
+
+struct CollisionTree;
+
+/// Where a body pose meets an obstacle.
+struct Contact {
+  int limb = -1;        ///< The first limb (Limb order) that meets one; -1: none.
+  Vec3 point;           ///< The point of that limb's axis nearest the obstacle. [m]
+  double depth = 0.0;   ///< How far the capsule reaches into the surface. [m] [>= 0]
+  int obstacle = -1;    ///< Index of the obstacle met.
+
+  explicit operator bool() const { return limb >= 0; }
+};
+
+/// Every obstacle's surface: prisms as their walls and caps, meshes as given.
+/// Immutable after construction; queries may run in parallel.
+class CollisionScene {
+ public:
+  /// Obstacles as a scenario gives them (validated: see validate(Obstacle)).
+  explicit CollisionScene(const std::vector<Obstacle>& obstacles);
+  ~CollisionScene();
+  CollisionScene(CollisionScene&&) noexcept;
+  CollisionScene& operator=(CollisionScene&&) noexcept;
+
+  /// The first limb of `pose`, placed by `placement`, whose capsule touches a
+  /// surface; with `deepest`, every limb is tested and the deepest contact
+  /// returned instead.
+  Contact test(const BodyPose& pose, const GroundPlacement& placement, bool deepest = false) const;
+  /// The deepest contact of one capsule (in world space) with a surface.
+  Contact test(const Capsule& capsule) const;
+  /// Number of triangles.
+  std::size_t triangle_count() const;
+
+ private:
+  std::unique_ptr<CollisionTree> tree_;
+};
+
+}  // namespace footfall
