@@ -170,7 +170,7 @@ TEST(Planner, AnAgentBesideABoxWalksOn) {
 // torso across the gap, take it through from any facing.
 TEST(Planner, SideStepsThroughAGapNarrowerThanTheShoulders) {
   const auto box = [](double x0, double y0, double x1, double y1) {
-    return Obstacle{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}};
+    return prism({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
   };
   const std::vector<Obstacle> boxes = {box(0.676, -22.339, 1.330, -21.467),
                                        box(0.469, -24.242, 1.468, -22.956),
