@@ -37,9 +37,12 @@ const char* to_string(BehaviorPathStatus status) {
 
 namespace {
 
-/// A query never holds more point obstacles than this: each bends the path
-/// once, and a place no behaviour passes could take them without end.
-constexpr int kMaxPointObstacles = 256;
+/// A query inserts at most this many point obstacles: each bends the path a
+/// little, and a place no behaviour passes could take them without end.
+constexpr int kMaxPointObstacles = 64;
+/// A contact this close to the last one, at the same obstacle, is the same:
+/// the point obstacle before it did not move the path there. [m]
+constexpr double kSameContact = 0.01;
 /// Lengths closer than this are the same place. [m]
 constexpr double kSamePlace = 1e-9;
 
@@ -80,6 +83,20 @@ class Query {
     return sweep_body(scene_, body_, behavior, path, from, to, start_time, params_.pose_rate,
                       result_.poses_tested);
   }
+  // FINDPATH(c1) again around a contact `along` the current path: from a
+  // step before it to two walking cycles past it, the rest of the path kept
+  // (a local repair: detours are short, l_t at most, and a query is dearer
+  // the farther it goes); from the start to the goal where the window's
+  // ends are blocked.
+  PathResult find_around(const Polyline& current, double along);
+  // Walking along `path` from `from` (a step boundary) to its end.
+  BodyCollision test_walk(const Polyline& path, double from) {
+    return test(Behavior::kWalk, path, from, path.length(), from / body_.speed(Behavior::kWalk));
+  }
+  // The last walking step boundary at or before `along`. [m]
+  double walk_boundary(double along) const {
+    return std::floor(along / walk_reach_ + 1e-9) * walk_reach_;
+  }
   // A point obstacle between the contact's floor projection and the root.
   void insert_point(const BodyCollision& hit) {
     const Vec2 contact = ground(hit.contact.point);
@@ -98,14 +115,15 @@ class Query {
   // FURTHEST: how far along `path` walking goes before the step that hits.
   double furthest(const BodyCollision& hit) const;
   // CLOSEST: the nearest step boundary past `q` up to which `behavior` passes
-  // and after which walking can go on for a step (or to the end); false if
-  // `behavior` hits something first.
-  bool closest(const Polyline& path, double q, Behavior behavior, double& r);
+  // and after which walking can go on for a step (or to the end); if
+  // `behavior` meets something else past `beyond` (where walking failed),
+  // the last boundary before it; false if it fails before `beyond`.
+  bool closest(const Polyline& path, double q, double beyond, Behavior behavior, double& r);
   // Switches to `behavior` at `q` along `current`, trying first the way on
   // with the behaviour's own clearance (centred in tall passages), then
   // `current` itself; on success appends the walk up to q and the
   // behaviour's section, and leaves in `current` the rest of the way.
-  bool switch_to(Behavior behavior, Polyline& current, double q, Vec2 goal);
+  bool switch_to(Behavior behavior, Polyline& current, double q, double beyond, Vec2 goal);
   std::string blocked_at(const BodyCollision& hit) const;
 
   NavMesh& mesh_;
@@ -137,6 +155,33 @@ void Query::append(Behavior behavior, double clearance, std::vector<Vec2> points
   sections.push_back({behavior, clearance, std::move(points), length});
 }
 
+// How far two paths from the same start run over the same points. [m]
+double common_prefix(const Polyline& a, const Polyline& b) {
+  const auto& p = a.points();
+  const auto& q = b.points();
+  double along = 0;
+  for (std::size_t k = 1; k < std::min(p.size(), q.size()) && p[k] == q[k]; ++k)
+    along += distance(p[k - 1], p[k]);
+  return along;
+}
+
+PathResult Query::find_around(const Polyline& current, double along) {
+  const double a = std::max(0.0, walk_boundary(along) - walk_reach_);
+  const double b = std::min(current.length(), along + 4 * walk_reach_);
+  PathResult window = find(c1_, current.point_at(a), current.point_at(b));
+  if (window.status == PathStatus::kStartBlocked || window.status == PathStatus::kGoalBlocked)
+    return find(c1_, current.points().front(), current.points().back());
+  if (window.status != PathStatus::kFound) return window;
+  PathResult whole;
+  whole.status = PathStatus::kFound;
+  whole.points = current.between(0, a);
+  whole.points.insert(whole.points.end(), window.points.begin() + 1, window.points.end());
+  const std::vector<Vec2> rest = current.between(b, current.length());
+  whole.points.insert(whole.points.end(), rest.begin() + 1, rest.end());
+  whole.length = detail::polyline_length(whole.points);
+  return whole;
+}
+
 bool Query::remove_points_near(Vec2 place, double radius) {
   const auto near = [&](const PointObstacle& p) { return distance(p.at, place) <= radius; };
   bool any = false;
@@ -155,7 +200,8 @@ double Query::furthest(const BodyCollision& hit) const {
   return std::min(hit.along, steps * step * body_.speed(Behavior::kWalk));
 }
 
-bool Query::closest(const Polyline& path, double q, Behavior behavior, double& r) {
+bool Query::closest(const Polyline& path, double q, double beyond, Behavior behavior,
+                    double& r) {
   const double step = body_.step_duration(behavior);
   const double stride = step * body_.speed(behavior);
   const double walk_step = body_.step_duration(Behavior::kWalk) * body_.speed(Behavior::kWalk);
@@ -163,7 +209,13 @@ bool Query::closest(const Polyline& path, double q, Behavior behavior, double& r
   double at = q;
   for (long long k = 1; at < end - kSamePlace; ++k) {
     const double next = std::min(q + static_cast<double>(k) * stride, end);
-    if (test(behavior, path, at, next, static_cast<double>(k - 1) * step).hit) return false;
+    if (test(behavior, path, at, next, static_cast<double>(k - 1) * step).hit) {
+      // Past the place walking failed, the section may end before this new
+      // contact: the next round handles it as it handled the first.
+      if (at <= beyond + kSamePlace) return false;
+      r = at;
+      return true;
+    }
     if (next >= end - kSamePlace ||
         !test(Behavior::kWalk, path, next, std::min(next + walk_step, end)).hit) {
       r = next;
@@ -175,7 +227,8 @@ bool Query::closest(const Polyline& path, double q, Behavior behavior, double& r
   return true;
 }
 
-bool Query::switch_to(Behavior behavior, Polyline& current, double q, Vec2 goal) {
+bool Query::switch_to(Behavior behavior, Polyline& current, double q, double beyond,
+                      Vec2 goal) {
   const Vec2 from = current.point_at(q);
   const double clearance = body_.clearance(behavior);
   const PathResult own = find(clearance, from, goal);
@@ -183,14 +236,14 @@ bool Query::switch_to(Behavior behavior, Polyline& current, double q, Vec2 goal)
   if (own.status == PathStatus::kFound &&
       own.length <= current.length() - q + params_.detour_limit) {
     Polyline path(own.points);
-    if (closest(path, 0, behavior, r)) {
+    if (closest(path, 0, beyond - q, behavior, r)) {
       append(Behavior::kWalk, c1_, current.between(0, q));
       append(behavior, clearance, path.between(0, r));
       current = Polyline(path.between(r, path.length()));
       return true;
     }
   }
-  if (!closest(current, q, behavior, r)) return false;
+  if (!closest(current, q, beyond, behavior, r)) return false;
   append(Behavior::kWalk, c1_, current.between(0, q));
   append(behavior, c1_, current.between(q, r));
   current = Polyline(current.between(r, current.length()));
@@ -232,26 +285,38 @@ BehaviorPath Query::run(Vec2 from, Vec2 to) {
     done = BehaviorPathStatus::kHorizon;
   }
   const Vec2 goal = current.points().back();
+  // Walking is tested from `resume` on (a step boundary up to which the
+  // current path is known to pass); a detour is measured against `stretch`,
+  // the length of the way from where the current walking stretch started.
+  double resume = 0, stretch = current.length();
+  BodyCollision last_hit;
+  const auto replace = [&](std::vector<Vec2> points, double hit_along) {
+    Polyline next(std::move(points));
+    resume = walk_boundary(std::min(common_prefix(current, next), hit_along));
+    current = std::move(next);
+  };
   while (current.length() > kSamePlace) {
     if (Clock::now() > deadline_) {
       append(Behavior::kSideStep, c1_, current.points());
       done = BehaviorPathStatus::kTimeLimit;
       break;
     }
-    BodyCollision hit = test(Behavior::kWalk, current, 0, current.length());
+    BodyCollision hit = test_walk(current, resume);
     if (!hit.hit) {
       append(Behavior::kWalk, c1_, current.points());
       break;
     }
-    const Vec2 start = current.points().front();
     // Bend the path around the contact.
     PathResult detour;
-    if (static_cast<int>(points_.size()) < kMaxPointObstacles) {
+    const bool unmoved = hit.contact.obstacle == last_hit.contact.obstacle &&
+                         distance(hit.root, last_hit.root) < kSameContact;
+    last_hit = hit;
+    if (!unmoved && result_.point_obstacles < kMaxPointObstacles) {
       insert_point(hit);
-      detour = find(c1_, start, goal);
+      detour = find_around(current, hit.along);
       if (detour.status == PathStatus::kFound &&
-          detour.length - current.length() <= params_.detour_limit) {
-        current = Polyline(detour.points);
+          detour.length - stretch <= params_.detour_limit) {
+        replace(std::move(detour.points), hit.along);
         continue;
       }
       remove_last_point();
@@ -259,25 +324,28 @@ BehaviorPath Query::run(Vec2 from, Vec2 to) {
     // Too long. The point obstacles near here were tries at this same narrow
     // place, and would push the path against its sides: out with them.
     if (remove_points_near(hit.root, walk_reach_)) {
-      const PathResult again = find(c1_, start, goal);
+      PathResult again = find_around(current, hit.along);
       if (again.status == PathStatus::kFound) {
-        current = Polyline(again.points);
-        hit = test(Behavior::kWalk, current, 0, current.length());
+        replace(std::move(again.points), hit.along);
+        hit = test_walk(current, resume);
         if (!hit.hit) continue;
       }
     }
     // Walk as far as walking goes, then the most preferred behaviour that
     // passes, back to walking where it can.
     const double q = furthest(hit);
-    if (switch_to(Behavior::kArmsIn, current, q, goal) ||
-        switch_to(Behavior::kSideStep, current, q, goal))
+    if (switch_to(Behavior::kArmsIn, current, q, hit.along, goal) ||
+        switch_to(Behavior::kSideStep, current, q, hit.along, goal)) {
+      resume = 0;
+      stretch = current.length();
       continue;
+    }
     // No behaviour passes here: a detour of any length beats none.
-    if (static_cast<int>(points_.size()) < kMaxPointObstacles) {
+    if (!unmoved && result_.point_obstacles < kMaxPointObstacles) {
       insert_point(hit);
-      detour = find(c1_, start, goal);
+      detour = find_around(current, hit.along);
       if (detour.status == PathStatus::kFound) {
-        current = Polyline(detour.points);
+        replace(std::move(detour.points), hit.along);
         continue;
       }
     }

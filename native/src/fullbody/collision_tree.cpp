@@ -26,8 +26,13 @@ CollisionTree::CollisionTree(std::vector<SceneTriangle> input) : triangles(std::
   std::vector<Vec3> centres;
   boxes.reserve(triangles.size());
   centres.reserve(triangles.size());
-  for (const SceneTriangle& t : triangles) {
-    boxes.push_back(box_of(t));
+  for (SceneTriangle& t : triangles) {
+    const Vec3 n = cross(t.corners[1] - t.corners[0], t.corners[2] - t.corners[0]);
+    const double area = length(n);
+    t.normal = area > 0 ? (1.0 / area) * n : Vec3{};
+    t.offset = dot(t.normal, t.corners[0]);
+    t.box = box_of(t);
+    boxes.push_back(t.box);
     centres.push_back((1.0 / 3.0) * (t.corners[0] + t.corners[1] + t.corners[2]));
   }
   nodes.reserve(2 * triangles.size() / kLeafSize + 2);

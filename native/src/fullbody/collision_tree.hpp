@@ -28,10 +28,14 @@ struct Box3 {
   }
 };
 
-/// One triangle and the obstacle it belongs to.
+/// One triangle, the obstacle it belongs to, and its plane (unit normal and
+/// offset; a zero normal for a degenerate triangle) for a quick rejection.
 struct SceneTriangle {
   std::array<Vec3, 3> corners;
   int obstacle = 0;
+  Vec3 normal;
+  double offset = 0;
+  Box3 box;
 };
 
 /// A binary tree of boxes; leaves hold a few triangles. Nodes are stored
