@@ -110,7 +110,8 @@ class Query {
   }
   // Takes out the point obstacles within `radius` of `place`; true if any.
   bool remove_points_near(Vec2 place, double radius);
-  // Appends a section, merged into the last if it has the same behaviour.
+  // Appends a section, merged into the last if it has the same behaviour
+  // and the merged one passes.
   void append(Behavior behavior, double clearance, std::vector<Vec2> points);
   // FURTHEST: how far along `path` walking goes before the step that hits.
   double furthest(const BodyCollision& hit) const;
@@ -146,23 +147,20 @@ void Query::append(Behavior behavior, double clearance, std::vector<Vec2> points
   if (length <= kSamePlace) return;
   auto& sections = result_.sections;
   if (!sections.empty() && sections.back().behavior == behavior) {
-    BehaviorSection& last = sections.back();
-    last.points.insert(last.points.end(), points.begin() + 1, points.end());
-    last.length += length;
-    last.clearance = std::min(last.clearance, clearance);
-    return;
+    // One section if the motion passes the two in one go (its phase runs on
+    // across the join), else two.
+    std::vector<Vec2> joined = sections.back().points;
+    joined.insert(joined.end(), points.begin() + 1, points.end());
+    const Polyline whole(joined);
+    if (!test(behavior, whole, 0, whole.length()).hit) {
+      BehaviorSection& last = sections.back();
+      last.points = std::move(joined);
+      last.length += length;
+      last.clearance = std::min(last.clearance, clearance);
+      return;
+    }
   }
   sections.push_back({behavior, clearance, std::move(points), length});
-}
-
-// How far two paths from the same start run over the same points. [m]
-double common_prefix(const Polyline& a, const Polyline& b) {
-  const auto& p = a.points();
-  const auto& q = b.points();
-  double along = 0;
-  for (std::size_t k = 1; k < std::min(p.size(), q.size()) && p[k] == q[k]; ++k)
-    along += distance(p[k - 1], p[k]);
-  return along;
 }
 
 PathResult Query::find_around(const Polyline& current, double along) {
@@ -182,6 +180,16 @@ PathResult Query::find_around(const Polyline& current, double along) {
   return whole;
 }
 
+// How far two paths from the same start run over the same points. [m]
+double common_prefix(const Polyline& a, const Polyline& b) {
+  const auto& p = a.points();
+  const auto& q = b.points();
+  double along = 0;
+  for (std::size_t k = 1; k < std::min(p.size(), q.size()) && p[k] == q[k]; ++k)
+    along += distance(p[k - 1], p[k]);
+  return along;
+}
+
 bool Query::remove_points_near(Vec2 place, double radius) {
   const auto near = [&](const PointObstacle& p) { return distance(p.at, place) <= radius; };
   bool any = false;
@@ -195,8 +203,10 @@ bool Query::remove_points_near(Vec2 place, double radius) {
 }
 
 double Query::furthest(const BodyCollision& hit) const {
+  // The last boundary strictly before the contact: a contact at a boundary
+  // belongs to the step that ends there.
   const double step = body_.step_duration(Behavior::kWalk);
-  const double steps = std::floor(hit.time / step);
+  const double steps = std::max(0.0, std::ceil(hit.time / step) - 1);
   return std::min(hit.along, steps * step * body_.speed(Behavior::kWalk));
 }
 

@@ -116,6 +116,56 @@ TEST(ScenarioFile, BadInputIsNamedByFileAndField) {
             "scene.json: agents[0].goals[0]: must be finite and within 1e9 m of the origin");
 }
 
+// A box from (x0, y0, z0) to (x1, y1, z1) as a mesh, in JSON.
+std::string mesh_box(double x0, double y0, double z0, double x1, double y1, double z1) {
+  std::string v;
+  for (int k = 0; k < 8; ++k) {
+    v += (k ? ", [" : "[") + std::to_string(k & 1 ? x1 : x0) + ", " +
+         std::to_string(k & 2 ? y1 : y0) + ", " + std::to_string(k & 4 ? z1 : z0) + "]";
+  }
+  return R"({"mesh": {"vertices": [)" + v + R"(], "triangles": [[0, 1, 3], [0, 3, 2], [4, 7, 5],
+      [4, 6, 7], [0, 5, 1], [0, 4, 5], [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7],
+      [1, 7, 3]]}})";
+}
+
+TEST(ScenarioFile, ObstaclesHaveABaseOrAMesh) {
+  const Scenario s = parse_scenario(scenario_text(
+      R"("obstacles": [{"polygon": [[2, -1], [3, -1], [3, 1], [2, 1]], "base": 0.7, "height": 0.8}, )" +
+      mesh_box(4, -1, 0, 5, 1, 1) + "]"));
+  ASSERT_EQ(s.obstacles.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.obstacles[0].base, 0.7);
+  ASSERT_TRUE(s.obstacles[1].is_mesh());
+  EXPECT_EQ(s.obstacles[1].mesh.triangles.size(), 12u);
+  // The mesh's footprint blocks the navigation mesh like the box it is.
+  const NavMesh mesh = navmesh_of(s);
+  EXPECT_EQ(mesh.clearance({4.5, 0}), 0.0);
+  EXPECT_NEAR(mesh.clearance({4.5, 1.5}), 0.5, 1e-9);
+  // The plan file keeps both.
+  Plan plan;
+  plan.obstacles = s.obstacles;
+  const Plan back = parse_plan(plan_to_json(plan), "plan.json");
+  EXPECT_DOUBLE_EQ(back.obstacles[0].base, 0.7);
+  EXPECT_EQ(back.obstacles[1].mesh.vertices.size(), 8u);
+}
+
+TEST(ScenarioFile, BadThreeDimensionalObstaclesAreNamed) {
+  const auto obstacle = [](const std::string& json) {
+    return error_of(scenario_text(R"("obstacles": [)" + json + "]"));
+  };
+  EXPECT_EQ(obstacle(R"({"polygon": [[0, 0], [1, 0], [1, 1]], "base": 2, "height": 1})"),
+            "scene.json: obstacles[0].base: must be in [0, height) = [0, 1.000000), got 2.000000");
+  EXPECT_EQ(obstacle(R"({"mesh": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 3]]}})"),
+            "scene.json: obstacles[0].mesh.triangles[0][2]: vertex index 3 is not in [0, 3)");
+  EXPECT_EQ(obstacle(R"({"mesh": {"vertices": [[0, 0, 0], [1, 0, NaN], [0, 1, 0]], "triangles": [[0, 1, 2]]}})"),
+            "scene.json: obstacles[0].mesh.vertices[1][2]: must be a finite number, got NaN");
+  EXPECT_EQ(obstacle(R"({"mesh": {"vertices": [], "triangles": []}})"),
+            "scene.json: obstacles[0].mesh.triangles: needs at least one triangle");
+  EXPECT_EQ(obstacle(R"({"mesh": {"vertices": [[0, 0]], "triangles": []}})"),
+            "scene.json: obstacles[0].mesh.vertices[0]: expected [x, y, z], got 2 items");
+  EXPECT_EQ(obstacle(R"({"polygon": [[0, 0], [1, 0], [1, 1]], "mesh": {"vertices": [], "triangles": []}})"),
+            "scene.json: obstacles[0].polygon: not with \"mesh\": a mesh gives its own shape");
+}
+
 TEST(ScenarioFile, MissingFileIsNamed) {
   try {
     load_scenario("/nonexistent/scene.json");

@@ -1,0 +1,190 @@
+// The behavioural path planner on the paper's scenes: the sections and their
+// behaviours, zero contacts along them, the mesh as it was, determinism.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "footfall/fullbody/behavioral_planner.hpp"
+#include "footfall/fullbody/body_sweep.hpp"
+#include "footfall/scenes/behavior_scenes.hpp"
+
+namespace footfall {
+namespace {
+
+// Everything a query needs, for one scene.
+struct Planning {
+  explicit Planning(const Scenario& s)
+      : scenario(s),
+        mesh(navmesh_of(s)),
+        scene(s.obstacles),
+        body(s.character),
+        planner(mesh, scene, body, s.planner) {}
+  Scenario scenario;
+  NavMesh mesh;
+  CollisionScene scene;
+  BodyModel body;
+  BehavioralPlanner planner;
+};
+
+std::vector<std::string> behaviors_of(const BehaviorPath& path) {
+  std::vector<std::string> names;
+  for (const BehaviorSection& s : path.sections) names.push_back(to_string(s.behavior));
+  return names;
+}
+
+// Every section swept with its own behaviour meets nothing, and the
+// sections join end to end.
+void expect_collision_free(const Planning& setup, const BehaviorPath& path) {
+  for (std::size_t i = 0; i < path.sections.size(); ++i) {
+    const BehaviorSection& s = path.sections[i];
+    const BodyCollision hit =
+        sweep_body(setup.scene, setup.body, s.behavior, s.points, setup.scenario.planner.pose_rate);
+    EXPECT_FALSE(hit.hit) << "section " << i << " (" << to_string(s.behavior) << ") meets obstacles["
+                          << hit.contact.obstacle << "] at (" << hit.root.x << ", " << hit.root.y
+                          << ")";
+    if (i > 0) {
+      EXPECT_TRUE(path.sections[i - 1].points.back() == s.points.front()) << i;
+    }
+  }
+}
+
+TEST(BehavioralPlanner, DoorBendsAroundTheClutterAndHoldsTheArmsIn) {
+  const BehaviorScene scene = door_scene();
+  Planning setup(scene.scenario);
+  const BehaviorPath path = setup.planner.plan(scene.start, scene.goals[0]);
+  ASSERT_EQ(path.status, BehaviorPathStatus::kFound) << path.reason;
+  EXPECT_EQ(behaviors_of(path), (std::vector<std::string>{"walk", "arms_in", "walk"}));
+  EXPECT_GT(path.point_obstacles, 0);  // the cabinets bend the path
+  // The arms-in section spans the door in the wall at x = 0.
+  EXPECT_LT(path.sections[1].points.front().x, -0.1);
+  EXPECT_GT(path.sections[1].points.back().x, 0.1);
+  expect_collision_free(setup, path);
+}
+
+TEST(BehavioralPlanner, CorridorTakesArmsInThenWalkThenSideStep) {
+  const BehaviorScene scene = corridor_scene();
+  Planning setup(scene.scenario);
+  const BehaviorPath path = setup.planner.plan(scene.start, scene.goals[0]);
+  ASSERT_EQ(path.status, BehaviorPathStatus::kFound) << path.reason;
+  EXPECT_EQ(behaviors_of(path),
+            (std::vector<std::string>{"walk", "arms_in", "walk", "side_step", "walk"}));
+  // The side-step section holds the narrowest part, x from 4.5 to 6.5.
+  EXPECT_LT(path.sections[3].points.front().x, 4.5);
+  EXPECT_GT(path.sections[3].points.back().x, 6.5);
+  expect_collision_free(setup, path);
+}
+
+TEST(BehavioralPlanner, AGapNarrowerThanSideSteppingHasNoPath) {
+  const BehaviorScene scene = gap_scene();
+  Planning setup(scene.scenario);
+  const BehaviorPath path = setup.planner.plan(scene.start, scene.goals[0]);
+  EXPECT_EQ(path.status, BehaviorPathStatus::kNoPath);
+  EXPECT_TRUE(path.sections.empty());
+  EXPECT_FALSE(path.reason.empty());
+}
+
+TEST(BehavioralPlanner, AnOpenFieldIsOneWalkAlongTheShortestPath) {
+  const BehaviorScene scene = open_field_scene();
+  Planning setup(scene.scenario);
+  const BehaviorPath path = setup.planner.plan(scene.start, scene.goals[0]);
+  ASSERT_EQ(path.status, BehaviorPathStatus::kFound);
+  ASSERT_EQ(behaviors_of(path), std::vector<std::string>{"walk"});
+  EXPECT_NEAR(path.length, distance(scene.start, scene.goals[0]), 1e-9);
+  EXPECT_EQ(path.point_obstacles, 0);
+}
+
+TEST(BehavioralPlanner, TheMeshAnswersAsBeforeAndQueriesRepeat) {
+  for (const std::string name : {"door", "corridor", "random_dense_10"}) {
+    const BehaviorScene scene = behavior_scene(name);
+    Planning setup(scene.scenario);
+    std::vector<PathResult> before;
+    for (const Vec2 goal : scene.goals) before.push_back(setup.mesh.find_path({scene.start, goal, 0.2}));
+    const std::size_t triangles = setup.mesh.triangle_count();
+    int inserted = 0;
+    std::vector<BehaviorPath> first;
+    for (const Vec2 goal : scene.goals) {
+      first.push_back(setup.planner.plan(scene.start, goal));
+      inserted += first.back().point_obstacles;
+    }
+    EXPECT_GT(inserted, 0) << name;
+    EXPECT_EQ(setup.mesh.triangle_count(), triangles) << name;
+    for (std::size_t g = 0; g < scene.goals.size(); ++g) {
+      const PathResult after = setup.mesh.find_path({scene.start, scene.goals[g], 0.2});
+      ASSERT_EQ(after.status, before[g].status) << name << " " << g;
+      ASSERT_EQ(after.points.size(), before[g].points.size()) << name << " " << g;
+      for (std::size_t k = 0; k < after.points.size(); ++k)
+        EXPECT_TRUE(after.points[k] == before[g].points[k]) << name << " " << g;
+      // Determinism: the same query gives the same sections.
+      const BehaviorPath again = setup.planner.plan(scene.start, scene.goals[g]);
+      EXPECT_EQ(again.status, first[g].status);
+      ASSERT_EQ(again.sections.size(), first[g].sections.size()) << name << " " << g;
+      for (std::size_t s = 0; s < again.sections.size(); ++s) {
+        EXPECT_EQ(again.sections[s].behavior, first[g].sections[s].behavior);
+        EXPECT_EQ(again.sections[s].length, first[g].sections[s].length);
+      }
+    }
+  }
+}
+
+TEST(BehavioralPlanner, RandomEnvironmentsGiveCollisionFreeSections) {
+  for (const std::string name : {"random_normal_6", "random_normal_10", "random_dense_6",
+                                  "random_dense_10"}) {
+    const BehaviorScene scene = behavior_scene(name);
+    Planning setup(scene.scenario);
+    int found = 0, narrower = 0;
+    for (const Vec2 goal : scene.goals) {
+      const BehaviorPath path = setup.planner.plan(scene.start, goal);
+      ASSERT_NE(path.status, BehaviorPathStatus::kTimeLimit) << name;
+      if (path.status != BehaviorPathStatus::kFound) continue;
+      ++found;
+      for (const BehaviorSection& s : path.sections) narrower += s.behavior != Behavior::kWalk;
+      expect_collision_free(setup, path);
+    }
+    EXPECT_GE(found, 90) << name;
+    if (name.find("dense") != std::string::npos) {
+      EXPECT_GT(narrower, 0) << name;
+    }
+  }
+}
+
+TEST(BehavioralPlanner, TheHorizonCutsTheWay) {
+  BehaviorScene scene = open_field_scene();
+  scene.scenario.planner.behavior_horizon = 3.0;
+  Planning setup(scene.scenario);
+  const BehaviorPath path = setup.planner.plan(scene.start, scene.goals[0]);
+  EXPECT_EQ(path.status, BehaviorPathStatus::kHorizon);
+  EXPECT_NEAR(path.length, 3.0, 1e-9);
+}
+
+TEST(BehavioralPlanner, OutOfTimeTheRestIsOneSideStepSection) {
+  BehaviorScene scene = corridor_scene();
+  scene.scenario.planner.behavior_time_limit = 1e-9;
+  Planning setup(scene.scenario);
+  const BehaviorPath path = setup.planner.plan(scene.start, scene.goals[0]);
+  EXPECT_EQ(path.status, BehaviorPathStatus::kTimeLimit);
+  ASSERT_FALSE(path.sections.empty());
+  EXPECT_EQ(path.sections.back().behavior, Behavior::kSideStep);
+  EXPECT_TRUE(path.sections.back().points.back() == scene.goals[0]);
+}
+
+TEST(BehavioralPlanner, ObstaclesAboveTheHeadAreNotInTheWay) {
+  // A beam across the way, its underside above the head: walked under.
+  Scenario s;
+  s.obstacles.push_back(prism({{2, -3}, {2.3, -3}, {2.3, 3}, {2, 3}}, 2.3, 1.9));
+  s.agents.push_back({"walker", {0, 0}, 0.0, {{5, 0}}});
+  Planning setup(s);
+  const BehaviorPath under = setup.planner.plan({0, 0}, {5, 0});
+  ASSERT_EQ(under.status, BehaviorPathStatus::kFound);
+  EXPECT_EQ(behaviors_of(under), std::vector<std::string>{"walk"});
+  EXPECT_NEAR(under.length, 5.0, 1e-9);
+  // Lowered below the head, it blocks the way like a wall.
+  s.obstacles[0].base = 1.5;
+  Planning lowered(s);
+  const BehaviorPath around = lowered.planner.plan({0, 0}, {5, 0});
+  ASSERT_EQ(around.status, BehaviorPathStatus::kFound);
+  EXPECT_GT(around.length, 6.0);
+}
+
+}  // namespace
+}  // namespace footfall
