@@ -15,5 +15,9 @@ void run_bench(int repeat, std::ostream& out);
 /// agent per 20 Hz tick of the fastest run to `out` (the plans are the same
 /// every time; on a shared machine the fastest run is the least disturbed).
 void run_crowd_bench(int threads, int repeat, std::ostream& out);
+/// Times the full-body behavioural planner on the paper's random
+/// environments (normal and dense, goals at 6 and 10 steps), the fastest of
+/// `repeat` runs per query.
+void run_behavior_bench(int repeat, std::ostream& out);
 
 }  // namespace footfall::tools

@@ -52,6 +52,9 @@ const char* const kUsage =
     "       footfall bench --crowds [--threads N] [--repeat N]\n"
     "                                         plan the crowd workloads of the paper's table 1\n"
     "                                         (the fastest of N runs each; default 1)\n"
+    "       footfall bench --behaviors [--repeat N]\n"
+    "                                         time the full-body planner in the random\n"
+    "                                         environments (the fastest of N runs; default 5)\n"
     "       footfall --version | --help\n";
 // clang-format on
 
@@ -282,7 +285,7 @@ int run(int argc, char** argv) {
   if (verb == "path") return print_path(argc, argv);
   if (verb == "bench") {
     int repeat = 0, threads = 1;  // repeat 0: each kind's default
-    bool crowds = false;
+    bool crowds = false, behaviors = false;
     for (int i = 2; i < argc; ++i) {
       const std::string arg = argv[i];
       if (arg == "--repeat" && i + 1 < argc) {
@@ -291,11 +294,16 @@ int run(int argc, char** argv) {
         threads = parse_whole(arg, argv[++i], 1, 64);
       } else if (arg == "--crowds") {
         crowds = true;
+      } else if (arg == "--behaviors") {
+        behaviors = true;
       } else {
         throw UsageError("unknown option or missing value: " + user_text(arg));
       }
     }
-    if (crowds)
+    if (crowds && behaviors) throw UsageError("bench: --crowds or --behaviors, not both");
+    if (behaviors)
+      footfall::tools::run_behavior_bench(repeat > 0 ? repeat : 5, std::cout);
+    else if (crowds)
       footfall::tools::run_crowd_bench(threads, repeat > 0 ? repeat : 1, std::cout);
     else
       footfall::tools::run_bench(repeat > 0 ? repeat : 20, std::cout);
