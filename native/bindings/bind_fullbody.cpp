@@ -3,6 +3,7 @@
 #include "bindings.hpp"
 #include "footfall/crowd/scenario.hpp"
 #include "footfall/fullbody/behavioral_planner.hpp"
+#include "footfall/fullbody/body_check.hpp"
 #include "footfall/fullbody/body_sweep.hpp"
 #include "footfall/scenes/behavior_scenes.hpp"
 
@@ -99,6 +100,20 @@ void bind_fullbody(py::module_& m) {
           py::arg("points"), py::arg("behavior"),
           "TESTCOLLISION: the first pose of the behaviour along the points that meets an "
           "obstacle, as {limb, point, root, time, along, obstacle}, or None.");
+
+  py::class_<AgentBodyCheck>(m, "AgentBodyCheck", "One agent's full-body check.")
+      .def_readonly("poses", &AgentBodyCheck::poses)
+      .def_readonly("penetrations", &AgentBodyCheck::penetrations)
+      .def_readonly("deepest", &AgentBodyCheck::deepest);
+  py::class_<BodyCheck>(m, "BodyCheck", "A plan's full-body check (body_check.hpp).")
+      .def_readonly("agents", &BodyCheck::agents)
+      .def_readonly("poses", &BodyCheck::poses)
+      .def_readonly("penetrations", &BodyCheck::penetrations)
+      .def_readonly("deepest", &BodyCheck::deepest);
+  m.def("check_body", &check_body, py::arg("plan"), py::arg("pose_rate") = 30.0,
+        py::call_guard<py::gil_scoped_release>(),
+        "Sweeps every agent's body, in each step's behaviour and phase, along its planned COM "
+        "path: the poses with a limb deeper than 1 mm in an obstacle, and the deepest.");
 
   m.def(
       "behavior_scene",

@@ -140,6 +140,8 @@ void bind_planner(py::module_& m) {
       .def_readonly("searches", &AgentPlan::searches)
       .def_readonly("nodes_generated", &AgentPlan::nodes_generated)
       .def_readonly("nodes_expanded", &AgentPlan::nodes_expanded)
+      .def_readonly("sections", &AgentPlan::sections,
+                    "The annotated way (BehaviorSection), joined end to end.")
       .def("total_cost", &AgentPlan::total_cost)
       .def("end_time", &AgentPlan::end_time);
   m.def(

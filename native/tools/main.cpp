@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bench_command.hpp"
+#include "footfall/fullbody/body_check.hpp"
 #include "footfall/io/path_json.hpp"
 #include "footfall/io/plan_file.hpp"
 #include "footfall/io/scenario_file.hpp"
@@ -42,7 +43,8 @@ const char* const kUsage =
     "                                         plan every agent of a scenario (JSON, or SteerSuite\n"
     "                                         .xml) on N threads (default 1; same plan either way)\n"
     "       footfall demo [-o PLAN] [--threads N]  the built-in demo (default out/demo-plan.json)\n"
-    "       footfall metrics PLAN             our figures and SteerBench's, per agent, at 20 Hz\n"
+    "       footfall metrics PLAN             our figures and SteerBench's, per agent, at 20 Hz,\n"
+    "                                         and the full-body check of limbs against obstacles\n"
     "       footfall path SCENARIO --from X,Y --to X,Y --radius R\n"
     "                                         shortest path for a disc of radius R, as JSON\n"
     "       footfall path SCENARIO --from X,Y --to X,Y --behaviors\n"
@@ -93,23 +95,28 @@ void print_table(const footfall::Plan& plan, std::ostream& out) {
   }
 }
 
-void print_metrics(const footfall::PlanMetrics& metrics, std::ostream& out) {
+void print_metrics(const footfall::PlanMetrics& metrics, const footfall::BodyCheck& body,
+                   std::ostream& out) {
   const int name_width =
       column_width(metrics.agents, 14, [](const footfall::AgentMetrics& m) { return m.name; });
   out << std::left << std::setw(name_width) << "agent" << std::setw(9) << "reached" << std::right
       << std::setw(9) << "time [s]" << std::setw(10) << "path [m]" << std::setw(11) << "effort [J]"
       << std::setw(10) << "overlaps" << std::setw(11) << "episodes" << std::setw(10) << "energy"
-      << std::setw(13) << "acceleration"
+      << std::setw(13) << "acceleration" << std::setw(12) << "limb hits"
       << "\n";
-  for (const footfall::AgentMetrics& m : metrics.agents) {
+  for (std::size_t i = 0; i < metrics.agents.size(); ++i) {
+    const footfall::AgentMetrics& m = metrics.agents[i];
     out << std::left << std::setw(name_width) << m.name << std::setw(9)
         << (m.reached ? "yes" : "no") << std::right << std::fixed << std::setprecision(2)
         << std::setw(9) << m.time << std::setw(10) << m.path_length << std::setprecision(1)
         << std::setw(11) << m.effort << std::setw(10) << m.overlaps << std::setw(11)
         << m.collision_episodes << std::setw(10) << m.energy << std::setw(13) << m.acceleration
-        << "\n";
+        << std::setw(12) << body.agents[i].penetrations << "\n";
   }
   out << std::setprecision(2) << "five-circle overlaps: " << metrics.overlaps << "\n"
+      << "full body (30 poses/s): " << body.penetrations << " poses with a limb in an obstacle of "
+      << body.poses << ", deepest " << std::setprecision(3) << body.deepest << " m\n"
+      << std::setprecision(2)
       << "SteerBench (" << metrics.rate << " Hz): composite01 " << metrics.composite01
       << ", composite02 " << metrics.composite02 << "\n";
 }
@@ -279,7 +286,8 @@ int run(int argc, char** argv) {
     const auto positional = parse_arguments(argc, argv, options);
     if (positional.size() != 1 || !options.output.empty())
       throw UsageError("metrics takes one plan file");
-    print_metrics(footfall::measure_plan(footfall::load_plan(positional[0])), std::cout);
+    const footfall::Plan plan = footfall::load_plan(positional[0]);
+    print_metrics(footfall::measure_plan(plan), footfall::check_body(plan), std::cout);
     return 0;
   }
   if (verb == "path") return print_path(argc, argv);

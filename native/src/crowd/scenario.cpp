@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "crowd/behavior_sections.hpp"
 #include "footfall/model/footstep.hpp"
 #include "footfall/planner/planner.hpp"
 #include "util/field_path.hpp"
@@ -118,6 +119,7 @@ Plan plan_scenario(const Scenario& scenario, const RunControl& control) {
   plan.character = scenario.character;
   plan.obstacles = scenario.obstacles;
   plan.agents = plan_agents(scenario.agents, planner, &mesh, control);
+  if (!control.cancelled()) detail::annotate_behaviors(scenario, plan);
   if (control.cancelled()) plan.status = Status::kCancelled;
   return plan;
 }

@@ -100,6 +100,18 @@ Json agent_to_json(const AgentPlan& agent) {
   Json steps = Json::array();
   for (const Footstep& step : agent.footsteps) steps.push_back(footstep_to_json(step));
   json["footsteps"] = std::move(steps);
+  if (!agent.sections.empty()) {
+    Json sections = Json::array();
+    for (const BehaviorSection& section : agent.sections) {
+      Json points = Json::array();
+      for (const Vec2 p : section.points) points.push_back(to_json(p));
+      sections.push_back({{"behavior", to_string(section.behavior)},
+                          {"clearance", section.clearance},
+                          {"points", std::move(points)},
+                          {"length", section.length}});
+    }
+    json["sections"] = std::move(sections);
+  }
   json["stats"] = {
       {"goals_reached", agent.goals_reached},     {"searches", agent.searches},
       {"nodes_generated", agent.nodes_generated}, {"nodes_expanded", agent.nodes_expanded},
@@ -176,7 +188,8 @@ Footstep read_footstep(const Json& json, const std::string& path) {
 AgentPlan read_agent(const Json& json, const std::string& path, const CharacterParams& character) {
   expect_object(
       json, path,
-      {"name", "status", "leaves", "reason", "stopped_at", "start", "footsteps", "stats"});
+      {"name", "status", "leaves", "reason", "stopped_at", "start", "footsteps", "sections",
+       "stats"});
   AgentPlan agent;
   agent.name = string(require(json, path, "name"), child(path, "name"));
   agent.status = read_enum(require(json, path, "status"), child(path, "status"),
@@ -191,6 +204,25 @@ AgentPlan read_agent(const Json& json, const std::string& path, const CharacterP
     agent.footsteps.push_back(read_footstep(steps[i], item(steps_path, i)));
     if (i > 0 && agent.footsteps[i].start_time < agent.footsteps[i - 1].end_time - 1e-9) {
       fail(child(item(steps_path, i), "start_time"), "starts before the previous step ends");
+    }
+  }
+  if (json.contains("sections")) {
+    const std::string sections_path = child(path, "sections");
+    const Json& sections = array(json["sections"], sections_path);
+    for (std::size_t i = 0; i < sections.size(); ++i) {
+      const std::string at = item(sections_path, i);
+      expect_object(sections[i], at, {"behavior", "clearance", "points", "length"});
+      BehaviorSection section;
+      section.behavior = read_enum(require(sections[i], at, "behavior"), child(at, "behavior"),
+                                   {Behavior::kWalk, Behavior::kArmsIn, Behavior::kSideStep});
+      section.clearance = number(require(sections[i], at, "clearance"), child(at, "clearance"));
+      const std::string points_path = child(at, "points");
+      const Json& points = array(require(sections[i], at, "points"), points_path);
+      for (std::size_t k = 0; k < points.size(); ++k)
+        section.points.push_back(point(points[k], item(points_path, k)));
+      if (section.points.size() < 2) fail(points_path, "needs at least 2 points");
+      section.length = number(require(sections[i], at, "length"), child(at, "length"));
+      agent.sections.push_back(std::move(section));
     }
   }
   // The start: as written, or standing where the first step begins.

@@ -12,16 +12,9 @@
 #include "footfall/model/footstep.hpp"
 #include "footfall/model/params.hpp"
 #include "footfall/navmesh/navmesh.hpp"
+#include "footfall/plan/plan.hpp"
 
 namespace footfall {
-
-/// One section of an annotated path.
-struct BehaviorSection {
-  Behavior behavior = Behavior::kWalk;
-  double clearance = 0;      ///< Radius of the path query the section came from. [m]
-  std::vector<Vec2> points;  ///< From the section's start to its end. [m]
-  double length = 0;         ///< [m]
-};
 
 /// How a behavioural query ended.
 enum class BehaviorPathStatus {

@@ -23,6 +23,15 @@ enum class AgentStatus {
 const char* to_string(AgentStatus status);
 
 /// The plan of one agent: its start and its timed footsteps.
+/// One section of an agent's way, with the behaviour that passes it (the
+/// full-body planner's annotated path, fullbody/behavioral_planner.hpp).
+struct BehaviorSection {
+  Behavior behavior = Behavior::kWalk;
+  double clearance = 0;      ///< Radius of the path query the section came from. [m]
+  std::vector<Vec2> points;  ///< From the section's start to its end. [m]
+  double length = 0;         ///< [m]
+};
+
 struct AgentPlan {
   std::string name;                            ///< The agent's name.
   AgentStatus status = AgentStatus::kPartial;  ///< Reached or partial.
@@ -38,6 +47,9 @@ struct AgentPlan {
   int searches = 0;               ///< Footstep searches run.
   long long nodes_generated = 0;  ///< Summed over the searches.
   long long nodes_expanded = 0;   ///< Summed over the searches.
+  /// The annotated way from the start through every goal, joined end to end;
+  /// each footstep's behaviour is that of its section.
+  std::vector<BehaviorSection> sections;
 
   /// Sum of the step costs. [J]
   double total_cost() const;
