@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "crowd/behavior_sections.hpp"
+#include "footfall/fullbody/body_model.hpp"
 #include "footfall/model/footstep.hpp"
 #include "footfall/planner/planner.hpp"
 #include "util/field_path.hpp"
@@ -71,6 +72,7 @@ void check_standing_apart(const Scenario& scenario) {
 void validate(const Scenario& scenario) {
   validate(scenario.character, "character");
   validate(scenario.planner, "planner");
+  const BodyModel body(scenario.character);  // its motions and clearances
   const ObstacleMap obstacles(scenario.obstacles, scenario.character.body_height);
   const FootstepPlanner planner(scenario.character, scenario.planner, obstacles);
   std::set<std::string> names;

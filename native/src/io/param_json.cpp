@@ -2,8 +2,11 @@
 // JSON (io/param_json.hpp).
 #include "io/param_json.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <type_traits>
 
+#include "footfall/model/footstep.hpp"
 #include "model/param_checks.hpp"
 
 namespace footfall {
@@ -116,10 +119,78 @@ Json struct_to_json(const S& source) {
 
 }  // namespace
 
+namespace {
+
+constexpr Behavior kBehaviors[] = {Behavior::kWalk, Behavior::kArmsIn, Behavior::kSideStep};
+
+// One pose: every limb by name, as [ax, ay, az, bx, by, bz, radius].
+BodyPose read_pose(const Json& json, const std::string& path) {
+  if (!json.is_object()) fail(path, "expected an object of limbs, got " + type_name(json));
+  std::vector<std::string> limbs;
+  for (int limb = 0; limb < kLimbCount; ++limb) limbs.push_back(to_string(static_cast<Limb>(limb)));
+  for (auto it = json.begin(); it != json.end(); ++it)
+    if (std::find(limbs.begin(), limbs.end(), it.key()) == limbs.end())
+      fail(child(path, it.key()), "unknown limb");
+  BodyPose pose;
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    const std::string at = child(path, limbs[limb]);
+    const Json& c = array(require(json, path, limbs[limb].c_str()), at);
+    if (c.size() != 7) fail(at, "expected [ax, ay, az, bx, by, bz, radius], got " +
+                                    std::to_string(c.size()) + " items");
+    double v[7];
+    for (int k = 0; k < 7; ++k) v[k] = number(c[k], item(at, k));
+    pose[limb] = {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6]};
+  }
+  return pose;
+}
+
+void read_motions(const Json& json, const std::string& path, CharacterParams& params) {
+  if (!json.is_object()) fail(path, "expected an object, got " + type_name(json));
+  for (auto it = json.begin(); it != json.end(); ++it) {
+    const std::string at = child(path, it.key());
+    const Behavior* behavior = std::find_if(std::begin(kBehaviors), std::end(kBehaviors),
+                                            [&](Behavior b) { return it.key() == to_string(b); });
+    if (behavior == std::end(kBehaviors)) fail(at, "unknown behaviour (walk, arms_in, side_step)");
+    expect_object(it.value(), at, {"cycle_duration", "speed", "poses"});
+    BehaviorMotion motion;
+    motion.cycle_duration =
+        number(require(it.value(), at, "cycle_duration"), child(at, "cycle_duration"));
+    motion.speed = number(require(it.value(), at, "speed"), child(at, "speed"));
+    const std::string poses_path = child(at, "poses");
+    const Json& poses = array(require(it.value(), at, "poses"), poses_path);
+    for (std::size_t i = 0; i < poses.size(); ++i)
+      motion.poses.push_back(read_pose(poses[i], item(poses_path, i)));
+    params.motions[static_cast<int>(*behavior)] = std::move(motion);
+  }
+}
+
+Json motions_to_json(const CharacterParams& params) {
+  Json json = Json::object();
+  for (const Behavior behavior : kBehaviors) {
+    const BehaviorMotion& motion = params.motions[static_cast<int>(behavior)];
+    if (motion.empty()) continue;
+    Json poses = Json::array();
+    for (const BodyPose& pose : motion.poses) {
+      Json limbs = Json::object();
+      for (int limb = 0; limb < kLimbCount; ++limb) {
+        const Capsule& c = pose[limb];
+        limbs[to_string(static_cast<Limb>(limb))] = {c.a.x, c.a.y, c.a.z, c.b.x, c.b.y, c.b.z, c.radius};
+      }
+      poses.push_back(std::move(limbs));
+    }
+    json[to_string(behavior)] = {
+        {"cycle_duration", motion.cycle_duration}, {"speed", motion.speed}, {"poses", poses}};
+  }
+  return json;
+}
+
+}  // namespace
+
 void read_character(const Json& json, const std::string& path, CharacterParams& params) {
-  // A flat foot-limit key sets both feet.
+  // A flat foot-limit key sets both feet; "behaviors" holds sampled motions.
   read_struct(json, path, params, [&](const std::string& key, const Json& value,
                                       const std::string& field) {
+    if (key == "behaviors") return read_motions(value, field, params);
     if (!read_field(value, key, field, params.left)) fail(field, "unknown field");
     read_field(value, key, field, params.right);
   });
@@ -214,7 +285,12 @@ Json obstacle_to_json(const Obstacle& obstacle) {
   return json;
 }
 
-Json character_to_json(const CharacterParams& params) { return struct_to_json(params); }
+Json character_to_json(const CharacterParams& params) {
+  Json json = struct_to_json(params);
+  Json motions = motions_to_json(params);
+  if (!motions.empty()) json["behaviors"] = std::move(motions);
+  return json;
+}
 
 }  // namespace detail
 
