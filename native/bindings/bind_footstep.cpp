@@ -113,7 +113,9 @@ void bind_footstep(py::module_& m) {
   m.def("com_at", py::overload_cast<const Footstep&, double>(&com_at), py::arg("step"),
         py::arg("t"), "COM position and velocity of a step at absolute time t.");
   m.def("torso_circles", &torso_circles, py::arg("com"), py::arg("facing"), py::arg("character"),
-        py::arg("pad") = 0.0);
+        py::arg("pad") = 0.0, py::arg("behavior") = Behavior::kWalk,
+        "The torso circles (centre, left and right shoulder); with the arms in, the shoulders "
+        "come in to shoulder_width.");
 }
 
 }  // namespace footfall::bindings

@@ -76,6 +76,22 @@ Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from,
   return {std::move(tight.points), tight.length};
 }
 
+Way way_start(const Way& way, double length) {
+  if (way.length <= length) return way;
+  Way start{{way.points.front()}, length};
+  double along = 0.0;
+  for (std::size_t k = 1; k < way.points.size(); ++k) {
+    const double piece = distance(way.points[k - 1], way.points[k]);
+    if (along + piece >= length) {
+      start.points.push_back(point_along(way.points, length));
+      return start;
+    }
+    start.points.push_back(way.points[k]);
+    along += piece;
+  }
+  return start;
+}
+
 /// A local goal out of sight is looked for nearer by steps of kSightBackOff,
 /// down to kMinAhead: a short-horizon search cannot go round a wall to a
 /// point behind it. The agent rests at a local goal until it replans, so it

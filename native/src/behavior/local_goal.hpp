@@ -23,6 +23,9 @@ struct Way {
 Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal,
                bool roomy = false);
 
+/// The first `length` metres of `way` (all of it if shorter). [m]
+Way way_start(const Way& way, double length);
+
 /// Where the next search aims, and whether that is the goal itself.
 struct LocalGoal {
   Vec2 point;

@@ -1,15 +1,20 @@
-// Footfall — each agent's annotated way (the full-body planner's sections)
-// and the behaviour of each of its footsteps.
+// Footfall — each agent's annotated way: the full-body planner's sections
+// from its start through its goals.
 #pragma once
 
+#include <vector>
+
 #include "footfall/crowd/scenario.hpp"
+#include "footfall/fullbody/body_model.hpp"
+#include "footfall/fullbody/collision_scene.hpp"
 
 namespace footfall::detail {
 
-/// Plans every agent's annotated way, from its start through its goals, into
-/// plan.agents[i].sections, and gives each footstep the behaviour of the
-/// section it lies in (docs/full-body.md): a lateral step is side_step
-/// always; a walking step in a side_step section walks with the arms in.
-void annotate_behaviors(const Scenario& scenario, Plan& plan);
+/// Plans the annotated way of every agent of `scenario` (its obstacles in
+/// `scene`, its character's `body`) into agents[i].sections (agents: the
+/// scenario's, in its order): from its start to its first goal, on to the
+/// next, as far as there is a way.
+void plan_sections(const Scenario& scenario, const CollisionScene& scene, const BodyModel& body,
+                   std::vector<AgentSpec>& agents);
 
 }  // namespace footfall::detail

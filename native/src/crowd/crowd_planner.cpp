@@ -63,14 +63,93 @@ void check_agent(const AgentSpec& agent) {
   }
 }
 
-/// The way from `from` to `goal`: one of `known` if it starts and ends there
-/// (the mesh does not change while the agents plan, so it would come out the
-/// same), else measured anew.
-Way way_toward(const std::vector<KnownWay>& known, const NavMesh* mesh,
-               const CharacterParams& character, Vec2 from, Vec2 goal, bool roomy) {
-  for (const KnownWay& k : known)
+/// An agent's annotated way split at its goals (the sections end each leg
+/// exactly at its goal).
+std::vector<std::vector<Vec2>> guides_of(const AgentSpec& agent) {
+  std::vector<std::vector<Vec2>> guides(agent.goals.size());
+  std::size_t leg = 0;
+  for (const BehaviorSection& section : agent.sections) {
+    for (const Vec2 p : section.points) {
+      if (leg >= guides.size()) break;
+      if (guides[leg].empty() || !(guides[leg].back() == p)) guides[leg].push_back(p);
+      if (p == agent.goals[leg]) {
+        ++leg;
+        if (leg < guides.size()) guides[leg].push_back(p);
+      }
+    }
+  }
+  return guides;
+}
+
+/// The annotated way to the goal from `from`: from the nearest point of the
+/// guide on, when that point is within kGuideReach and in sight (the torso
+/// circle passes); else nothing, and the way is measured on the mesh.
+constexpr double kGuideReach = 1.0;  // [m]
+bool guided_way(const std::vector<Vec2>& guide, const NavMesh* mesh,
+                const CharacterParams& character, Vec2 from, Way& way) {
+  if (guide.size() < 2) return false;
+  double nearest = std::numeric_limits<double>::infinity();
+  std::size_t piece = 0;
+  Vec2 join;
+  for (std::size_t k = 1; k < guide.size(); ++k) {
+    const Vec2 p = closest_on_segment(from, guide[k - 1], guide[k]);
+    const double d = distance(from, p);
+    if (d < nearest) {
+      nearest = d;
+      piece = k;
+      join = p;
+    }
+  }
+  if (nearest > kGuideReach) return false;
+  if (mesh != nullptr && nearest > 0.0 &&
+      mesh->clearance_between(from, join, character.torso_radius) < character.torso_radius)
+    return false;
+  way.points = {from};
+  if (!(join == from)) way.points.push_back(join);
+  way.points.insert(way.points.end(), guide.begin() + static_cast<long>(piece), guide.end());
+  way.length = 0.0;
+  for (std::size_t k = 1; k < way.points.size(); ++k)
+    way.length += distance(way.points[k - 1], way.points[k]);
+  return true;
+}
+
+/// The way from `from` to walker w's current goal: one of its known ways if
+/// one starts and ends there (the mesh does not change while the agents plan,
+/// so it would come out the same); else its annotated way where it has one
+/// (unless it takes the roomiest ways, stuck once); else measured anew.
+Way way_toward(const Walker& w, const NavMesh* mesh, const CharacterParams& character, Vec2 from) {
+  const Vec2 goal = w.spec->goals[w.goal];
+  for (const KnownWay& k : w.ways)
     if (k.from == from && k.goal == goal) return k.way;
-  return footfall::way_toward(mesh, character, from, goal, roomy);
+  Way way;
+  if (!w.roomy && w.goal < w.guides.size() && guided_way(w.guides[w.goal], mesh, character, from, way))
+    return way;
+  return footfall::way_toward(mesh, character, from, goal, w.roomy);
+}
+
+/// Near a narrower section (walking with the arms in, side-stepping) a search
+/// aims no farther than kNarrowAim along the way, the middle of the passage
+/// (the annotated way keeps to it): a passage a few centimetres wider than
+/// the body is entered square and centred, which steps aimed at a goal 10 m
+/// on do not find. "Near": within kNarrowAhead along the way. [m]
+constexpr double kNarrowAim = 1.5;
+constexpr double kNarrowAhead = 3.0;
+
+LocalGoal aim_of(const Walker& w, const FootstepPlanner& planner, const NavMesh* mesh,
+                 const Way& way) {
+  if (w.guides.empty() || w.roomy) return local_goal(planner, mesh, way);
+  bool narrow = false;
+  const Way ahead = way_start(way, kNarrowAhead);
+  for (std::size_t k = 1; k < ahead.points.size() && !narrow; ++k) {
+    const Vec2 a = ahead.points[k - 1], b = ahead.points[k];
+    const int samples = 1 + static_cast<int>(distance(a, b) / 0.25);
+    for (int s = 0; s <= samples && !narrow; ++s)
+      narrow = w.sections->at(a + (static_cast<double>(s) / samples) * (b - a)) != Behavior::kWalk;
+  }
+  if (!narrow || way.length <= kNarrowAim) return local_goal(planner, mesh, way);
+  LocalGoal target = local_goal(planner, mesh, way_start(way, kNarrowAim));
+  target.is_goal = false;
+  return target;
 }
 
 /// The snapshot at time t of the agents whose plans `walks` read (one each,
@@ -180,9 +259,9 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
                const NavMesh* mesh, const std::vector<std::size_t>& seen, const Snapshot& now) {
   const Walker& w = walkers[i];
   const Vec2 goal = w.spec->goals[w.goal];
-  const Way way = way_toward(w.ways, mesh, planner.character(), w.state.com, goal, w.roomy);
+  const Way way = way_toward(w, mesh, planner.character(), w.state.com);
   const LocalGoal target =
-      keep_right(walkers, i, local_goal(planner, mesh, way), seen, now, planner, mesh);
+      keep_right(walkers, i, aim_of(w, planner, mesh, way), seen, now, planner, mesh);
   // One that leaves at this goal needs no room to rest there.
   const bool leaves = leaves_now(w, target.is_goal);
   KeepOut keep_out;
@@ -196,8 +275,13 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   bool jammed = false;
   for (const std::size_t j : seen)
     jammed = jammed || distance(now.com[j], w.state.com) <= kJamDistance;
-  const SearchOptions options{leaves, keep_out, w.blocked >= 1 && jammed ? kBlockedHorizon : 0,
-                              kRestGrace, jammed && patient(w, w.state) ? kJamStall : 0};
+  const SearchOptions options{leaves,
+                              keep_out,
+                              w.blocked >= 1 && jammed ? kBlockedHorizon : 0,
+                              kRestGrace,
+                              jammed && patient(w, w.state) ? kJamStall : 0,
+                              // Stuck once on its sections, it walks as it did before them.
+                              w.guides.empty() || w.roomy ? nullptr : w.sections.get()};
   SearchResult result = planner.plan(w.state, target.point, others, options);
   const bool moves =
       std::any_of(result.footsteps.begin(), result.footsteps.end(),
@@ -226,7 +310,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, others, keep_out, a);
   a.ways.push_back({w.state.com, goal, way});
   if (!a.reached) {
-    Way left = way_toward(w.ways, mesh, planner.character(), a.end.com, goal, w.roomy);
+    Way left = way_toward(w, mesh, planner.character(), a.end.com);
     a.way_left = left.length;
     a.ways.push_back({a.end.com, goal, std::move(left)});
   }
@@ -412,6 +496,9 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
   for (std::size_t i = 0; i < agents.size(); ++i) {
     Walker& w = walkers[i];
     w.spec = &agents[i];
+    w.sections = std::make_shared<const SectionLookup>(agents[i].sections);
+    if (planner.params().follow_sections == 1 && w.sections->any_narrower())
+      w.guides = guides_of(agents[i]);
     w.plan.name = agents[i].name;
     w.plan.start = standing_state(agents[i].position, agents[i].facing, planner.character());
     w.state = w.plan.start;
@@ -570,6 +657,9 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
   for (Walker& w : walkers) {
     w.plan.stuck_at = w.resting > 0 ? w.rested.com : w.state.com;
     choose_foot_orientations(w.plan.footsteps, w.plan.start.foot_orientation, planner.character());
+    // Steps not from a search (a first turn, a rest) take their sections' too.
+    for (Footstep& step : w.plan.footsteps) step.behavior = w.sections->of(step);
+    w.plan.sections = w.spec->sections;
     plans.push_back(std::move(w.plan));
   }
   return plans;

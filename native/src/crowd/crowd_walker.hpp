@@ -101,6 +101,12 @@ struct KnownWay {
 /// One agent as the driver keeps it.
 struct Walker {
   const AgentSpec* spec = nullptr;
+  /// Its sections (spec->sections), for its searches.
+  std::shared_ptr<const SectionLookup> sections;
+  /// Per goal, the annotated way to it from the goal before (or the start),
+  /// which it follows; empty when it does not follow its sections
+  /// (planner.follow_sections 0, or a way of walk alone).
+  std::vector<std::vector<Vec2>> guides;
   AgentPlan plan;  ///< Its steps, ending with `resting` provisional rest steps.
   /// Counts the changes of `plan` (its steps, or whether it leaves): a check
   /// made against one version holds while it stands.

@@ -67,7 +67,7 @@ KeepOut wish_discs(const std::vector<Footstep>& steps, const CharacterParams& ch
          static_cast<double>(k) * kContactDt <= step.end_time; ++k) {
       const Vec2 com = com_at(step, static_cast<double>(k) * kContactDt).position;
       if (distance(com, from) > kWishReach) return discs;
-      for (Circle circle : torso_circles(com, step.phi, character)) {
+      for (Circle circle : torso_circles(com, step.phi, character, 0.0, step.behavior)) {
         circle.radius += kWishPad;
         discs.push_back(circle);
       }

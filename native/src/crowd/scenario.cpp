@@ -9,6 +9,7 @@
 
 #include "crowd/behavior_sections.hpp"
 #include "footfall/fullbody/body_model.hpp"
+#include "footfall/fullbody/step_body_test.hpp"
 #include "footfall/model/footstep.hpp"
 #include "footfall/planner/planner.hpp"
 #include "util/field_path.hpp"
@@ -115,13 +116,17 @@ void validate(const Scenario& scenario) {
 Plan plan_scenario(const Scenario& scenario, const RunControl& control) {
   validate(scenario);
   const ObstacleMap obstacles(scenario.obstacles, scenario.character.body_height);
-  const FootstepPlanner planner(scenario.character, scenario.planner, obstacles);
+  const CollisionScene scene(scenario.obstacles);
+  const BodyModel body(scenario.character);
+  const StepBodyTest body_test(scene, body, scenario.planner.pose_rate);
+  const FootstepPlanner planner(scenario.character, scenario.planner, obstacles, &body_test);
   const NavMesh mesh = navmesh_of(scenario);
   Plan plan;
   plan.character = scenario.character;
   plan.obstacles = scenario.obstacles;
-  plan.agents = plan_agents(scenario.agents, planner, &mesh, control);
-  if (!control.cancelled()) detail::annotate_behaviors(scenario, plan);
+  std::vector<AgentSpec> agents = scenario.agents;
+  detail::plan_sections(scenario, scene, body, agents);
+  plan.agents = plan_agents(agents, planner, &mesh, control);
   if (control.cancelled()) plan.status = Status::kCancelled;
   return plan;
 }

@@ -79,6 +79,13 @@ CollisionScene& CollisionScene::operator=(CollisionScene&&) noexcept = default;
 
 std::size_t CollisionScene::triangle_count() const { return tree_->triangles.size(); }
 
+bool CollisionScene::near(Vec3 lo, Vec3 hi) const {
+  Box3 box;
+  box.take_in(lo);
+  box.take_in(hi);
+  return tree_->visit(box, [](const SceneTriangle&) { return true; });
+}
+
 Contact CollisionScene::test(const Capsule& capsule) const {
   return capsule_contact(*tree_, capsule, false);
 }

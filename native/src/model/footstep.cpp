@@ -395,9 +395,14 @@ ComSample com_at(const Footstep& step, double t) {
 }
 
 std::array<Circle, 3> torso_circles(Vec2 com, double facing, const CharacterParams& character,
-                                    double pad) {
+                                    double pad, Behavior behavior) {
   const Vec2 left = perp(unit(facing));
-  const double shoulder = 0.5 * character.torso_width - character.shoulder_radius;
+  // With the arms in, the shoulders are the body's outside; never wider than
+  // the walking torso (the bounds of a plan's reach assume that width).
+  const double width = behavior == Behavior::kArmsIn
+                           ? std::min(character.torso_width, character.shoulder_width)
+                           : character.torso_width;
+  const double shoulder = std::max(0.0, 0.5 * width - character.shoulder_radius);
   return {Circle{com, character.torso_radius + pad},
           Circle{com + shoulder * left, character.shoulder_radius + pad},
           Circle{com - shoulder * left, character.shoulder_radius + pad}};

@@ -232,7 +232,8 @@ int circles_during(const AgentPlan& plan, int k, const CharacterParams& characte
   const auto& steps = plan.footsteps;
   const bool started = !steps.empty() && t >= steps.front().start_time;
   const Vec2 com = steps.empty() ? plan.start.com : com_at(steps[k], t).position;
-  const auto torso = torso_circles(com, started ? steps[k].phi : plan.start.facing, character);
+  const auto torso = started ? torso_circles(com, steps[k].phi, character, 0.0, steps[k].behavior)
+                             : torso_circles(com, plan.start.facing, character);
   int count = 0;
   for (const Circle& circle : torso) out[count++] = circle;
   for (const FootPose& foot : started ? feet_during(plan, k, t) : standing_feet(plan)) {

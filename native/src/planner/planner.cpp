@@ -102,6 +102,7 @@ struct FootstepPlanner::Search {
   LargeVector<OpenEntry> open;  // a binary heap
   KeySet seen;
   detail::SampledAgents others;  // the plans the search avoids
+  const SectionLookup* sections = nullptr;  // the way's behaviours, if it has narrower ones
   int generated = 0;
 
   void push(Node node, double weight) {
@@ -119,8 +120,8 @@ struct FootstepPlanner::Search {
 };
 
 FootstepPlanner::FootstepPlanner(const CharacterParams& character, const PlannerParams& planner,
-                                 const ObstacleMap& obstacles)
-    : validity_(character, planner, obstacles) {
+                                 const ObstacleMap& obstacles, const StepBodyTest* body)
+    : validity_(character, planner, obstacles), body_(body) {
   // A normal step, through the model itself: straight, at the preferred speed
   // and duration, in steady walking (incoming at the same speed), the incoming
   // heading turned outward from phi by the smallest turn angle; by the right
@@ -167,6 +168,15 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   // `speed` and `heading_after` place the state in its cell of the seen-set.
   const auto add = [&](const StepResult& next, double speed, double heading_after) {
     if (!next.valid()) return;
+    // On a way with narrower sections, each step takes its section's
+    // behaviour (the arms in narrow its torso); inside a side-step section
+    // only lateral steps, and the stops between them, go.
+    Behavior behavior = next.step.behavior;
+    if (search.sections != nullptr) {
+      const Behavior place = search.sections->at(0.5 * (next.step.com_start + next.step.com_end));
+      if (place == Behavior::kSideStep && next.step.kind == StepKind::kWalk) return;
+      behavior = next.step.kind == StepKind::kSideStep ? Behavior::kSideStep : place;
+    }
     if (!search.seen.insert(state_key(next.state.com, heading_after, speed,
                                       next.state.standing(), next.step.foot)).second) {
       return;
@@ -174,6 +184,7 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
     search.push(Node{next.state, g + next.step.cost.total(), heuristic(next.state, goal), index,
                      next.step},
                 params.heuristic_weight);
+    search.nodes.back().step.behavior = behavior;
     ++search.generated;
   };
 
@@ -265,6 +276,8 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   search.generated = 0;
   search.others.reset(others, character, start.time);
   search.others.set_rest_grace(options.rest_grace);
+  search.sections =
+      options.sections != nullptr && options.sections->any_narrower() ? options.sections : nullptr;
   search.seen.clear();
   const detail::Heading start_heading = detail::heading_of(start);
   search.seen.insert(state_key(start.com, start_heading.angle, start_heading.speed,
@@ -280,9 +293,15 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     const int current = search.pop();
     // Collisions are checked lazily, when a node is taken off the open list:
     // most generated nodes are never expanded.
+    // On a way with narrower sections the body is tested whole, in 3-D, and
+    // its shoulders against obstacles only so (a walk-only way's steps keep
+    // the 2-D model alone: a crowd's searches stay as cheap).
+    const bool whole_body = body_ != nullptr && search.sections != nullptr;
     if (current != 0 && checks.collides(search.nodes[current].step, search.others,
-                                 search.nodes[search.nodes[current].parent].state.standing()))
+                                        search.nodes[search.nodes[current].parent].state.standing(),
+                                        whole_body))
       continue;
+    if (current != 0 && whole_body && body_->hits(search.nodes[current].step)) continue;
     ++result.nodes_expanded;
     // At the goal, and able to come to rest there among the others (whose
     // rests may already stand on it), free to set off again (a local goal is

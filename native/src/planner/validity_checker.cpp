@@ -172,12 +172,12 @@ bool ValidityChecker::Impl::collides(const Footstep& step, const MovingObstacles
 }
 
 bool ValidityChecker::Impl::collides(const Footstep& step, detail::SampledAgents& others,
-                               bool from_standing) const {
+                               bool from_standing, bool shoulders_in_3d) const {
   // Agents first: in a crowd they turn down most candidate steps.
-  return touches_agents(step, others, from_standing) || hits_obstacles(step);
+  return touches_agents(step, others, from_standing) || hits_obstacles(step, shoulders_in_3d);
 }
 
-bool ValidityChecker::Impl::hits_obstacles(const Footstep& step) const {
+bool ValidityChecker::Impl::hits_obstacles(const Footstep& step, bool shoulders_in_3d) const {
   if (obstacles_.overlaps({step.foot_position, character_.foot_radius})) return true;
   // Samples no further apart along the COM path than `spacing`: the path is
   // never longer than speed * time between samples, where the COM speed of a
@@ -198,11 +198,13 @@ bool ValidityChecker::Impl::hits_obstacles(const Footstep& step) const {
   const double dt = step.duration() / samples;
   // The torso keeps its facing through the step: its circles' offsets from
   // the COM are found once.
-  const auto torso = torso_circles({0.0, 0.0}, step.phi, character_, pad);
+  const auto torso = torso_circles({0.0, 0.0}, step.phi, character_, pad, step.behavior);
+  const std::size_t circles = shoulders_in_3d ? 1 : torso.size();
   for (int i = 0; i <= samples; ++i) {
     const Vec2 com = com_at(step, step.start_time + dt * i).position;
-    for (const Circle& offset : torso)
-      if (obstacles_.first_overlap({com + offset.center, offset.radius}, near) >= 0) return true;
+    for (std::size_t c = 0; c < circles; ++c)
+      if (obstacles_.first_overlap({com + torso[c].center, torso[c].radius}, near) >= 0)
+        return true;
   }
   return false;
 }
@@ -247,7 +249,8 @@ bool ValidityChecker::Impl::touches_agents(const Footstep& step, detail::Sampled
   };
   thread_local std::vector<Instant> mine;
   mine.assign(static_cast<std::size_t>(last - first + 1), Instant{});
-  const auto torso_offsets = torso_circles({0.0, 0.0}, step.phi, character_);  // as above
+  const auto torso_offsets =
+      torso_circles({0.0, 0.0}, step.phi, character_, 0.0, step.behavior);  // as above
   const auto instant = [&](long k) -> const Instant& {
     Instant& sample = mine[static_cast<std::size_t>(k - first)];
     if (!sample.sampled) {

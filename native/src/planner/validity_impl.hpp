@@ -44,11 +44,15 @@ struct ValidityChecker::Impl {
   StepResult stop_step(const FootstepState& state, double duration,
                        const MovingObstacles& others) const;
   StepResult stop_step(const FootstepState& state, const MovingObstacles& others) const;
-  bool hits_obstacles(const Footstep& step) const;
+  // `shoulders_in_3d`: the caller tests the step's body in 3-D (StepBodyTest),
+  // which sees the shoulders and arms exactly: against obstacles the torso is
+  // then only its centre circle.
+  bool hits_obstacles(const Footstep& step, bool shoulders_in_3d = false) const;
 
   // The same checks against `others` sampled once for many of them.
   // `from_standing`: the step sets off from a standing state.
-  bool collides(const Footstep& step, detail::SampledAgents& others, bool from_standing) const;
+  bool collides(const Footstep& step, detail::SampledAgents& others, bool from_standing,
+                bool shoulders_in_3d = false) const;
   bool touches_agents(const Footstep& step, detail::SampledAgents& others,
                       bool from_standing) const;
   Rest come_to_rest(const FootstepState& state, detail::SampledAgents& others) const;

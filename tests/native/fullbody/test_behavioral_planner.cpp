@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "footfall/fullbody/behavioral_planner.hpp"
+#include "footfall/fullbody/body_check.hpp"
 #include "footfall/fullbody/body_sweep.hpp"
+#include "footfall/plan/section_lookup.hpp"
 #include "footfall/scenes/behavior_scenes.hpp"
 
 namespace footfall {
@@ -184,6 +186,42 @@ TEST(BehavioralPlanner, ObstaclesAboveTheHeadAreNotInTheWay) {
   const BehaviorPath around = lowered.planner.plan({0, 0}, {5, 0});
   ASSERT_EQ(around.status, BehaviorPathStatus::kFound);
   EXPECT_GT(around.length, 6.0);
+}
+
+}  // namespace
+}  // namespace footfall
+
+namespace footfall {
+namespace {
+
+// Footsteps on the door scene: every plan lists its sections, each step has
+// its section's behaviour; following them (planner.follow_sections), the
+// character walks through the door with its arms in and no limb enters an
+// obstacle.
+TEST(BehavioralFootsteps, TheDoorIsWalkedThroughWithTheArmsIn) {
+  BehaviorScene scene = door_scene();
+  for (const int follow : {0, 1}) {
+    SCOPED_TRACE(follow);
+    scene.scenario.planner.follow_sections = follow;
+    const Plan plan = plan_scenario(scene.scenario);
+    const AgentPlan& agent = plan.agents.front();
+    EXPECT_EQ(agent.status, AgentStatus::kReached);
+    ASSERT_EQ(agent.sections.size(), 3u);
+    EXPECT_EQ(agent.sections[1].behavior, Behavior::kArmsIn);
+    const SectionLookup lookup(agent.sections);
+    for (const Footstep& step : agent.footsteps) EXPECT_EQ(step.behavior, lookup.of(step));
+    if (follow == 0) continue;
+    int through = 0;
+    for (const Footstep& step : agent.footsteps) {
+      if (step.com_start.x < 0.0 && step.com_end.x > 0.0) {
+        ++through;
+        EXPECT_EQ(step.behavior, Behavior::kArmsIn);
+        EXPECT_EQ(step.kind, StepKind::kWalk);
+      }
+    }
+    EXPECT_EQ(through, 1);
+    EXPECT_EQ(check_body(plan).penetrations, 0);
+  }
 }
 
 }  // namespace

@@ -24,6 +24,11 @@ struct AgentSpec {
   /// Walks through its last goal and leaves the scene there, as SteerSuite's
   /// agents do, instead of coming to rest on it.
   bool leave_at_goal = false;
+  /// Its annotated way from `position` through every goal (the full-body
+  /// planner's sections, joined end to end; plan_scenario plans it). Where it
+  /// has a section other than walk, the agent follows it: its way is the
+  /// annotated one, and its steps take their sections' behaviours.
+  std::vector<BehaviorSection> sections{};
 };
 
 /// Lets a caller follow and stop a long run.
@@ -57,6 +62,7 @@ struct RunControl {
 /// for 15 s is stuck: it waits until an agent near it moves, then tries
 /// again, and one still waiting when no one else walks on is "stuck"; the
 /// walk also ends at max_time ("time limit") or on cancel ("cancelled").
+/// Each plan lists its agent's sections, and each step its behaviour.
 /// Deterministic, whatever `control.threads`.
 std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
                                    const FootstepPlanner& planner, const NavMesh* mesh = nullptr,

@@ -29,8 +29,8 @@ struct BodyCheck {
 };
 
 /// Checks `plan` at `pose_rate` poses per second [1, 1000] of each agent's
-/// plan (its body from plan.character; walking and arms-in poses face the
-/// torso's facing, side-step poses travel across it). Throws
+/// plan (its body from plan.character, placed as pose_during places it;
+/// before the first step and after the last, as at their ends). Throws
 /// std::invalid_argument for a rate out of range, bad obstacles or a bad
 /// character.
 BodyCheck check_body(const Plan& plan, double pose_rate = 30.0);

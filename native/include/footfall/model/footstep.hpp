@@ -193,9 +193,10 @@ struct ComSample {
 ComSample com_at(const Footstep& step, double t);
 
 /// The three torso circles (centre, then left and right shoulder) for a COM
-/// at `com` with the torso facing `facing`, each radius grown by `pad`.
+/// at `com` with the torso facing `facing`, each radius grown by `pad`. With
+/// the arms in (`behavior`), the shoulder circles come in to shoulder_width.
 std::array<Circle, 3> torso_circles(Vec2 com, double facing, const CharacterParams& character,
-                                    double pad = 0.0);
+                                    double pad = 0.0, Behavior behavior = Behavior::kWalk);
 
 /// The state at the end of `step` taken from `state`: the COM where the step
 /// leaves it, its foot planted, the torso facing the step's phi.

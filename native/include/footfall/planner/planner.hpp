@@ -11,6 +11,8 @@
 #include "footfall/model/obstacles.hpp"
 #include "footfall/model/params.hpp"
 #include "footfall/model/status.hpp"
+#include "footfall/fullbody/step_body_test.hpp"
+#include "footfall/plan/section_lookup.hpp"
 #include "footfall/planner/validity_checker.hpp"
 
 namespace footfall {
@@ -33,6 +35,11 @@ struct SearchOptions {
   /// Nodes expanded without one nearer the goal before the search stops;
   /// 0: the planner's stall_expansions. [>= 0]
   int stall = 0;
+  /// The character's annotated way (the full-body planner's sections), if
+  /// any: each step takes the behaviour of its section, and inside a
+  /// side-step section only lateral steps and stops are tried. Must outlive
+  /// the search.
+  const SectionLookup* sections = nullptr;
 };
 
 /// Result of one footstep search.
@@ -67,9 +74,10 @@ struct SearchResult {
 class FootstepPlanner {
  public:
   /// Validates both parameter sets (std::invalid_argument). `obstacles` must
-  /// outlive the planner.
+  /// outlive the planner, and so must `body`: with it, every step a search
+  /// expands must also pass the full-body test against the obstacles in 3-D.
   FootstepPlanner(const CharacterParams& character, const PlannerParams& planner,
-                  const ObstacleMap& obstacles);
+                  const ObstacleMap& obstacles, const StepBodyTest* body = nullptr);
   ~FootstepPlanner();
   FootstepPlanner(const FootstepPlanner&) = delete;
   FootstepPlanner& operator=(const FootstepPlanner&) = delete;
@@ -105,6 +113,7 @@ class FootstepPlanner {
   void expand(Search& search, int index, Vec2 goal) const;
 
   ValidityChecker validity_;
+  const StepBodyTest* body_ = nullptr;
   double expected_step_cost_ = 0;
   double expected_step_length_ = 0;
 };

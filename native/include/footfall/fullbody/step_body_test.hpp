@@ -1,0 +1,41 @@
+// Footfall — the full-body test of single footsteps: the body, in the step's
+// behaviour and phase, swept over the step against the obstacles in 3-D. The
+// footstep search asks it of every step it expands; the plan's check
+// (body_check.hpp) places the body the same way.
+#pragma once
+
+#include <array>
+
+#include "footfall/fullbody/body_model.hpp"
+#include "footfall/fullbody/collision_scene.hpp"
+
+namespace footfall {
+
+/// The body's pose and its placement at time `t` of `step`: a step is half a
+/// cycle of its behaviour's motion, the left foot's the first half; the root
+/// on the COM, heading along the torso's facing (the step's phi), a
+/// side-step's a quarter turn right of it (its motion travels along +x with
+/// the body facing +y).
+void pose_during(const BodyModel& body, const Footstep& step, double t, BodyPose& pose,
+                 GroundPlacement& placement);
+
+/// Tests footsteps; immutable, so searches on several threads may share it.
+class StepBodyTest {
+ public:
+  /// `scene` and `body` must outlive the test. [pose_rate: 1 to 1000 a second]
+  StepBodyTest(const CollisionScene& scene, const BodyModel& body, double pose_rate);
+
+  /// True if a pose of the step, every 1/pose_rate s and at its end, meets an
+  /// obstacle. A step whose whole sweep is far from every obstacle costs one
+  /// box query.
+  bool hits(const Footstep& step) const;
+
+ private:
+  const CollisionScene& scene_;
+  const BodyModel& body_;
+  double pose_rate_;
+  std::array<double, 3> reach_{};  // per behaviour: farthest capsule surface from the root, across [m]
+  std::array<double, 3> top_{};    // per behaviour: highest capsule surface [m]
+};
+
+}  // namespace footfall
