@@ -47,7 +47,7 @@ BehaviorScene door_scene() {
 
 BehaviorScene corridor_scene() {
   Scenario s;
-  add_sides(s, 0.0, 2.0, 0.27, kTall);  // arms in
+  add_sides(s, 0.0, 2.0, 0.29, kTall);  // arms in
   add_sides(s, 2.0, 4.5, 0.225, kKnee);  // walk: the arms swing above
   add_sides(s, 4.5, 6.5, 0.225, kTall);  // side-step only
   return single(std::move(s), {-2.0, 0.0}, {8.5, 0.0});

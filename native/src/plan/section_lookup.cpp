@@ -35,9 +35,18 @@ Behavior SectionLookup::at(Vec2 point) const {
   return behavior;
 }
 
+Behavior SectionLookup::along(const Footstep& step) const {
+  // Behaviours run from walk (0) to side_step (2), widest to narrowest.
+  const auto narrower = [](Behavior a, Behavior b) {
+    return static_cast<int>(a) >= static_cast<int>(b) ? a : b;
+  };
+  return narrower(narrower(at(step.com_start), at(0.5 * (step.com_start + step.com_end))),
+                  at(step.com_end));
+}
+
 Behavior SectionLookup::of(const Footstep& step) const {
   if (step.kind == StepKind::kSideStep) return Behavior::kSideStep;
-  const Behavior section = at(0.5 * (step.com_start + step.com_end));
+  const Behavior section = along(step);
   if (section == Behavior::kSideStep && step.kind == StepKind::kWalk) return Behavior::kArmsIn;
   return section;
 }

@@ -173,7 +173,7 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
     // only lateral steps, and the stops between them, go.
     Behavior behavior = next.step.behavior;
     if (search.sections != nullptr) {
-      const Behavior place = search.sections->at(0.5 * (next.step.com_start + next.step.com_end));
+      const Behavior place = search.sections->along(next.step);
       if (place == Behavior::kSideStep && next.step.kind == StepKind::kWalk) return;
       behavior = next.step.kind == StepKind::kSideStep ? Behavior::kSideStep : place;
     }

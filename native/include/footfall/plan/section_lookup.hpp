@@ -24,9 +24,13 @@ class SectionLookup {
   /// The behaviour of the section nearest to `point` within kSectionReach;
   /// walk when none is.
   Behavior at(Vec2 point) const;
-  /// A footstep's behaviour: side_step for a lateral step; else that of the
-  /// middle of its COM chord, and arms_in for a walking step there in a
-  /// side_step section (the narrowest frontal behaviour).
+  /// The narrowest behaviour at the start, the middle and the end of a
+  /// footstep's COM chord: a step that ends in a narrower section already
+  /// takes its behaviour.
+  Behavior along(const Footstep& step) const;
+  /// A footstep's behaviour: side_step for a lateral step; else along(), and
+  /// arms_in for a walking step reaching a side_step section (the narrowest
+  /// frontal behaviour).
   Behavior of(const Footstep& step) const;
   const std::vector<BehaviorSection>& sections() const { return sections_; }
 
