@@ -50,8 +50,9 @@ const char* to_string(StepKind kind);
 
 /// The behaviour of the path section a step belongs to (Juarez-Perez and
 /// Kallmann): regular walking, walking with the arms held in, lateral
-/// side-stepping. Today the footstep planner gives kWalk, and kSideStep to
-/// its lateral steps (StepKind::kSideStep); kArmsIn comes only from plan files.
+/// side-stepping. Steps take it from their agent's annotated way
+/// (plan/section_lookup.hpp); a lateral step (StepKind::kSideStep) is always
+/// kSideStep.
 enum class Behavior { kWalk, kArmsIn, kSideStep };
 /// "walk", "arms_in" or "side_step".
 const char* to_string(Behavior behavior);
