@@ -66,7 +66,8 @@ void bind_fullbody(py::module_& m) {
   py::class_<ScenarioBehaviors>(
       m, "BehavioralPlanner",
       "The full-body behavioural planner on a scenario's obstacles, character and planner "
-      "parameters (ValueError for a bad scenario).")
+      "parameters (ValueError for a bad scenario). One query at a time per planner: a query "
+      "puts point obstacles into its navigation mesh and takes them out again.")
       .def(py::init<const Scenario&>(), py::arg("scenario"))
       .def(
           "plan",

@@ -79,7 +79,7 @@ class Query {
     return mesh_.find_path(query);
   }
   BodyCollision test(Behavior behavior, const Polyline& path, double from, double to,
-                double start_time = 0) {
+                     double start_time = 0) {
     return sweep_body(scene_, body_, behavior, path, from, to, start_time, params_.pose_rate,
                       result_.poses_tested);
   }
