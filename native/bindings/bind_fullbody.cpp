@@ -19,11 +19,17 @@ Behavior behavior_named(const std::string& name) {
                               "\"");
 }
 
+// The scenario's navigation mesh, once the scenario is known to be valid.
+NavMesh checked_mesh(const Scenario& scenario) {
+  validate(scenario);
+  return navmesh_of(scenario);
+}
+
 // Everything a query needs, built once from a scenario.
 struct ScenarioBehaviors {
   explicit ScenarioBehaviors(const Scenario& scenario)
       : params(scenario.planner),
-        mesh((validate(scenario), navmesh_of(scenario))),
+        mesh(checked_mesh(scenario)),
         scene(scenario.obstacles),
         body(scenario.character),
         planner(mesh, scene, body, params) {}
