@@ -107,9 +107,7 @@ bool guided_way(const std::vector<Vec2>& guide, const NavMesh* mesh,
   way.points = {from};
   if (!(join == from)) way.points.push_back(join);
   way.points.insert(way.points.end(), guide.begin() + static_cast<long>(piece), guide.end());
-  way.length = 0.0;
-  for (std::size_t k = 1; k < way.points.size(); ++k)
-    way.length += distance(way.points[k - 1], way.points[k]);
+  way.length = polyline_length(way.points);
   return true;
 }
 

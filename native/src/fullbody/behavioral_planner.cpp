@@ -143,7 +143,7 @@ class Query {
 };
 
 void Query::append(Behavior behavior, double clearance, std::vector<Vec2> points) {
-  const double length = detail::polyline_length(points);
+  const double length = polyline_length(points);
   if (length <= kSamePlace) return;
   auto& sections = result_.sections;
   if (!sections.empty() && sections.back().behavior == behavior) {
@@ -176,7 +176,7 @@ PathResult Query::find_around(const Polyline& current, double along) {
   whole.points.insert(whole.points.end(), window.points.begin() + 1, window.points.end());
   const std::vector<Vec2> rest = current.between(b, current.length());
   whole.points.insert(whole.points.end(), rest.begin() + 1, rest.end());
-  whole.length = detail::polyline_length(whole.points);
+  whole.length = polyline_length(whole.points);
   return whole;
 }
 

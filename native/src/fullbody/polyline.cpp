@@ -46,10 +46,4 @@ std::vector<Vec2> Polyline::between(double s0, double s1) const {
   return result;
 }
 
-double polyline_length(const std::vector<Vec2>& points) {
-  double total = 0;
-  for (std::size_t k = 1; k < points.size(); ++k) total += distance(points[k - 1], points[k]);
-  return total;
-}
-
 }  // namespace footfall::detail

@@ -27,7 +27,4 @@ class Polyline {
   std::vector<double> along_;
 };
 
-/// Total length of a list of points. [m]
-double polyline_length(const std::vector<Vec2>& points);
-
 }  // namespace footfall::detail

@@ -14,5 +14,10 @@ double wrap_angle(double angle) {
   return wrapped;
 }
 
+double polyline_length(const std::vector<Vec2>& points) {
+  double total = 0.0;
+  for (std::size_t k = 1; k < points.size(); ++k) total += distance(points[k - 1], points[k]);
+  return total;
+}
 
 }  // namespace footfall

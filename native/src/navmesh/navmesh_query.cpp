@@ -488,12 +488,6 @@ class ChannelSearch {
   std::vector<FaceSearch>& searched_ = *face_storage_;
 };
 
-double polyline_length(const std::vector<Vec2>& points) {
-  double total = 0.0;
-  for (std::size_t k = 0; k + 1 < points.size(); ++k) total += distance(points[k], points[k + 1]);
-  return total;
-}
-
 /// Where a polyline comes nearest to the obstacles.
 struct Pinch {
   double clearance = std::numeric_limits<double>::infinity();

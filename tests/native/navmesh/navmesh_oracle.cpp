@@ -279,12 +279,6 @@ std::vector<Vec2> step_polyline(const TangentGraph& graph, int u, int v, Move mo
   return line;
 }
 
-double polyline_length(const std::vector<Vec2>& line) {
-  double total = 0.0;
-  for (size_t i = 1; i < line.size(); ++i) total += distance(line[i - 1], line[i]);
-  return total;
-}
-
 bool polyline_clear(const Obstacles& obstacles, const std::vector<Vec2>& line, double radius) {
   for (size_t i = 1; i < line.size(); ++i) {
     if (obstacles.segment_clearance(line[i - 1], line[i], radius) < radius) return false;

@@ -114,12 +114,6 @@ NavMesh build_mesh(const NavScene& scene) {
   return mesh;
 }
 
-double polyline_length(const std::vector<Vec2>& line) {
-  double total = 0.0;
-  for (size_t i = 1; i < line.size(); ++i) total += distance(line[i - 1], line[i]);
-  return total;
-}
-
 /// How the queries compared.
 struct Tally {
   int found = 0;           ///< Both found a path.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace footfall {
 
@@ -53,6 +54,9 @@ inline bool in_world(Vec2 a) {
 
 /// `angle` wrapped into (-pi, pi]. [rad]
 double wrap_angle(double angle);
+
+/// Length of the polyline through `points` (0 for fewer than two). [m]
+double polyline_length(const std::vector<Vec2>& points);
 
 /// The point of the segment [a, b] nearest to `p`. [m]
 inline Vec2 closest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
