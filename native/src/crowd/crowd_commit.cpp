@@ -10,9 +10,11 @@ void rest_until(Walker& w, const FootstepPlanner& planner, double t) {
     w.state = w.rested;
     w.resting = 0;
   }
+  const std::optional<WholeBody> following = planner.whole_body(w.following());
   bool waited = false;
   while (w.state.time < t) {
-    const StepResult wait = planner.validity().stop_step(w.state, std::min(t - w.state.time, kMaxWait));
+    const StepResult wait = planner.validity().stop_step(
+        w.state, std::min(t - w.state.time, kMaxWait), {}, following ? &*following : nullptr);
     if (!wait.valid()) break;
     w.plan.footsteps.push_back(wait.step);
     w.state = wait.state;

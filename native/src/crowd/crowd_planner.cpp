@@ -204,22 +204,24 @@ std::vector<std::size_t> seen_by(const std::vector<Walker>& walkers, std::size_t
 }
 
 /// Cuts the attempt's steps back to the last state from which the agent
-/// comes to rest among `others`, outside `keep_out`, free to set off again
-/// unless the steps reach the goal (none left: it waits), and keeps that
-/// rest. Committed plans
-/// are checked with the agent standing after its rest, so the rest must be
+/// comes to rest among `others`, outside the search's keep-out, free to set
+/// off again unless the steps reach the goal (none left: it waits), and
+/// keeps that rest, all checked as the search (`options`) checks its steps.
+/// Committed plans are checked with the agent standing after its rest, so the rest must be
 /// complete; and the next search starts there, so it must be able to set
 /// off: a rest in a door frame, facing a post, can leave every step blocked.
 void cut_to_rest(const FootstepPlanner& planner, const FootstepState& start,
-                 const MovingObstacles& others, const KeepOut& keep_out, Attempt& a) {
+                 const MovingObstacles& others, const SearchOptions& options, Attempt& a) {
+  const std::optional<WholeBody> following = planner.whole_body(options.sections);
+  const WholeBody* whole = following ? &*following : nullptr;
   std::vector<FootstepState> states{start};
   for (const Footstep& step : a.steps) states.push_back(state_after(states.back(), step));
   std::size_t keep = a.steps.size();
   for (; keep > 0; --keep) {
-    a.rest = planner.validity().come_to_rest(states[keep], others);
+    a.rest = planner.validity().come_to_rest(states[keep], others, whole);
     const bool at_goal = a.reached && keep == a.steps.size();
-    if (a.rest.complete && planner.validity().keeps_out(a.rest.state, keep_out) &&
-        (at_goal || planner.validity().free_to_set_off(a.rest.state)))
+    if (a.rest.complete && planner.validity().keeps_out(a.rest.state, options.keep_out) &&
+        (at_goal || planner.validity().free_to_set_off(a.rest.state, whole)))
       break;
   }
   if (keep == a.steps.size()) return;
@@ -278,8 +280,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
                               w.blocked >= 1 && jammed ? kBlockedHorizon : 0,
                               kRestGrace,
                               jammed && patient(w, w.state) ? kJamStall : 0,
-                              // Stuck once on its sections, it walks as it did before them.
-                              w.guides.empty() || w.roomy ? nullptr : w.sections.get()};
+                              w.following()};
   SearchResult result = planner.plan(w.state, target.point, others, options);
   const bool moves =
       std::any_of(result.footsteps.begin(), result.footsteps.end(),
@@ -305,7 +306,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   a.reached = result.status == Status::kSuccess && target.is_goal;
   if (w.plan.footsteps.empty() && dot(unit(w.state.facing), target.point - w.state.com) < 0.0)
     turn_first(w.state, a);
-  if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, others, keep_out, a);
+  if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, others, options, a);
   a.ways.push_back({w.state.com, goal, way});
   if (!a.reached) {
     Way left = way_toward(w, mesh, planner.character(), a.end.com);

@@ -162,6 +162,13 @@ struct Walker {
   /// once on the usual ones (take_roomy_ways()).
   bool roomy = false;
   bool done = false;
+
+  /// The sections its searches, rests and waits follow: none when it does
+  /// not follow them, or no longer (stuck once on them, it walks as it did
+  /// before them).
+  const SectionLookup* following() const {
+    return guides.empty() || roomy ? nullptr : sections.get();
+  }
 };
 
 /// True if walker `w`, searching from `state`, has gained way within

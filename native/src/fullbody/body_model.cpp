@@ -2,6 +2,7 @@
 #include "footfall/fullbody/body_model.hpp"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -17,6 +18,48 @@ constexpr double kClearanceMargin = 0.02;
 
 [[noreturn]] void refuse(const std::string& field, const std::string& what) {
   throw std::invalid_argument(field + ": " + what);
+}
+
+// The behaviour standing: its pose with the feet nearest together across the
+// ground (the arms nearest their rest), the legs then straightened under the
+// hips with the feet flat beside each other, pointing as they did.
+BodyPose standing_pose(const BehaviorMotion& motion) {
+  const auto centre = [](const Capsule& c) { return 0.5 * (c.a + c.b); };
+  const auto at = [](const BodyPose& pose, Limb limb) -> const Capsule& {
+    return pose[static_cast<int>(limb)];
+  };
+  const BodyPose* nearest = &motion.poses.front();
+  double best = std::numeric_limits<double>::infinity();
+  for (const BodyPose& pose : motion.poses) {
+    const Vec3 d = centre(at(pose, Limb::kFootLeft)) - centre(at(pose, Limb::kFootRight));
+    const double apart = d.x * d.x + d.y * d.y;
+    if (apart < best) {
+      best = apart;
+      nearest = &pose;
+    }
+  }
+  BodyPose pose = *nearest;
+  const Limb legs[2][3] = {{Limb::kThighLeft, Limb::kShinLeft, Limb::kFootLeft},
+                           {Limb::kThighRight, Limb::kShinRight, Limb::kFootRight}};
+  for (const auto& leg : legs) {
+    Capsule& thigh = pose[static_cast<int>(leg[0])];
+    Capsule& shin = pose[static_cast<int>(leg[1])];
+    Capsule& foot = pose[static_cast<int>(leg[2])];
+    const double upper = length(thigh.b - thigh.a), lower = length(shin.b - shin.a);
+    const double foot_length = length(foot.b - foot.a);
+    const Vec3 hip = thigh.a;
+    const Vec3 ankle{hip.x, hip.y, foot.radius};
+    const Vec3 knee = hip + (upper / std::max(upper + lower, 1e-9)) * (ankle - hip);
+    thigh.b = knee;
+    shin.a = knee;
+    shin.b = ankle;
+    const Vec3 along = foot.b - foot.a;
+    const double flat = std::hypot(along.x, along.y);
+    const Vec3 toward = flat > 1e-9 ? Vec3{along.x / flat, along.y / flat, 0.0} : Vec3{1, 0, 0};
+    foot.a = ankle - (0.25 * foot_length) * toward;
+    foot.b = ankle + (0.75 * foot_length) * toward;
+  }
+  return pose;
 }
 
 }  // namespace
@@ -64,6 +107,7 @@ BodyModel::BodyModel(const CharacterParams& character) {
     }
     clearances_[i] =
         overrides[i] > 0 ? overrides[i] : lateral_extent(motions_[i]) + kClearanceMargin;
+    standing_[i] = standing_pose(motions_[i]);
   }
   const double c1 = clearance(Behavior::kSideStep), c2 = clearance(Behavior::kArmsIn),
                c3 = clearance(Behavior::kWalk);

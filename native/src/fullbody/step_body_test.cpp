@@ -9,10 +9,14 @@ namespace footfall {
 
 void pose_during(const BodyModel& body, const Footstep& step, double t, BodyPose& pose,
                  GroundPlacement& placement) {
-  const double span = std::max(step.end_time - step.start_time, 1e-9);
-  const double fraction = std::clamp((t - step.start_time) / span, 0.0, 1.0);
-  const double phase = 0.5 * fraction + (step.foot == Foot::kLeft ? 0.0 : 0.5);
-  body.pose_at(step.behavior, phase * body.motion(step.behavior).cycle_duration, pose);
+  if (step.kind == StepKind::kStop) {
+    pose = body.standing(step.behavior);
+  } else {
+    const double span = std::max(step.end_time - step.start_time, 1e-9);
+    const double fraction = std::clamp((t - step.start_time) / span, 0.0, 1.0);
+    const double phase = 0.5 * fraction + (step.foot == Foot::kLeft ? 0.0 : 0.5);
+    body.pose_at(step.behavior, phase * body.motion(step.behavior).cycle_duration, pose);
+  }
   placement.position = com_at(step, t).position;
   placement.heading = step.behavior == Behavior::kSideStep ? step.phi - 0.5 * kPi : step.phi;
 }

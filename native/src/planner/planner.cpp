@@ -102,7 +102,7 @@ struct FootstepPlanner::Search {
   LargeVector<OpenEntry> open;  // a binary heap
   KeySet seen;
   detail::SampledAgents others;  // the plans the search avoids
-  const SectionLookup* sections = nullptr;  // the way's behaviours, if it has narrower ones
+  std::optional<WholeBody> whole;  // on a way with narrower sections
   int generated = 0;
 
   void push(Node node, double weight) {
@@ -171,20 +171,14 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
     // On a way with narrower sections, each step takes its section's
     // behaviour (the arms in narrow its torso); inside a side-step section
     // only lateral steps, and the stops between them, go.
-    Behavior behavior = next.step.behavior;
-    if (search.sections != nullptr) {
-      const Behavior place = search.sections->along(next.step);
-      if (place == Behavior::kSideStep && next.step.kind == StepKind::kWalk) return;
-      behavior = next.step.kind == StepKind::kSideStep ? Behavior::kSideStep : place;
-    }
+    Footstep step = next.step;
+    if (search.whole && !search.whole->label(step)) return;
     if (!search.seen.insert(state_key(next.state.com, heading_after, speed,
                                       next.state.standing(), next.step.foot)).second) {
       return;
     }
-    search.push(Node{next.state, g + next.step.cost.total(), heuristic(next.state, goal), index,
-                     next.step},
+    search.push(Node{next.state, g + step.cost.total(), heuristic(next.state, goal), index, step},
                 params.heuristic_weight);
-    search.nodes.back().step.behavior = behavior;
     ++search.generated;
   };
 
@@ -240,6 +234,11 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   if (skew > kDuplicateTurn && skew <= kMaxSideStepSkew) add_side_step(goal_angle);
 }
 
+std::optional<WholeBody> FootstepPlanner::whole_body(const SectionLookup* sections) const {
+  if (sections == nullptr || !sections->any_narrower()) return std::nullopt;
+  return WholeBody{sections, body_};
+}
+
 SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
                                    const MovingObstacles& others,
                                    const SearchOptions& options) const {
@@ -260,7 +259,9 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     throw std::invalid_argument("goal: must be finite and within 1e9 m of the origin");
   SearchResult result;
   result.end_state = start;
-  if (checks.collides(start)) {
+  const std::optional<WholeBody> following = whole_body(options.sections);
+  const WholeBody* whole = following ? &*following : nullptr;
+  if (checks.collides(start, whole)) {
     result.status = Status::kInvalidStart;
     return result;
   }
@@ -276,8 +277,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   search.generated = 0;
   search.others.reset(others, character, start.time);
   search.others.set_rest_grace(options.rest_grace);
-  search.sections =
-      options.sections != nullptr && options.sections->any_narrower() ? options.sections : nullptr;
+  search.whole = following;
   search.seen.clear();
   const detail::Heading start_heading = detail::heading_of(start);
   search.seen.insert(state_key(start.com, start_heading.angle, start_heading.speed,
@@ -296,19 +296,18 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     // On a way with narrower sections the body is tested whole, in 3-D, and
     // its shoulders against obstacles only so (a walk-only way's steps keep
     // the 2-D model alone: a crowd's searches stay as cheap).
-    const bool whole_body = body_ != nullptr && search.sections != nullptr;
     if (current != 0 && checks.collides(search.nodes[current].step, search.others,
                                         search.nodes[search.nodes[current].parent].state.standing(),
-                                        whole_body))
+                                        whole != nullptr && whole->body != nullptr))
       continue;
-    if (current != 0 && whole_body && body_->hits(search.nodes[current].step)) continue;
+    if (current != 0 && whole != nullptr && whole->hits(search.nodes[current].step)) continue;
     ++result.nodes_expanded;
     // At the goal, and able to come to rest there among the others (whose
     // rests may already stand on it), free to set off again (a local goal is
     // where the next search starts), unless it leaves there.
     if (distance(search.nodes[current].state.com, goal) <= params.goal_tolerance &&
         (current == 0 || options.leaves ||
-         checks.rests_well(search.nodes[current].state, search.others, keep_out))) {
+         checks.rests_well(search.nodes[current].state, search.others, keep_out, whole))) {
       goal_node = current;
       break;
     }
@@ -341,7 +340,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     const bool must_move = start.standing() && !checks.keeps_out(start, keep_out);
     for (const int candidate : closed) {
       if ((!start.standing() || must_move || nodes[candidate].h < nodes[0].h) &&
-          checks.rests_well(nodes[candidate].state, search.others, keep_out)) {
+          checks.rests_well(nodes[candidate].state, search.others, keep_out, whole)) {
         end = candidate;
         break;
       }
@@ -349,7 +348,9 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     // Nothing better than the start: a standing character waits.
     if (end < 0) {
       const StepResult wait =
-          start.standing() ? checks.stop_step(start, params.stop_duration, search.others) : StepResult{};
+          start.standing() ? checks.stop_step(start, params.stop_duration, search.others,
+                                              whole)
+                           : StepResult{};
       if (start.standing() && wait.valid()) {
         result.footsteps.push_back(wait.step);
         result.end_state = wait.state;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "footfall/fullbody/step_body_test.hpp"
+#include "footfall/plan/section_lookup.hpp"
 #include "model/contact.hpp"
 #include "planner/validity_impl.hpp"
 
@@ -89,6 +91,15 @@ class StandingCheck {
 
 }  // namespace
 
+bool WholeBody::label(Footstep& step) const {
+  const Behavior place = sections->along(step);
+  if (place == Behavior::kSideStep && step.kind == StepKind::kWalk) return false;
+  step.behavior = step.kind == StepKind::kSideStep ? Behavior::kSideStep : place;
+  return true;
+}
+
+bool WholeBody::hits(const Footstep& step) const { return body != nullptr && body->hits(step); }
+
 using planner::detail::kPivotTurn;
 using planner::detail::kSideStepSpeed;
 
@@ -100,12 +111,15 @@ ValidityChecker::~ValidityChecker() = default;
 
 const CharacterParams& ValidityChecker::character() const { return impl_->character_; }
 const PlannerParams& ValidityChecker::params() const { return impl_->params_; }
-bool ValidityChecker::collides(const FootstepState& state) const { return impl_->collides(state); }
+bool ValidityChecker::collides(const FootstepState& state, const WholeBody* whole) const {
+  return impl_->collides(state, whole);
+}
 bool ValidityChecker::collides(const Footstep& step, const MovingObstacles& others) const {
   return impl_->collides(step, others);
 }
-Rest ValidityChecker::come_to_rest(const FootstepState& state, const MovingObstacles& others) const {
-  return impl_->come_to_rest(state, others);
+Rest ValidityChecker::come_to_rest(const FootstepState& state, const MovingObstacles& others,
+                                   const WholeBody* whole) const {
+  return impl_->come_to_rest(state, others, whole);
 }
 bool ValidityChecker::stands_clear(const FootstepState& state, const MovingObstacles& others) const {
   return impl_->stands_clear(state, others);
@@ -123,12 +137,12 @@ bool ValidityChecker::room_to_turn(Vec2 com) const { return impl_->room_to_turn(
 bool ValidityChecker::keeps_out(const FootstepState& rested, const KeepOut& keep_out) const {
   return impl_->keeps_out(rested, keep_out);
 }
-bool ValidityChecker::free_to_set_off(const FootstepState& rested) const {
-  return impl_->free_to_set_off(rested);
+bool ValidityChecker::free_to_set_off(const FootstepState& rested, const WholeBody* whole) const {
+  return impl_->free_to_set_off(rested, whole);
 }
 StepResult ValidityChecker::stop_step(const FootstepState& state, double duration,
-                                      const MovingObstacles& others) const {
-  return impl_->stop_step(state, duration, others);
+                                      const MovingObstacles& others, const WholeBody* whole) const {
+  return impl_->stop_step(state, duration, others, whole);
 }
 StepResult ValidityChecker::stop_step(const FootstepState& state,
                                       const MovingObstacles& others) const {
@@ -157,13 +171,14 @@ ValidityChecker::Impl::Impl(const CharacterParams& character, const PlannerParam
     torso_extent_ = std::max(torso_extent_, length(circle.center) + circle.radius);
 }
 
-bool ValidityChecker::Impl::collides(const FootstepState& state) const {
+bool ValidityChecker::Impl::collides(const FootstepState& state, const WholeBody* whole) const {
   for (const Vec2& foot : state.feet) {
     if (obstacles_.overlaps({foot, character_.foot_radius})) return true;
   }
-  for (const Circle& circle : torso_circles(state.com, state.facing, character_)) {
-    if (obstacles_.overlaps(circle)) return true;
-  }
+  const auto torso = torso_circles(state.com, state.facing, character_);
+  const std::size_t circles = whole != nullptr ? 1 : torso.size();
+  for (std::size_t c = 0; c < circles; ++c)
+    if (obstacles_.overlaps(torso[c])) return true;
   return false;
 }
 
@@ -321,17 +336,17 @@ bool ValidityChecker::Impl::touches_agents(const Footstep& step, detail::Sampled
 }
 
 Rest ValidityChecker::Impl::come_to_rest(const FootstepState& state,
-                                   const MovingObstacles& others) const {
-  return come_to_rest(state, sampled(others, character_, state.time));
+                                   const MovingObstacles& others, const WholeBody* whole) const {
+  return come_to_rest(state, sampled(others, character_, state.time), whole);
 }
 
 Rest ValidityChecker::Impl::come_to_rest(const FootstepState& state,
-                                   detail::SampledAgents& others) const {
+                                   detail::SampledAgents& others, const WholeBody* whole) const {
   Rest rest{{}, state, false};
   const auto stop = [&] {
     double duration = params_.stop_duration;
     for (int attempt = 0; attempt < 4; ++attempt, duration *= 0.5) {
-      const StepResult step = stop_step(rest.state, duration, others);
+      const StepResult step = stop_step(rest.state, duration, others, whole);
       if (step.valid()) {
         rest.steps.push_back(step.step);
         rest.state = step.state;
@@ -385,9 +400,9 @@ std::vector<std::size_t> ValidityChecker::Impl::standing_clear(const std::vector
 }
 
 bool ValidityChecker::Impl::rests_well(const FootstepState& state, detail::SampledAgents& others,
-                                 const KeepOut& keep_out) const {
-  const Rest rest = come_to_rest(state, others);
-  return rest.complete && keeps_out(rest.state, keep_out) && free_to_set_off(rest.state);
+                                 const KeepOut& keep_out, const WholeBody* whole) const {
+  const Rest rest = come_to_rest(state, others, whole);
+  return rest.complete && keeps_out(rest.state, keep_out) && free_to_set_off(rest.state, whole);
 }
 
 bool ValidityChecker::Impl::room_to_turn(Vec2 com) const {
@@ -413,22 +428,25 @@ bool ValidityChecker::Impl::keeps_out(const FootstepState& rested, const KeepOut
 }
 
 StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double duration,
-                                      const MovingObstacles& others) const {
-  return stop_step(state, duration, sampled(others, character_, state.time));
+                                      const MovingObstacles& others, const WholeBody* whole) const {
+  return stop_step(state, duration, sampled(others, character_, state.time), whole);
 }
 
 StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double duration,
-                                      detail::SampledAgents& others) const {
+                                      detail::SampledAgents& others, const WholeBody* whole) const {
   StepResult stop = create_footstep(
       state, {StepKind::kStop, other(state.last_foot), state.facing, 0.0, duration}, character_);
-  if (stop.valid() && collides(stop.step, others, state.standing()))
+  if (!stop.valid()) return stop;
+  if (whole != nullptr) whole->label(stop.step);  // a stop goes anywhere
+  if (collides(stop.step, others, state.standing(), whole != nullptr && whole->body != nullptr) ||
+      (whole != nullptr && whole->hits(stop.step)))
     stop.validity = StepValidity::kCollides;
   return stop;
 }
 
 StepResult ValidityChecker::Impl::stop_step(const FootstepState& state,
                                       const MovingObstacles& others) const {
-  return stop_step(state, params_.stop_duration, others);
+  return stop_step(state, params_.stop_duration, others, nullptr);
 }
 
 StepResult ValidityChecker::Impl::side_step(const FootstepState& standing, double way) const {
@@ -438,10 +456,13 @@ StepResult ValidityChecker::Impl::side_step(const FootstepState& standing, doubl
       character_);
 }
 
-bool ValidityChecker::Impl::free_to_set_off(const FootstepState& rested) const {
-  if (!room_to_turn(rested.com)) return false;
-  const auto clear = [&](const StepResult& step, double, const detail::StepShape&) {
-    return step.valid() && !hits_obstacles(step.step);
+bool ValidityChecker::Impl::free_to_set_off(const FootstepState& rested,
+                                             const WholeBody* whole) const {
+  if (whole == nullptr ? !room_to_turn(rested.com) : collides(rested, whole)) return false;
+  const bool in_3d = whole != nullptr && whole->body != nullptr;
+  const auto clear = [&](StepResult step, double, const detail::StepShape&) {
+    if (!step.valid() || (whole != nullptr && !whole->label(step.step))) return false;
+    return !hits_obstacles(step.step, in_3d) && !(whole != nullptr && whole->hits(step.step));
   };
   if (tabled_walks(rested, Foot::kLeft, clear) || tabled_walks(rested, Foot::kRight, clear))
     return true;

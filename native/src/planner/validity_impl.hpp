@@ -29,9 +29,10 @@ struct ValidityChecker::Impl {
        const ObstacleMap& obstacles);
 
   // As ValidityChecker's, which forward here.
-  bool collides(const FootstepState& state) const;
+  bool collides(const FootstepState& state, const WholeBody* whole = nullptr) const;
   bool collides(const Footstep& step, const MovingObstacles& others) const;
-  Rest come_to_rest(const FootstepState& state, const MovingObstacles& others) const;
+  Rest come_to_rest(const FootstepState& state, const MovingObstacles& others,
+                    const WholeBody* whole) const;
   bool stands_clear(const FootstepState& state, const MovingObstacles& others) const;
   std::vector<char> stands_clear_of_each(const FootstepState& state,
                                          const MovingObstacles& others) const;
@@ -40,9 +41,9 @@ struct ValidityChecker::Impl {
                                           std::size_t at_most) const;
   bool room_to_turn(Vec2 com) const;
   bool keeps_out(const FootstepState& rested, const KeepOut& keep_out) const;
-  bool free_to_set_off(const FootstepState& rested) const;
-  StepResult stop_step(const FootstepState& state, double duration,
-                       const MovingObstacles& others) const;
+  bool free_to_set_off(const FootstepState& rested, const WholeBody* whole = nullptr) const;
+  StepResult stop_step(const FootstepState& state, double duration, const MovingObstacles& others,
+                       const WholeBody* whole) const;
   StepResult stop_step(const FootstepState& state, const MovingObstacles& others) const;
   // `shoulders_in_3d`: the caller tests the step's body in 3-D (StepBodyTest),
   // which sees the shoulders and arms exactly: against obstacles the torso is
@@ -55,14 +56,15 @@ struct ValidityChecker::Impl {
                 bool shoulders_in_3d = false) const;
   bool touches_agents(const Footstep& step, detail::SampledAgents& others,
                       bool from_standing) const;
-  Rest come_to_rest(const FootstepState& state, detail::SampledAgents& others) const;
+  Rest come_to_rest(const FootstepState& state, detail::SampledAgents& others,
+                    const WholeBody* whole) const;
   bool stands_clear(const FootstepState& state, detail::SampledAgents& others) const;
-  StepResult stop_step(const FootstepState& state, double duration,
-                       detail::SampledAgents& others) const;
+  StepResult stop_step(const FootstepState& state, double duration, detail::SampledAgents& others,
+                       const WholeBody* whole) const;
   // True if the character comes to rest from `state` among `others`, outside
   // `keep_out`, free to set off from there.
   bool rests_well(const FootstepState& state, detail::SampledAgents& others,
-                  const KeepOut& keep_out) const;
+                  const KeepOut& keep_out, const WholeBody* whole) const;
   // A side step the search tries from standing, toward `way`: by the foot
   // that did not step last, at kSideStepSpeed, for the stop duration.
   StepResult side_step(const FootstepState& standing, double way) const;

@@ -42,11 +42,16 @@ class BodyModel {
   /// The pose `time` seconds into the motion (cyclic, interpolated between
   /// samples), written to `pose`.
   void pose_at(Behavior behavior, double time, BodyPose& pose) const;
+  /// The behaviour's pose standing (stopping, waiting, pivoting): its
+  /// sampled pose with the feet nearest together, the legs straight under
+  /// the hips and the feet flat.
+  const BodyPose& standing(Behavior behavior) const { return standing_[index(behavior)]; }
 
  private:
   static int index(Behavior behavior) { return static_cast<int>(behavior); }
   std::array<BehaviorMotion, 3> motions_;
   std::array<double, 3> clearances_{};
+  std::array<BodyPose, 3> standing_{};
 };
 
 /// Checks a sampled motion; throws std::invalid_argument naming `path`'s field.

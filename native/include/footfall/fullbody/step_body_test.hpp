@@ -12,7 +12,8 @@
 namespace footfall {
 
 /// The body's pose and its placement at time `t` of `step`: a step is half a
-/// cycle of its behaviour's motion, the left foot's the first half; the root
+/// cycle of its behaviour's motion, the left foot's the first half (a stop
+/// step, which brings the feet together or waits, the standing pose); the root
 /// on the COM, heading along the torso's facing (the step's phi), a
 /// side-step's a quarter turn right of it (its motion travels along +x with
 /// the body facing +y).

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "footfall/model/footstep.hpp"
@@ -106,6 +107,10 @@ class FootstepPlanner {
   /// The checks the search applies, for callers that check states and steps
   /// the same way (a crowd's rests, room and commits).
   const ValidityChecker& validity() const { return validity_; }
+  /// The full-body checks of a search following `sections` (SearchOptions),
+  /// for its callers' rests and waits: none unless a section is narrower
+  /// than walk.
+  std::optional<WholeBody> whole_body(const SectionLookup* sections) const;
 
  private:
   struct Node;

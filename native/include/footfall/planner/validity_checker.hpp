@@ -38,9 +38,26 @@ using MovingObstacles = std::vector<MovingObstacle>;
 /// take (the crowd's yielding). The steps may cross them.
 using KeepOut = std::vector<Circle>;
 
-/// Discs that a search's rests keep out of: the way another agent waits to
-/// take (the crowd's yielding). The steps may cross them.
-using KeepOut = std::vector<Circle>;
+class SectionLookup;
+class StepBodyTest;
+
+/// The checks of an agent that follows its annotated way (planner
+/// follow_sections): each step takes its section's behaviour (the arms in
+/// narrow the torso; only lateral steps and stops inside side-step sections),
+/// and with `body` it passes the full-body test in 3-D, which then alone
+/// judges the shoulders and arms against obstacles (in 2-D only the torso's
+/// centre circle). Its rests are the same: a character may stand in a
+/// passage too narrow to turn in, as long as it can set off.
+struct WholeBody {
+  const SectionLookup* sections = nullptr;  ///< Not null.
+  const StepBodyTest* body = nullptr;       ///< Null: no 3-D test.
+
+  /// Gives `step` its section's behaviour; false where it may not go (a
+  /// walking step inside a side-step section).
+  bool label(Footstep& step) const;
+  /// True if the body test finds a limb of `step` in an obstacle.
+  bool hits(const Footstep& step) const;
+};
 
 /// Stop steps that bring a character to rest, and where they leave it.
 struct Rest {
@@ -67,15 +84,18 @@ class ValidityChecker {
   /// commit check and `footfall metrics` sample) its torso or planted foot
   /// touches a circle of one of `others`.
   bool collides(const Footstep& step, const MovingObstacles& others = {}) const;
-  /// True if the standing or walking state's planted feet or torso collide.
-  bool collides(const FootstepState& state) const;
+  /// True if the standing or walking state's planted feet or torso collide
+  /// (with `whole`, the torso's centre circle).
+  bool collides(const FootstepState& state, const WholeBody* whole = nullptr) const;
   /// Brings the character to rest with its feet side by side: a stop to
   /// decelerate (when walking), then one to close the feet, each halved in
   /// duration (down to an eighth) while it would run into an obstacle or one
   /// of `others` (the COM still coasts while it decelerates). The rest is
   /// complete only if the character, standing there, keeps room to turn on
   /// the spot among `others` while their plans last.
-  Rest come_to_rest(const FootstepState& state, const MovingObstacles& others = {}) const;
+  /// With `whole`, the stops are those of an agent following its sections.
+  Rest come_to_rest(const FootstepState& state, const MovingObstacles& others = {},
+                    const WholeBody* whole = nullptr) const;
   /// True if the character, standing at `state` from its time on, keeps
   /// clear of `others` while their plans last (after them, they stand too),
   /// with room to turn: a disc half the torso width round its COM, grown by
@@ -105,11 +125,13 @@ class ValidityChecker {
   /// alone is not enough: a walk sets off along the facing, and the steps'
   /// checks pad the torso, so a character facing a wall just over half its
   /// width away could otherwise take no step at all.
-  bool free_to_set_off(const FootstepState& rested) const;
+  /// With `whole`, the steps are those of an agent following its sections,
+  /// and room to turn is not asked: the torso's centre circle must be clear.
+  bool free_to_set_off(const FootstepState& rested, const WholeBody* whole = nullptr) const;
   /// The stop step from `state` lasting `duration`, with validity kCollides if
-  /// it runs into an obstacle.
+  /// it runs into an obstacle (with `whole`, as its checks have it).
   StepResult stop_step(const FootstepState& state, double duration,
-                       const MovingObstacles& others = {}) const;
+                       const MovingObstacles& others = {}, const WholeBody* whole = nullptr) const;
   /// The stop step of the planner's stop_duration.
   StepResult stop_step(const FootstepState& state, const MovingObstacles& others = {}) const;
   /// True if the step's landing foot, or its torso circles at samples no
