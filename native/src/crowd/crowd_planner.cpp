@@ -656,8 +656,10 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
   for (Walker& w : walkers) {
     w.plan.stuck_at = w.resting > 0 ? w.rested.com : w.state.com;
     choose_foot_orientations(w.plan.footsteps, w.plan.start.foot_orientation, planner.character());
-    // Steps not from a search (a first turn, a rest) take their sections' too.
-    for (Footstep& step : w.plan.footsteps) step.behavior = w.sections->of(step);
+    // Steps not from a search (a first turn, a rest) take their sections' too;
+    // those the search gave a narrower one (the arms held in) keep it.
+    for (Footstep& step : w.plan.footsteps)
+      step.behavior = std::max(step.behavior, w.sections->of(step));
     w.plan.sections = w.spec->sections;
     plans.push_back(std::move(w.plan));
   }

@@ -163,12 +163,11 @@ struct Walker {
   bool roomy = false;
   bool done = false;
 
-  /// The sections its searches, rests and waits follow: none when it does
-  /// not follow them, or no longer (stuck once on them, it walks as it did
-  /// before them).
-  const SectionLookup* following() const {
-    return guides.empty() || roomy ? nullptr : sections.get();
-  }
+  /// The sections its searches, rests and waits follow (none when it does
+  /// not follow them). Stuck once, it leaves the annotated way for the
+  /// roomiest, but its steps keep their sections' behaviours: it may stand
+  /// in a passage it could not walk with its arms swinging.
+  const SectionLookup* following() const { return guides.empty() ? nullptr : sections.get(); }
 };
 
 /// True if walker `w`, searching from `state`, has gained way within

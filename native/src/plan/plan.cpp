@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace footfall {
 namespace {
@@ -120,10 +121,13 @@ PlanBounds::PlanBounds(const AgentPlan& plan, const CharacterParams& character) 
     for (const Vec2& foot : {step.foot_position, last[static_cast<int>(other(step.foot))]})
       own.reach = std::max(own.reach, foot_reach(step, foot, character));
     last[static_cast<int>(step.foot)] = step.foot_position;
-    const Vec2 sway{step_sway(step), step_sway(step)};
     own.com_box = {step.com_start, step.com_start};
     own.com_box.take_in(step.com_end);
-    own.com_box = {own.com_box.min - sway, own.com_box.max + sway};
+    // com_at rounds: a step that stays put may place its COM an ulp aside.
+    const double size = std::max({std::fabs(own.com_box.min.x), std::fabs(own.com_box.min.y),
+                                  std::fabs(own.com_box.max.x), std::fabs(own.com_box.max.y), 1.0});
+    const double grow = step_sway(step) + 8.0 * std::numeric_limits<double>::epsilon() * size;
+    own.com_box = {own.com_box.min - Vec2{grow, grow}, own.com_box.max + Vec2{grow, grow}};
   }
   for (std::size_t i = steps.size(); i-- > 1;) {
     const From& later = suffix_[i];

@@ -102,7 +102,7 @@ struct FootstepPlanner::Search {
   LargeVector<OpenEntry> open;  // a binary heap
   KeySet seen;
   detail::SampledAgents others;  // the plans the search avoids
-  std::optional<WholeBody> whole;  // on a way with narrower sections
+  std::optional<WholeBody> whole;  // the full-body checks, if any
   int generated = 0;
 
   void push(Node node, double weight) {
@@ -235,8 +235,9 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
 }
 
 std::optional<WholeBody> FootstepPlanner::whole_body(const SectionLookup* sections) const {
-  if (sections == nullptr || !sections->any_narrower()) return std::nullopt;
-  return WholeBody{sections, body_};
+  const bool follows = sections != nullptr && sections->any_narrower();
+  if (!follows && body_ == nullptr) return std::nullopt;
+  return WholeBody{follows ? sections : nullptr, body_};
 }
 
 SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
@@ -293,14 +294,13 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     const int current = search.pop();
     // Collisions are checked lazily, when a node is taken off the open list:
     // most generated nodes are never expanded.
-    // On a way with narrower sections the body is tested whole, in 3-D, and
-    // its shoulders against obstacles only so (a walk-only way's steps keep
-    // the 2-D model alone: a crowd's searches stay as cheap).
+    // With a body, every step is tested whole, in 3-D; following narrower
+    // sections, its shoulders against obstacles only so.
     if (current != 0 && checks.collides(search.nodes[current].step, search.others,
                                         search.nodes[search.nodes[current].parent].state.standing(),
-                                        whole != nullptr && whole->body != nullptr))
+                                        whole != nullptr && whole->shoulders_in_3d()))
       continue;
-    if (current != 0 && whole != nullptr && whole->hits(search.nodes[current].step)) continue;
+    if (current != 0 && whole != nullptr && !whole->passes(search.nodes[current].step)) continue;
     ++result.nodes_expanded;
     // At the goal, and able to come to rest there among the others (whose
     // rests may already stand on it), free to set off again (a local goal is

@@ -92,13 +92,21 @@ class StandingCheck {
 }  // namespace
 
 bool WholeBody::label(Footstep& step) const {
+  if (sections == nullptr) return true;
   const Behavior place = sections->along(step);
   if (place == Behavior::kSideStep && step.kind == StepKind::kWalk) return false;
   step.behavior = step.kind == StepKind::kSideStep ? Behavior::kSideStep : place;
   return true;
 }
 
-bool WholeBody::hits(const Footstep& step) const { return body != nullptr && body->hits(step); }
+bool WholeBody::passes(Footstep& step) const {
+  if (body == nullptr || !body->hits(step)) return true;
+  if (step.behavior != Behavior::kWalk) return false;
+  step.behavior = Behavior::kArmsIn;
+  if (!body->hits(step)) return true;
+  step.behavior = Behavior::kWalk;
+  return false;
+}
 
 using planner::detail::kPivotTurn;
 using planner::detail::kSideStepSpeed;
@@ -176,7 +184,7 @@ bool ValidityChecker::Impl::collides(const FootstepState& state, const WholeBody
     if (obstacles_.overlaps({foot, character_.foot_radius})) return true;
   }
   const auto torso = torso_circles(state.com, state.facing, character_);
-  const std::size_t circles = whole != nullptr ? 1 : torso.size();
+  const std::size_t circles = whole != nullptr && whole->shoulders_in_3d() ? 1 : torso.size();
   for (std::size_t c = 0; c < circles; ++c)
     if (obstacles_.overlaps(torso[c])) return true;
   return false;
@@ -438,8 +446,8 @@ StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double d
       state, {StepKind::kStop, other(state.last_foot), state.facing, 0.0, duration}, character_);
   if (!stop.valid()) return stop;
   if (whole != nullptr) whole->label(stop.step);  // a stop goes anywhere
-  if (collides(stop.step, others, state.standing(), whole != nullptr && whole->body != nullptr) ||
-      (whole != nullptr && whole->hits(stop.step)))
+  if (collides(stop.step, others, state.standing(), whole != nullptr && whole->shoulders_in_3d()) ||
+      (whole != nullptr && !whole->passes(stop.step)))
     stop.validity = StepValidity::kCollides;
   return stop;
 }
@@ -458,18 +466,21 @@ StepResult ValidityChecker::Impl::side_step(const FootstepState& standing, doubl
 
 bool ValidityChecker::Impl::free_to_set_off(const FootstepState& rested,
                                              const WholeBody* whole) const {
-  if (whole == nullptr ? !room_to_turn(rested.com) : collides(rested, whole)) return false;
-  const bool in_3d = whole != nullptr && whole->body != nullptr;
+  const bool in_3d = whole != nullptr && whole->shoulders_in_3d();
+  if (in_3d ? collides(rested, whole) : !room_to_turn(rested.com)) return false;
   const auto clear = [&](StepResult step, double, const detail::StepShape&) {
     if (!step.valid() || (whole != nullptr && !whole->label(step.step))) return false;
-    return !hits_obstacles(step.step, in_3d) && !(whole != nullptr && whole->hits(step.step));
+    return !hits_obstacles(step.step, in_3d) && (whole == nullptr || whole->passes(step.step));
   };
   if (tabled_walks(rested, Foot::kLeft, clear) || tabled_walks(rested, Foot::kRight, clear))
     return true;
   // Or a side step, or a pivot toward a way out (the steps' checks pad the
-  // torso, so room to turn alone does not promise one).
+  // torso, so room to turn alone does not promise one). Not a pivot where
+  // the shoulders are judged in 3-D: in a pocket between boxes a standing
+  // body may turn where no step leads out.
   const double across = rested.facing + outward_sign(other(rested.last_foot)) * 0.5 * kPi;
   if (clear(side_step(rested, across), 0.0, {})) return true;
+  if (in_3d) return false;
   for (const double turn : {kPivotTurn, -kPivotTurn, kMaxPivot, -kMaxPivot}) {
     const StepResult pivot = create_footstep(rested,
                                              {StepKind::kStop, other(rested.last_foot),

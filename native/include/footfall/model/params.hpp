@@ -164,7 +164,7 @@ struct PlannerParams {
   double detour_limit = 2.0;
   double behavior_horizon = 1000;
   double behavior_time_limit = 0.5;
-  int follow_sections = 0;
+  int follow_sections = 1;
   std::vector<Gait> gaits{{0.6, 0.65}, {1.3, 0.5}, {1.6, 0.45}};
   std::vector<double> turn_angles{0.04, 0.15, 0.35, 0.7, 1.1, 1.4};
 };
@@ -215,10 +215,10 @@ struct ParamTable<PlannerParams> {
       param("follow_sections", &S::follow_sections, "1", closed(0, 1),
             "1: an agent whose annotated way has a section other than walk follows it: its "
             "way is the annotated one, its steps take their sections' behaviours (the arms in "
-            "narrow the torso; only lateral steps inside side-step sections) and pass the "
-            "full-body test. 0: steps follow the mesh's way and are labelled from the "
-            "sections afterwards. Off by default while crowds among boxes lose agents with it "
-            "(docs/full-body.md)."),
+            "narrow the torso; only lateral steps inside side-step sections), its shoulders "
+            "are judged by the full-body test alone, and it may rest where it cannot turn. "
+            "0: steps follow the mesh's way and are labelled from the sections afterwards. "
+            "Either way every step passes the full-body test (docs/full-body.md)."),
       StructListParam<S, Gait>{"gaits", &S::gaits, 1, 16, "gaits",
                                "Gaits tried at every expansion. Three are enough with the "
                                "goal-directed phi (section 4); more cost time, not quality."},

@@ -18,6 +18,9 @@ struct AgentMetrics {
   double effort = 0;       ///< Sum of the step costs. [J]
   /// Samples at which one of its five circles overlaps an obstacle or a
   /// circle of another agent (our collision model; zero for a valid plan).
+  /// For an agent whose sections hold one narrower than walk, its shoulder
+  /// circles are not counted against obstacles: the full-body check tests
+  /// the shoulders and arms there in 3-D.
   int overlaps = 0;
   int collision_episodes = 0;  ///< SteerBench: times it starts to overlap (torso discs).
   double energy = 0;           ///< SteerBench: sum over samples of |dpos/dt|^2 / 2.

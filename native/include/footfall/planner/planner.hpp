@@ -107,9 +107,9 @@ class FootstepPlanner {
   /// The checks the search applies, for callers that check states and steps
   /// the same way (a crowd's rests, room and commits).
   const ValidityChecker& validity() const { return validity_; }
-  /// The full-body checks of a search following `sections` (SearchOptions),
-  /// for its callers' rests and waits: none unless a section is narrower
-  /// than walk.
+  /// The full-body checks of a search with `sections` (SearchOptions), for
+  /// its callers' rests and waits: the body's 3-D test, and the sections'
+  /// behaviours where one is narrower than walk; none without either.
   std::optional<WholeBody> whole_body(const SectionLookup* sections) const;
 
  private:

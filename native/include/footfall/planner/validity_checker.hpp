@@ -41,22 +41,28 @@ using KeepOut = std::vector<Circle>;
 class SectionLookup;
 class StepBodyTest;
 
-/// The checks of an agent that follows its annotated way (planner
-/// follow_sections): each step takes its section's behaviour (the arms in
-/// narrow the torso; only lateral steps and stops inside side-step sections),
-/// and with `body` it passes the full-body test in 3-D, which then alone
-/// judges the shoulders and arms against obstacles (in 2-D only the torso's
-/// centre circle). Its rests are the same: a character may stand in a
-/// passage too narrow to turn in, as long as it can set off.
+/// The full-body checks of a search. With `body`, every step also passes the
+/// full-body test in 3-D. With `sections` (an agent following its annotated
+/// way, planner follow_sections), each step takes its section's behaviour
+/// (the arms in narrow the torso; only lateral steps and stops inside
+/// side-step sections), and the 3-D test alone judges the shoulders and arms
+/// against obstacles (in 2-D only the torso's centre circle); its rests are
+/// the same: a character may stand in a passage too narrow to turn in, as
+/// long as it can set off. Without sections every step walks, its 2-D torso
+/// whole.
 struct WholeBody {
-  const SectionLookup* sections = nullptr;  ///< Not null.
+  const SectionLookup* sections = nullptr;  ///< Null: walk everywhere.
   const StepBodyTest* body = nullptr;       ///< Null: no 3-D test.
 
+  /// True if the shoulders are judged in 3-D only.
+  bool shoulders_in_3d() const { return sections != nullptr && body != nullptr; }
   /// Gives `step` its section's behaviour; false where it may not go (a
   /// walking step inside a side-step section).
   bool label(Footstep& step) const;
-  /// True if the body test finds a limb of `step` in an obstacle.
-  bool hits(const Footstep& step) const;
+  /// True if `step` passes the body test; a walking step whose limbs meet
+  /// an obstacle passes if it does with the arms held in, and is then
+  /// labelled arms_in.
+  bool passes(Footstep& step) const;
 };
 
 /// Stop steps that bring a character to rest, and where they leave it.
@@ -85,7 +91,7 @@ class ValidityChecker {
   /// touches a circle of one of `others`.
   bool collides(const Footstep& step, const MovingObstacles& others = {}) const;
   /// True if the standing or walking state's planted feet or torso collide
-  /// (with `whole`, the torso's centre circle).
+  /// (the torso's centre circle where `whole` judges the shoulders in 3-D).
   bool collides(const FootstepState& state, const WholeBody* whole = nullptr) const;
   /// Brings the character to rest with its feet side by side: a stop to
   /// decelerate (when walking), then one to close the feet, each halved in
@@ -93,7 +99,7 @@ class ValidityChecker {
   /// of `others` (the COM still coasts while it decelerates). The rest is
   /// complete only if the character, standing there, keeps room to turn on
   /// the spot among `others` while their plans last.
-  /// With `whole`, the stops are those of an agent following its sections.
+  /// With `whole`, the stops are checked as its searches check them.
   Rest come_to_rest(const FootstepState& state, const MovingObstacles& others = {},
                     const WholeBody* whole = nullptr) const;
   /// True if the character, standing at `state` from its time on, keeps
@@ -125,8 +131,9 @@ class ValidityChecker {
   /// alone is not enough: a walk sets off along the facing, and the steps'
   /// checks pad the torso, so a character facing a wall just over half its
   /// width away could otherwise take no step at all.
-  /// With `whole`, the steps are those of an agent following its sections,
-  /// and room to turn is not asked: the torso's centre circle must be clear.
+  /// With `whole`, the steps are checked as its searches check them; where
+  /// it judges the shoulders in 3-D, room to turn is not asked: the torso's
+  /// centre circle must be clear.
   bool free_to_set_off(const FootstepState& rested, const WholeBody* whole = nullptr) const;
   /// The stop step from `state` lasting `duration`, with validity kCollides if
   /// it runs into an obstacle (with `whole`, as its checks have it).
