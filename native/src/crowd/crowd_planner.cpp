@@ -660,6 +660,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     // those the search gave a narrower one (the arms held in) keep it.
     for (Footstep& step : w.plan.footsteps)
       step.behavior = std::max(step.behavior, w.sections->of(step));
+    planner.hold_arms_in(w.plan.footsteps);
     w.plan.sections = w.spec->sections;
     plans.push_back(std::move(w.plan));
   }

@@ -21,8 +21,9 @@ constexpr double kClearanceMargin = 0.02;
 }
 
 // The behaviour standing: its pose with the feet nearest together across the
-// ground (the arms nearest their rest), the legs then straightened under the
-// hips with the feet flat beside each other, pointing as they did.
+// ground, the legs then straightened under the hips with the feet flat
+// beside each other, pointing as they did, and the arms hanging straight
+// below the shoulders.
 BodyPose standing_pose(const BehaviorMotion& motion) {
   const auto centre = [](const Capsule& c) { return 0.5 * (c.a + c.b); };
   const auto at = [](const BodyPose& pose, Limb limb) -> const Capsule& {
@@ -41,6 +42,16 @@ BodyPose standing_pose(const BehaviorMotion& motion) {
   BodyPose pose = *nearest;
   const Limb legs[2][3] = {{Limb::kThighLeft, Limb::kShinLeft, Limb::kFootLeft},
                            {Limb::kThighRight, Limb::kShinRight, Limb::kFootRight}};
+  const Limb arms[2][2] = {{Limb::kUpperArmLeft, Limb::kForearmLeft},
+                           {Limb::kUpperArmRight, Limb::kForearmRight}};
+  for (const auto& arm : arms) {
+    Capsule& upper = pose[static_cast<int>(arm[0])];
+    Capsule& fore = pose[static_cast<int>(arm[1])];
+    const double upper_length = length(upper.b - upper.a), fore_length = length(fore.b - fore.a);
+    upper.b = upper.a - Vec3{0.0, 0.0, upper_length};
+    fore.a = upper.b;
+    fore.b = upper.b - Vec3{0.0, 0.0, fore_length};
+  }
   for (const auto& leg : legs) {
     Capsule& thigh = pose[static_cast<int>(leg[0])];
     Capsule& shin = pose[static_cast<int>(leg[1])];

@@ -235,9 +235,15 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
 }
 
 std::optional<WholeBody> FootstepPlanner::whole_body(const SectionLookup* sections) const {
-  const bool follows = sections != nullptr && sections->any_narrower();
-  if (!follows && body_ == nullptr) return std::nullopt;
-  return WholeBody{follows ? sections : nullptr, body_};
+  if (sections == nullptr || !sections->any_narrower()) return std::nullopt;
+  return WholeBody{sections, body_};
+}
+
+void FootstepPlanner::hold_arms_in(std::vector<Footstep>& steps) const {
+  if (body_ == nullptr) return;
+  const WholeBody walking{nullptr, body_};
+  for (Footstep& step : steps)
+    if (step.kind == StepKind::kWalk && step.behavior == Behavior::kWalk) walking.passes(step);
 }
 
 SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
@@ -294,8 +300,8 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     const int current = search.pop();
     // Collisions are checked lazily, when a node is taken off the open list:
     // most generated nodes are never expanded.
-    // With a body, every step is tested whole, in 3-D; following narrower
-    // sections, its shoulders against obstacles only so.
+    // Following narrower sections, every step is tested whole, in 3-D, and
+    // its shoulders against obstacles only so.
     if (current != 0 && checks.collides(search.nodes[current].step, search.others,
                                         search.nodes[search.nodes[current].parent].state.standing(),
                                         whole != nullptr && whole->shoulders_in_3d()))
@@ -367,6 +373,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   }
   if (options.rest_grace != std::numeric_limits<double>::infinity())
     cut_before_rests(checks, start, search.others, result);
+
   choose_foot_orientations(result.footsteps, start.foot_orientation, character);
   result.refused_by = search.others.refusers();
   return result;

@@ -214,9 +214,12 @@ TEST(Crowd, BlocksMeetingHeadOnMakeRoomAndPass) {
 // for good, it would hold agent206 until that one was stuck too. Stuck agents
 // only sleep: when one within 5 m commits steps
 // that move, agent347 searches again (at 33.9 s) and walks on. Waking is
-// decided in the commits' order, so 1 thread plans the same.
+// decided in the commits' order, so 1 thread plans the same. (Footsteps
+// that follow their sections change the scene: agent324 then stays stuck in a
+// gap between boxes, docs/notes/full-body-planner.md.)
 TEST(Crowd, AStuckAgentTriesAgainWhenOneNearMoves) {
-  const Scenario scenario = box_field_crowd_scenario(500, 700, 28);
+  Scenario scenario = box_field_crowd_scenario(500, 700, 28);
+  scenario.planner.follow_sections = 0;
   RunControl control;
   control.threads = 2;
   const Plan plan = plan_scenario(scenario, control);

@@ -9,6 +9,7 @@
 #include "footfall/fullbody/body_check.hpp"
 #include "footfall/fullbody/body_sweep.hpp"
 #include "footfall/plan/section_lookup.hpp"
+#include "footfall/planner/planner.hpp"
 #include "footfall/scenes/behavior_scenes.hpp"
 
 namespace footfall {
@@ -222,6 +223,78 @@ TEST(BehavioralFootsteps, TheDoorIsWalkedThroughWithTheArmsIn) {
     EXPECT_EQ(through, 1);
     EXPECT_EQ(check_body(plan).penetrations, 0);
   }
+}
+
+// The corridor's footsteps, following its sections: arms in along the first
+// passage (0.58 m), walking between the knee-high sides (0.45 m; the
+// side-step section starts some 0.6 m before the tall sides, where the
+// character turns), then turned across the last passage (0.45 m, tall) and
+// stepping sideways; the
+// character may stand in passages too narrow to turn in, and no limb enters
+// an obstacle. Each section is entered: the character reaches the goal.
+TEST(BehavioralFootsteps, TheCorridorIsWalkedArmsInThenWalkingThenSideStepping) {
+  const BehaviorScene scene = corridor_scene();
+  const Plan plan = plan_scenario(scene.scenario);
+  const AgentPlan& agent = plan.agents.front();
+  EXPECT_EQ(agent.status, AgentStatus::kReached);
+  std::vector<Behavior> inside[3];  // the behaviours of the steps within each passage
+  for (const Footstep& step : agent.footsteps) {
+    const Vec2 middle = 0.5 * (step.com_start + step.com_end);
+    if (std::fabs(middle.y) > 0.3) continue;
+    const int passage = middle.x > 0.3 && middle.x < 1.7   ? 0
+                        : middle.x > 2.3 && middle.x < 3.5 ? 1
+                        : middle.x > 4.8 && middle.x < 6.2 ? 2
+                                                           : -1;
+    if (passage >= 0) inside[passage].push_back(step.behavior);
+  }
+  const Behavior expected[3] = {Behavior::kArmsIn, Behavior::kWalk, Behavior::kSideStep};
+  for (int p = 0; p < 3; ++p) {
+    SCOPED_TRACE(p);
+    EXPECT_FALSE(inside[p].empty());
+    for (const Behavior behavior : inside[p]) EXPECT_EQ(behavior, expected[p]);
+  }
+  int lateral = 0;
+  for (const Footstep& step : agent.footsteps) lateral += step.kind == StepKind::kSideStep ? 1 : 0;
+  EXPECT_GE(lateral, 6);  // 1.4 m in steps of 0.25 m at most
+  EXPECT_EQ(check_body(plan).penetrations, 0);
+}
+
+// A walking step that passes a waist-high box closely holds the arms in when
+// the swinging hands would meet it and the arms held in clear it; otherwise
+// (far off, or so close that the arms held in meet it too) it walks. Boxes
+// at a range of distances beside one step of the open field's plan.
+TEST(BehavioralFootsteps, WalkingStepsHoldTheArmsInWhereTheSwingWouldMeetABox) {
+  const BehaviorScene open = open_field_scene();
+  const Plan plan = plan_scenario(open.scenario);
+  const std::vector<Footstep>& steps = plan.agents.front().footsteps;
+  const Footstep walking = steps[steps.size() / 2];
+  ASSERT_EQ(walking.kind, StepKind::kWalk);
+  const Vec2 along = (1.0 / distance(walking.com_start, walking.com_end)) *
+                     (walking.com_end - walking.com_start);
+  const Vec2 left = perp(along);
+  const Vec2 middle = 0.5 * (walking.com_start + walking.com_end);
+  const BodyModel body(open.scenario.character);
+  int held = 0;
+  for (double gap = 0.1; gap < 0.6; gap += 0.02) {
+    SCOPED_TRACE(gap);
+    const Vec2 near = middle + gap * left, far = near + 0.5 * left;
+    const std::vector<Obstacle> box{prism({near - 0.4 * along, near + 0.4 * along,
+                                           far + 0.4 * along, far - 0.4 * along},
+                                          0.95)};
+    const CollisionScene scene(box);
+    const StepBodyTest test(scene, body, 30);
+    const ObstacleMap map(box);
+    const FootstepPlanner planner(open.scenario.character, open.scenario.planner, map, &test);
+    Footstep arms_in = walking;
+    arms_in.behavior = Behavior::kArmsIn;
+    const Behavior expected =
+        test.hits(walking) && !test.hits(arms_in) ? Behavior::kArmsIn : Behavior::kWalk;
+    std::vector<Footstep> labelled{walking};
+    planner.hold_arms_in(labelled);
+    EXPECT_EQ(labelled.front().behavior, expected);
+    held += expected == Behavior::kArmsIn ? 1 : 0;
+  }
+  EXPECT_GE(held, 2);
 }
 
 }  // namespace

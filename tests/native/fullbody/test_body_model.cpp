@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "footfall/fullbody/body_model.hpp"
+#include "footfall/fullbody/collision_scene.hpp"
+#include "footfall/scenes/behavior_scenes.hpp"
 
 namespace footfall {
 namespace {
@@ -86,6 +88,34 @@ TEST(BodyModel, SampledMotionsAreChecked) {
     FAIL() << "no error";
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()), "character.behaviors.walk.poses[3].head: radius must be in (0, 1] m");
+  }
+}
+
+// A standing body (stops, waits, pivots) keeps its feet together and its arms
+// hanging: turning on the spot between knee-high sides 0.45 m apart, the
+// walking body with a leg lifted mid-stride would kick them.
+TEST(BodyModel, AStandingBodyHasItsFeetTogetherAndItsArmsHanging) {
+  const BodyModel body(CharacterParams{});
+  for (const Behavior behavior : {Behavior::kWalk, Behavior::kArmsIn, Behavior::kSideStep}) {
+    SCOPED_TRACE(to_string(behavior));
+    const BodyPose& pose = body.standing(behavior);
+    const auto at = [&](Limb limb) { return pose[static_cast<int>(limb)]; };
+    for (const Limb foot : {Limb::kFootLeft, Limb::kFootRight}) {
+      EXPECT_NEAR(at(foot).a.z, at(foot).radius, 1e-12);
+      EXPECT_NEAR(at(foot).b.z, at(foot).radius, 1e-12);
+    }
+    for (const Limb limb : {Limb::kThighLeft, Limb::kShinLeft, Limb::kUpperArmRight,
+                            Limb::kForearmRight}) {
+      EXPECT_NEAR(at(limb).a.x, at(limb).b.x, 1e-12);
+      EXPECT_NEAR(at(limb).a.y, at(limb).b.y, 1e-12);
+    }
+  }
+  const BehaviorScene scene = corridor_scene();
+  const CollisionScene obstacles(scene.scenario.obstacles);
+  for (double facing = 0.0; facing < 2.0 * kPi; facing += 0.25) {
+    const GroundPlacement between_knee_high_sides{{3.2, 0.0}, facing};
+    EXPECT_FALSE(obstacles.test(body.standing(Behavior::kWalk), between_knee_high_sides))
+        << facing;
   }
 }
 

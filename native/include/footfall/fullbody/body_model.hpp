@@ -44,7 +44,7 @@ class BodyModel {
   void pose_at(Behavior behavior, double time, BodyPose& pose) const;
   /// The behaviour's pose standing (stopping, waiting, pivoting): its
   /// sampled pose with the feet nearest together, the legs straight under
-  /// the hips and the feet flat.
+  /// the hips, the feet flat and the arms hanging.
   const BodyPose& standing(Behavior behavior) const { return standing_[index(behavior)]; }
 
  private:

@@ -41,15 +41,14 @@ using KeepOut = std::vector<Circle>;
 class SectionLookup;
 class StepBodyTest;
 
-/// The full-body checks of a search. With `body`, every step also passes the
-/// full-body test in 3-D. With `sections` (an agent following its annotated
-/// way, planner follow_sections), each step takes its section's behaviour
-/// (the arms in narrow the torso; only lateral steps and stops inside
-/// side-step sections), and the 3-D test alone judges the shoulders and arms
-/// against obstacles (in 2-D only the torso's centre circle); its rests are
-/// the same: a character may stand in a passage too narrow to turn in, as
-/// long as it can set off. Without sections every step walks, its 2-D torso
-/// whole.
+/// The full-body checks of a search following its annotated way (planner
+/// follow_sections). With `sections`, each step takes its section's
+/// behaviour (the arms in narrow the torso; only lateral steps and stops
+/// inside side-step sections), and with `body` it passes the full-body test
+/// in 3-D, which alone then judges the shoulders and arms against obstacles
+/// (in 2-D only the torso's centre circle); its rests are the same: a
+/// character may stand in a passage too narrow to turn in, as long as it can
+/// step out. Without sections every step walks, its 2-D torso whole.
 struct WholeBody {
   const SectionLookup* sections = nullptr;  ///< Null: walk everywhere.
   const StepBodyTest* body = nullptr;       ///< Null: no 3-D test.
