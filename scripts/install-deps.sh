@@ -8,7 +8,7 @@ packages=(
   pybind11-dev nlohmann-json3-dev libpugixml-dev libcgal-dev python3-dev
   libgtest-dev libbenchmark-dev
   clang libclang-rt-14-dev
-  python3-pytest python3-numpy
+  python3-pytest python3-numpy python3-venv
   blender
 )
 missing=()
@@ -28,3 +28,17 @@ cd "$(dirname "$0")/.."
 if [ ! -d tests/gltf/node_modules/gltf-validator ]; then
   npm ci --prefix tests/gltf --no-audit --no-fund --loglevel=error >/dev/null
 fi
+
+# Blender 4.5 LTS and 5.0 as Python modules (PyPI's bpy wheels, built for
+# Python 3.11 like Debian's), one virtual environment each, for the Blender
+# test tier on those versions. A marker says the install finished.
+for version in 4.5 5.0; do
+  venv=".venv/bpy-$version"
+  if [ ! -f "$venv/installed" ]; then
+    echo "Installing Blender $version as a Python module (bpy) into $venv"
+    rm -rf "$venv"
+    /usr/bin/python3 -m venv "$venv"
+    "$venv/bin/pip" install -q --disable-pip-version-check "bpy==$version.*"
+    touch "$venv/installed"
+  fi
+done

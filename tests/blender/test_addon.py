@@ -9,8 +9,8 @@ import os
 import pathlib
 import sys
 
-import addon_utils
-import bpy
+import bpy  # first: as a Python module, bpy puts Blender's own modules on the path
+import addon_utils  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from harness import check, run  # noqa: E402

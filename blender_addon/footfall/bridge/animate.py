@@ -23,7 +23,7 @@ import numpy
 from mathutils import Matrix, Vector
 
 from ..core import clip_timing
-from . import procedural_clips
+from . import action_curves, procedural_clips
 from .rig_import import profile_of
 
 IK_FOOT = "footfall_ik_foot.{}"
@@ -180,16 +180,16 @@ def _write_action(armature, name: str, frames, channels) -> bpy.types.Action:
     """A new active action with a key at every frame: channels maps a bone
     to its (locations, quaternions or None) arrays."""
     action = bpy.data.actions.new(name)
-    armature.animation_data_create().action = action
     for bone, arrays in channels.items():
         for path, values in zip(("location", "rotation_quaternion"), arrays):
             if values is None:
                 continue
             for index in range(values.shape[1]):
-                curve = action.fcurves.new(f'pose.bones["{bone}"].{path}', index=index, action_group=bone)
+                curve = action_curves.curve(action, f'pose.bones["{bone}"].{path}', index, bone)
                 curve.keyframe_points.add(len(frames))
                 curve.keyframe_points.foreach_set("co", numpy.column_stack((frames, values[:, index])).ravel())
                 curve.update()
+    action_curves.assign(armature, action)
     return action
 
 
@@ -254,7 +254,7 @@ def _make_cyclic(action) -> None:
     that may start anywhere in the first, and NLA strips hold an action's last
     value past its frame range instead of letting the Cycles modifier go on."""
     first, last = action.curve_frame_range
-    for curve in action.fcurves:
+    for curve in action_curves.curves(action):
         if not any(m.type == "CYCLES" for m in curve.modifiers):
             curve.modifiers.new("CYCLES")
     action.use_frame_range = True

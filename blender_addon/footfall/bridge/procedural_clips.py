@@ -9,6 +9,8 @@ import math
 import bpy
 from mathutils import Matrix, Vector
 
+from . import action_curves
+
 CYCLE_FRAMES = {"walk": 24, "arms_in": 24, "side_step": 24, "idle": 48}
 SWING = math.radians(20)  # arm swing each way while walking
 SAMPLES = 8  # keys per cycle
@@ -17,7 +19,7 @@ SAMPLES = 8  # keys per cycle
 def _key(action, bone: str, frame: float, quaternion) -> None:
     path = f'pose.bones["{bone}"].rotation_quaternion'
     for i in range(4):
-        curve = action.fcurves.find(path, index=i) or action.fcurves.new(path, index=i, action_group=bone)
+        curve = action_curves.curve(action, path, i, bone)
         curve.keyframe_points.insert(frame, quaternion[i], options={"FAST"})
 
 

@@ -38,8 +38,13 @@ def _run_gltf_importer(filepath: str) -> None:
 
     if "bool" not in numpy.__dict__:  # hasattr() would warn
         numpy.bool = bool
+    options = {"filepath": filepath}
+    # From Blender 4.x on the importer gives bones a display shape, a stray
+    # Icosphere object in the file; the option to leave it out is newer than 3.4.
+    if "disable_bone_shape" in bpy.ops.import_scene.gltf.get_rna_type().properties.keys():
+        options["disable_bone_shape"] = True
     try:
-        result = bpy.ops.import_scene.gltf(filepath=filepath)
+        result = bpy.ops.import_scene.gltf(**options)
     except RuntimeError as error:
         raise RigImportError(f"{filepath}: Blender's glTF importer failed: {error}") from error
     if "FINISHED" not in result:
