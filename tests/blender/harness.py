@@ -1,6 +1,7 @@
 """Shared by the Blender background tests: a check, and a runner that reports
 every test and makes Blender exit non-zero when any fails."""
 
+import os
 import sys
 import traceback
 
@@ -23,5 +24,13 @@ def run(tests):
             traceback.print_exc()
             print(f"FAIL {test.__name__}: {error!r}")
     print(f"{len(tests) - failed} passed, {failed} failed")
+    # Blender as a Python module (PyPI's bpy) may hang at interpreter exit
+    # (4.5 does, after the tests have run): leave at once, with the result.
+    import bpy
+
+    if getattr(bpy.app, "module", False):
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(1 if failed else 0)
     if failed:
         sys.exit(1)

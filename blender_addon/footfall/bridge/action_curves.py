@@ -18,10 +18,12 @@ def _slot(action):
 
 
 def _channelbag(action):
-    """The channel bag of the action's slot, made (with the slot) if it has none."""
-    from bpy_extras import anim_utils
-
-    return anim_utils.action_ensure_channelbag_for_slot(action, _slot(action))
+    """The channel bag of the action's slot in its first layer's keyframe strip,
+    made (with the slot, layer and strip) if it has none."""
+    slot = _slot(action)
+    layer = action.layers[0] if len(action.layers) else action.layers.new("Layer")
+    strip = layer.strips[0] if len(layer.strips) else layer.strips.new(type="KEYFRAME")
+    return strip.channelbag(slot, ensure=True)
 
 
 def assign(obj, action) -> None:
