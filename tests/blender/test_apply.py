@@ -147,6 +147,17 @@ def test_applying_again_replaces_the_crowd():
     check(not [o for o in bpy.data.objects if "(replaced)" in o.name], "replaced agents were left")
 
 
+def expect_valid_gltf(path):
+    """The Khronos glTF validator finds no error in the file."""
+    import subprocess
+
+    validator = ROOT / "tests" / "gltf" / "validate.mjs"
+    run = subprocess.run(["node", str(validator), str(path)], capture_output=True, text=True)
+    report = json.loads(run.stdout)["issues"]
+    print(f"validator: {report['numErrors']} errors, {report['numWarnings']} warnings")
+    check(run.returncode == 0 and report["numErrors"] == 0, f"the validator found errors: {run.stdout[:2000]}")
+
+
 def glb_json(path):
     """The JSON chunk of a .glb file."""
     import struct
@@ -171,8 +182,6 @@ def bones_now(names, bones):
 
 
 def test_export_validates_and_reimports():
-    import subprocess
-
     ff, plan, path = applied(doorway_plan)
     rig, _profile = imported_rig()
     body_bones = [bone.name for bone in rig.data.bones]
@@ -195,11 +204,7 @@ def test_export_validates_and_reimports():
     check(bpy.ops.footfall.export_gltf(filepath=str(out)) == {"FINISHED"}, "export failed")
     check(sorted(o.name for o in bpy.data.objects) == objects_before, "the export changed the scene")
     check(not pathlib.Path(str(out) + ".partial.glb").exists(), "a partial file was left")
-    validator = ROOT / "tests" / "gltf" / "validate.mjs"
-    run = subprocess.run(["node", str(validator), str(out)], capture_output=True, text=True)
-    report = json.loads(run.stdout)["issues"]
-    print(f"validator: {report['numErrors']} errors, {report['numWarnings']} warnings")
-    check(run.returncode == 0 and report["numErrors"] == 0, f"the validator found errors: {run.stdout[:2000]}")
+    expect_valid_gltf(out)
     gltf = glb_json(out)
     check(sorted(a["name"] for a in gltf["animations"]) == sorted(names), [a["name"] for a in gltf["animations"]])
 
@@ -390,7 +395,79 @@ def doorway_plan_without_rig(ff):
 
 
 
+def leaving_plan(ff):
+    """leo walks through its goal and leaves there; sam walks on for longer."""
+    from footfall.core import scenario as sc
+
+    agents = [sc.AgentInput("leo", (0, 0), [(5, 0)], leave_at_goal=True),
+              sc.AgentInput("sam", (0, 2.5), [(12, 2.5)])]
+    plan = sc.plan(sc.scenario_document(sc.ScenarioInput(agents)))
+    check(plan.agents[0].leaves and plan.agents[0].end_time() + 2 < plan.agents[1].end_time(), "leo does not leave first")
+    path = TMP / "leaving-plan.json"
+    ff.write_plan_file(plan, str(path))
+    return plan, path
+
+
+def test_a_leaving_agent_walks_off_and_disappears():
+    """Walking on off its last step, its hips no lower than a walker's up to
+    its leave time, hidden in viewports and renders after it, and in the
+    exported glTF scaled to nothing from then on."""
+    import numpy
+    from footfall.core import glb
+
+    ff, plan, path = applied(leaving_plan)
+    rig, profile = imported_rig()
+    leo = plan.agents[0]
+    standing = rig.data.bones[profile.bones["hips"]].head_local.z
+    scene = bpy.context.scene
+    fps = scene.render.fps / scene.render.fps_base
+    leave_frame = scene.frame_start + leo.end_time() * fps
+    worst, walking, hidden_frames = 0.0, 0.0, 0
+    for frame in range(scene.frame_start, scene.frame_end + 1):
+        scene.frame_set(frame)
+        armature = bpy.data.objects["leo"]
+        parts = [armature, *armature.children]
+        if frame <= leave_frame:
+            hips = evaluated("leo").matrix_world @ evaluated("leo").pose.bones[profile.bones["hips"]].head
+            worst = max(worst, abs(hips.z - standing))
+            sam = evaluated("sam").matrix_world @ evaluated("sam").pose.bones[profile.bones["hips"]].head
+            walking = max(walking, abs(sam.z - standing))
+            check(not any(o.hide_render or o.hide_viewport for o in parts), f"leo hidden at frame {frame}")
+        else:
+            hidden_frames += 1
+            check(all(o.hide_render and o.hide_viewport for o in parts), f"leo shown at frame {frame}")
+        check(not bpy.data.objects["sam"].hide_render, f"sam hidden at frame {frame}")
+    # The gait itself lowers the hips at each double support (some 6.5 cm with
+    # this rig's strides): leo's may go no lower than sam's, who walks on.
+    print(f"leo's hips at most {worst * 100:.2f} cm from standing height (sam's {walking * 100:.2f} cm); "
+          f"hidden for {hidden_frames} frames")
+    check(worst <= walking + 0.005, f"leo's hips {worst * 100:.1f} cm below their standing height")
+    check(hidden_frames >= 2 * fps, f"leo hidden for only {hidden_frames} frames")
+
+    out = TMP / "leaving.glb"
+    check(bpy.ops.footfall.export_gltf(filepath=str(out)) == {"FINISHED"}, "export failed")
+    expect_valid_gltf(out)
+    file = glb.read(str(out))
+    document = file.document
+
+    def floats(accessor_index):
+        accessor = document["accessors"][accessor_index]
+        view = document["bufferViews"][accessor["bufferView"]]
+        width = {"SCALAR": 1, "VEC3": 3, "VEC4": 4}[accessor["type"]]
+        start = view.get("byteOffset", 0) + accessor.get("byteOffset", 0)
+        return numpy.frombuffer(file.binary, "<f4", accessor["count"] * width, start).reshape(accessor["count"], width)
+
+    (animation,) = [a for a in document["animations"] if a["name"] == "leo"]
+    scales = [c for c in animation["channels"] if c["target"]["path"] == "scale"]
+    check(scales, "leo's animation has no scale channel")
+    sampler = animation["samplers"][scales[0]["sampler"]]
+    times, values = floats(sampler["input"])[:, 0], floats(sampler["output"])
+    gone = times > leo.end_time() + 1.0 / fps
+    check(gone.any() and numpy.all(values[gone] == 0.0), "leo is not scaled to nothing after leaving")
+    check(numpy.all(values[times <= leo.end_time()] > 0.5), "leo is scaled down before leaving")
+
+
 run([test_feet_and_pelvis_follow_the_plan, test_arms_swing_opposite_to_the_legs, test_behaviours_play_their_clips,
      test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was,
      test_applying_again_replaces_the_crowd, test_a_crowd_with_short_waits_applies,
-     test_a_sheared_pose_is_refused_by_name])
+     test_a_sheared_pose_is_refused_by_name, test_a_leaving_agent_walks_off_and_disappears])

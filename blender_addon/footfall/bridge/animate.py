@@ -209,8 +209,9 @@ def _facings(feet_yaw, steps, step_index):
 
 def _locomotion(ff, agent, rest: RigRest, frames, frame_offset: float, fps: float):
     """Channels of the hips on the COM path, the foot targets on the feet and
-    the poles ahead of the knees, at every frame."""
-    times = (frames - frame_offset) / fps
+    the poles ahead of the knees, at every frame; after its plan the agent
+    holds its last pose (one that leaves is hidden then, _key_leaving)."""
+    times = numpy.minimum((frames - frame_offset) / fps, agent.end_time())
     count = len(times)
     com = numpy.empty((count, 2))
     feet_xy = numpy.empty((count, 2, 2))
@@ -247,6 +248,20 @@ def _locomotion(ff, agent, rest: RigRest, frames, frame_offset: float, fps: floa
         channels[POLE.format(suffix)] = _pose_arrays(leg.pole_rest, poles)
     channels[rest.hips] = _pose_arrays(rest.hips_rest, numpy.column_stack((com, height)), body_yaw)
     return channels
+
+
+def _key_leaving(armature, agent, frame_offset: float, fps: float) -> None:
+    """An agent that leaves at its goal is shown up to its leave time and
+    hidden, in viewports and renders, from the first frame after it."""
+    if not agent.leaves:
+        return
+    gone = math.floor(frame_offset + agent.end_time() * fps) + 1
+    for obj in (armature, *armature.children):
+        for prop in ("hide_viewport", "hide_render"):
+            for frame, hidden in ((frame_offset, False), (gone, True)):
+                setattr(obj, prop, hidden)
+                obj.keyframe_insert(prop, frame=frame)
+            setattr(obj, prop, False)
 
 
 def _make_cyclic(action) -> None:
@@ -344,6 +359,7 @@ def apply_plan(ff, plan, rig, scene, progress: Optional[Callable[[float], None]]
         _write_action(armature, f"{agent.name} locomotion", frames,
                       _locomotion(ff, agent, rest, frames, frame_offset, fps))
         _upper_body(armature, agent, clips, fps, frame_offset, last_frame)
+        _key_leaving(armature, agent, frame_offset, fps)
         if progress:
             progress((i + 1) / len(plan.agents))
     bpy.data.armatures.remove(template)

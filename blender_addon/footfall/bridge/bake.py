@@ -6,6 +6,10 @@ One scene evaluation per frame serves every armature. The armatures' meshes
 are left out of the evaluation meanwhile (deforming them would be most of its
 cost, and the bake needs only the bones), and the bone matrices are read in
 bulk and converted a block of frames at a time.
+
+An armature hidden from renders at a frame (an agent that has left) is
+written there with its root bones scaled to zero: glTF viewers then draw
+nothing of it (Blender 3.4's exporter has no KHR_node_visibility).
 """
 
 from dataclasses import dataclass
@@ -69,11 +73,13 @@ def bake(armatures, scene, frames: Sequence[int], progress: Optional[Callable[[f
         for start in range(0, len(frames), BLOCK):
             block = frames[start:start + BLOCK]
             matrices = [numpy.empty((len(block), len(g.members), len(g.parents) * 16), numpy.float32) for g in groups]
+            hidden = [numpy.zeros((len(block), len(g.members)), bool) for g in groups]
             for row, frame in enumerate(block):
                 scene.frame_set(frame)
-                for group, sampled in zip(groups, matrices):
+                for group, sampled, gone in zip(groups, matrices, hidden):
                     for k, i in enumerate(group.members):
                         armatures[i].pose.bones.foreach_get("matrix", sampled[row, k])
+                        gone[row, k] = armatures[i].hide_render
             rows = slice(start, start + len(block))
             for group, sampled in zip(groups, matrices):
                 # foreach_get gives Blender's column-major layout: transpose.
@@ -82,6 +88,11 @@ def bake(armatures, scene, frames: Sequence[int], progress: Optional[Callable[[f
                 _refuse_shear(poses, block, [armatures[i] for i in group.members])
                 group.translations[rows], group.rotations[rows], group.scales[rows] = node_motion.decompose(
                     node_motion.node_matrices(poses, group.parents))
+            for group, gone in zip(groups, hidden):
+                roots = [b for b, parent in enumerate(group.parents) if parent < 0]
+                rows_gone, members_gone = numpy.nonzero(gone)
+                for b in roots:
+                    group.scales[start + rows_gone, members_gone, b] = 0.0
             if progress:
                 progress(min(start + BLOCK, len(frames)) / len(frames))
     finally:

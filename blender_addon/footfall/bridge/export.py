@@ -58,13 +58,14 @@ def _exporter_options(filepath: str) -> dict:
 def _still_copies(armatures, names: Dict[object, str], scene_collection) -> List[bpy.types.Object]:
     """Still copies of the armatures under the given names, without animation,
     constraints or IK controls, with copies of their meshes (the mesh data
-    shared) deformed by them."""
+    shared) deformed by them, all shown (bake() writes when agents are gone)."""
     copies = []
     for armature in armatures:
         copy = armature.copy()
         copy.data = armature.data.copy()
         copy.name = names[armature]
         copy.animation_data_clear()
+        copy.hide_viewport = copy.hide_render = False  # one that has left is hidden now
         for bone in copy.pose.bones:
             for constraint in list(bone.constraints):
                 bone.constraints.remove(constraint)
@@ -73,7 +74,9 @@ def _still_copies(armatures, names: Dict[object, str], scene_collection) -> List
     _remove_controls(copies)
     for copy, armature in zip(copies, armatures):
         for child in armature.children:
-            animate.deformed_copy(child, copy, scene_collection)
+            body = animate.deformed_copy(child, copy, scene_collection)
+            body.animation_data_clear()
+            body.hide_viewport = body.hide_render = False
     return copies
 
 

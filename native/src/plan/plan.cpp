@@ -194,7 +194,19 @@ std::array<FootPose, 2> feet_during(const AgentPlan& plan, int k, double t) {
   const int other_foot = static_cast<int>(other(step.foot));
   const FootPose before = feet[stepping];
   feet[stepping] = {step.foot_position, step.foot_orientation, 0.0, true};
-  if (t >= step.end_time) return feet;
+  // One that leaves walks on off its last step: the other foot swings a
+  // stride on (two COM chords), as the COM travels beyond the planted foot.
+  const bool walks_off = k + 1 == static_cast<int>(steps.size()) && plan.leaves &&
+                         step.kind == StepKind::kWalk;
+  Footstep walk_on = step;
+  if (walks_off) {
+    walk_on.foot = other(step.foot);
+    walk_on.foot_position = feet[other_foot].position + 2.0 * (step.com_end - step.com_start);
+  }
+  if (t >= step.end_time) {
+    if (walks_off) feet[other_foot] = swing(feet[other_foot], walk_on, 1.0);  // landing as it goes
+    return feet;
+  }
   // A foot lands at its step's start, having swung during the step before,
   // which the other foot took. The first step, or one taken from standing by
   // the foot that stopped last, has no such step: its foot swings in a lead-in
@@ -212,9 +224,11 @@ std::array<FootPose, 2> feet_during(const AgentPlan& plan, int k, double t) {
     stance_start += lead;
   }
   // Meanwhile the other foot swings to where the next step plants it.
+  const double u = (t - stance_start) / (step.end_time - stance_start);
   if (k + 1 < static_cast<int>(steps.size()) && steps[k + 1].foot == other(step.foot)) {
-    feet[other_foot] =
-        swing(feet[other_foot], steps[k + 1], (t - stance_start) / (step.end_time - stance_start));
+    feet[other_foot] = swing(feet[other_foot], steps[k + 1], u);
+  } else if (walks_off) {
+    feet[other_foot] = swing(feet[other_foot], walk_on, u);
   }
   return feet;
 }

@@ -516,7 +516,9 @@ TEST(Plan, FeetNeverJump) {
   // The demo, and a walk with stops and restarts along the way (goal behind a wall).
   Scenario stops = one_agent({box_obstacle({3, 0}, {0.2, 3})}, {0, 0}, 0, {6, 0});
   stops.planner.max_expansions = 60;
-  for (const Scenario& scenario : {demo_scenario(), stops}) {
+  Scenario leaving = one_agent({}, {0, 0}, 0, {6, 0});
+  leaving.agents[0].leave_at_goal = true;
+  for (const Scenario& scenario : {demo_scenario(), stops, leaving}) {
     const AgentPlan agent = plan_scenario(scenario).agents[0];
     std::array<FootPose, 2> last = feet_at(agent, -1.0);
     for (double t = 0; t <= agent.end_time() + 0.01; t += 0.001) {
@@ -535,6 +537,26 @@ TEST(Plan, FeetNeverJump) {
       EXPECT_EQ(feet[static_cast<int>(s.foot)].position, s.foot_position);
     }
   }
+}
+
+// One that leaves walks on off its last step: meanwhile its other foot swings
+// a stride on, past the planted one, and lands as the agent goes; it never
+// stands with the COM run beyond both feet.
+TEST(Plan, ALeavingAgentWalksOffItsLastStep) {
+  Scenario scenario = one_agent({}, {0, 0}, 0, {6, 0});
+  scenario.agents[0].leave_at_goal = true;
+  const AgentPlan agent = plan_scenario(scenario).agents[0];
+  ASSERT_TRUE(agent.leaves);
+  const Footstep& last = agent.footsteps.back();
+  ASSERT_EQ(last.kind, StepKind::kWalk);
+  const int swinging = static_cast<int>(other(last.foot));
+  const auto middle = feet_at(agent, 0.5 * (last.start_time + last.end_time));
+  EXPECT_FALSE(middle[swinging].planted);
+  EXPECT_GT(middle[swinging].lift, 0.0);
+  const auto end = feet_at(agent, last.end_time);
+  EXPECT_FALSE(end[swinging].planted);
+  EXPECT_GT(end[swinging].position.x, last.foot_position.x + 0.3);
+  EXPECT_GT(end[swinging].position.x, last.com_end.x);
 }
 
 TEST(Planner, LocalGoalInsideAnObstacleIsMovedOut) {

@@ -132,7 +132,10 @@ class PlanBounds {
 /// plants it, on an arc whose height grows with the stride (a foot that does
 /// not move stays planted). The foot of a first step, or of a step from
 /// standing by the foot that stopped last, swings in a lead-in of at most
-/// 0.25 s (half the step) at the start of its step instead. No foot ever jumps.
+/// 0.25 s (half the step) at the start of its step instead. During the last
+/// step of an agent that leaves, the other foot swings a stride on (two COM
+/// chords of that step), as the next step would: it walks off. No foot ever
+/// jumps.
 std::array<FootPose, 2> feet_at(const AgentPlan& plan, double t);
 
 /// Torso facing at time `t`: phi of the current step. [rad]
