@@ -70,10 +70,12 @@ def evaluated(name):
     return bpy.data.objects[name].evaluated_get(bpy.context.evaluated_depsgraph_get())
 
 
-def test_feet_and_pelvis_follow_the_plan():
-    ff, plan, path = applied(doorway_plan)
+def plan_errors(ff, plan):
+    """The farthest any planted foot bone's head is from the plan, and the
+    hips from the COM, in the world at every frame: (foot, pelvis, stance samples)."""
     rig, profile = imported_rig()
-    ankle_z = {side: rig.data.bones[profile.bones[side]["foot"]].head_local.z for side in ("left", "right")}
+    world_rest = {side: rig.matrix_world @ rig.data.bones[profile.bones[side]["foot"]].head_local
+                  for side in ("left", "right")}
     scene = bpy.context.scene
     fps = scene.render.fps / scene.render.fps_base
     worst_foot, worst_pelvis, stance_frames = 0.0, 0.0, 0
@@ -83,18 +85,23 @@ def test_feet_and_pelvis_follow_the_plan():
         for agent in plan.agents:
             armature = evaluated(agent.name)
             world = armature.matrix_world
-            feet = ff.feet_at(agent, t)
-            for side, pose in zip(("left", "right"), feet):
+            for side, pose in zip(("left", "right"), ff.feet_at(agent, t)):
                 if not pose.planted:
                     continue
                 stance_frames += 1
                 head = world @ armature.pose.bones[profile.bones[side]["foot"]].head
-                planned = (pose.position[0], pose.position[1], ankle_z[side])
+                planned = (pose.position[0], pose.position[1], world_rest[side].z)
                 worst_foot = max(worst_foot, math.dist(tuple(head), planned))
             hips = world @ armature.pose.bones[profile.bones["hips"]].head
             worst_pelvis = max(worst_pelvis, math.dist(hips.xy, ff.com_at(agent, t).position))
     print(f"stance samples {stance_frames}, worst foot error {worst_foot * 1000:.2f} mm, "
           f"worst pelvis error {worst_pelvis * 100:.2f} cm")
+    return worst_foot, worst_pelvis, stance_frames
+
+
+def test_feet_and_pelvis_follow_the_plan():
+    ff, plan, path = applied(doorway_plan)
+    worst_foot, worst_pelvis, stance_frames = plan_errors(ff, plan)
     check(stance_frames > 300, f"only {stance_frames} stance samples")
     check(worst_foot <= 0.002, f"a planted foot is {worst_foot * 1000:.2f} mm off the plan")
     check(worst_pelvis <= 0.02, f"the pelvis is {worst_pelvis * 100:.2f} cm off the COM")
@@ -181,26 +188,21 @@ def bones_now(names, bones):
     return result
 
 
-def test_export_validates_and_reimports():
-    ff, plan, path = applied(doorway_plan)
+def exported_and_reimported(plan, out, before_export=None):
+    """Exports the applied crowd to `out` (after `before_export()`, if given),
+    validates it, re-imports it into an empty scene and returns how far every
+    bone's head and tail then is from where it was, at every fifth frame [m]."""
     rig, _profile = imported_rig()
     body_bones = [bone.name for bone in rig.data.bones]
     names = [agent.name for agent in plan.agents]
     scene = bpy.context.scene
-    probe_frames = range(scene.frame_start, scene.frame_end + 1, 5)
     expected = {}
-    for frame in probe_frames:
+    for frame in range(scene.frame_start, scene.frame_end + 1, 5):
         scene.frame_set(frame)
         expected[frame] = bones_now(names, body_bones)
+    if before_export:
+        before_export()
     objects_before = sorted(o.name for o in bpy.data.objects)
-
-    # Into a folder that does not exist: a clear error, and the scene as it was.
-    hidden = sorted(o.name for o in bpy.data.objects if o.hide_viewport)
-    expect_error(bpy.ops.footfall.export_gltf, "/no/such/folder/crowd.glb: the folder /no/such/folder does not exist", filepath="/no/such/folder/crowd.glb")
-    check(sorted(o.name for o in bpy.data.objects) == objects_before, "the failed export changed the scene")
-    check(sorted(o.name for o in bpy.data.objects if o.hide_viewport) == hidden, "the failed export hid objects")
-
-    out = TMP / "crowd.glb"
     check(bpy.ops.footfall.export_gltf(filepath=str(out)) == {"FINISHED"}, "export failed")
     check(sorted(o.name for o in bpy.data.objects) == objects_before, "the export changed the scene")
     check(not pathlib.Path(str(out) + ".partial.glb").exists(), "a partial file was left")
@@ -226,7 +228,92 @@ def test_export_validates_and_reimports():
         for key, position in bones_now(names, body_bones).items():
             worst = max(worst, (position - feet[key]).length)
     print(f"re-imported bones (heads and tails, feet to head and hands): worst {worst * 1000:.2f} mm off")
+    return worst
+
+
+def test_export_validates_and_reimports():
+    ff, plan, path = applied(doorway_plan)
+
+    def a_failed_export_first():
+        """Into a folder that does not exist: a clear error, and the scene as it was."""
+        objects_before = sorted(o.name for o in bpy.data.objects)
+        hidden = sorted(o.name for o in bpy.data.objects if o.hide_viewport)
+        expect_error(bpy.ops.footfall.export_gltf, "/no/such/folder/crowd.glb: the folder /no/such/folder does not exist", filepath="/no/such/folder/crowd.glb")
+        check(sorted(o.name for o in bpy.data.objects) == objects_before, "the failed export changed the scene")
+        check(sorted(o.name for o in bpy.data.objects if o.hide_viewport) == hidden, "the failed export hid objects")
+
+    worst = exported_and_reimported(plan, TMP / "crowd.glb", a_failed_export_first)
     check(worst <= 0.005, f"re-imported bones are {worst * 1000:.2f} mm off")
+
+
+def transform_rig(data_matrix, object_matrix, parent_matrix=None):
+    """Gives the imported rig other coordinates, upright in the world as
+    before: its bones and meshes turned by `data_matrix`, its object by
+    `object_matrix`, under a parent empty at `parent_matrix` if given
+    (parent @ object = data^-1)."""
+    rig, _profile = imported_rig()
+    for mesh in rig.children:
+        check(mesh.matrix_parent_inverse == mathutils.Matrix() and mesh.matrix_basis == mathutils.Matrix(),
+              f"{mesh.name} is not at its armature's origin")
+        mesh.data.transform(data_matrix)
+    rig.data.transform(data_matrix)
+    if parent_matrix is not None:
+        parent = bpy.data.objects.new("Y-up root", None)
+        bpy.context.scene.collection.objects.link(parent)
+        parent.matrix_world = parent_matrix
+        rig.parent = parent
+    rig.matrix_basis = object_matrix
+    bpy.context.view_layer.update()
+
+
+def test_rigs_with_object_and_parent_transforms_walk_upright_on_the_plan():
+    """The project's rig as a glTF Y-up file has it (under a root turned -90
+    degrees about X) and as an FBX from Mixamo (its armature object turned 90
+    degrees about X and scaled 0.01): the feet on the plan in the world, the
+    head as high above the hips as at rest, the export valid and the same."""
+    from footfall.core import native
+
+    turn = mathutils.Matrix.Rotation(math.radians(90), 4, "X")
+    cases = {"Y-up parent": (turn, mathutils.Matrix(), turn.inverted()),
+             "scaled and turned object": (mathutils.Matrix.Scale(100, 4) @ turn.inverted(),
+                                          turn @ mathutils.Matrix.Scale(0.01, 4), None)}
+    for case, (data_matrix, object_matrix, parent_matrix) in cases.items():
+        ff = native.load()
+        fresh_scene_with_rig()
+        rig, profile = imported_rig()
+        rest_rise = ((rig.matrix_world @ rig.data.bones[profile.bones["head"]].head_local)
+                     - (rig.matrix_world @ rig.data.bones[profile.bones["hips"]].head_local)).z
+        transform_rig(data_matrix, object_matrix, parent_matrix)
+        plan, path = doorway_plan(ff)
+        check(bpy.ops.footfall.apply(plan_filepath=str(path)) == {"FINISHED"}, f"{case}: apply failed")
+        worst_foot, worst_pelvis, _ = plan_errors(ff, plan)
+        check(worst_foot <= 0.002, f"{case}: a planted foot is {worst_foot * 1000:.2f} mm off the plan")
+        check(worst_pelvis <= 0.02, f"{case}: the pelvis is {worst_pelvis * 100:.2f} cm off the COM")
+        scene = bpy.context.scene
+        worst_rise = 0.0
+        for frame in range(scene.frame_start, scene.frame_end + 1, 3):
+            scene.frame_set(frame)
+            for agent in plan.agents:
+                armature = evaluated(agent.name)
+                bones = armature.pose.bones
+                rise = (armature.matrix_world @ bones[profile.bones["head"]].head
+                        - armature.matrix_world @ bones[profile.bones["hips"]].head).z
+                worst_rise = max(worst_rise, abs(rise / rest_rise - 1.0))
+        print(f"{case}: head above hips within {worst_rise * 100:.1f} % of the rest pose's rise")
+        check(worst_rise <= 0.05, f"{case}: the head's rise above the hips is {worst_rise * 100:.1f} % off the rest pose's")
+        worst = exported_and_reimported(plan, TMP / f"transformed {case}.glb")
+        check(worst <= 0.005, f"{case}: re-imported bones are {worst * 1000:.2f} mm off")
+
+    # A rig turned under a parent stretched along one axis is sheared: refused, naming it.
+    ff = native.load()
+    fresh_scene_with_rig()
+    rig, _profile = imported_rig()
+    stretched = mathutils.Matrix.Diagonal((1.0, 1.5, 1.0, 1.0))
+    transform_rig(mathutils.Matrix(), mathutils.Matrix.Rotation(math.radians(30), 4, "Z"), stretched)
+    plan, path = doorway_plan(ff)
+    objects_before = sorted(o.name for o in bpy.data.objects)
+    expect_error(bpy.ops.footfall.apply, f"rig '{rig.name}': its world transform shears it", plan_filepath=str(path))
+    check(sorted(o.name for o in bpy.data.objects) == objects_before, "the refused apply changed the scene")
 
 
 def behaviour_plan(ff):
@@ -470,4 +557,5 @@ def test_a_leaving_agent_walks_off_and_disappears():
 run([test_feet_and_pelvis_follow_the_plan, test_arms_swing_opposite_to_the_legs, test_behaviours_play_their_clips,
      test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was,
      test_applying_again_replaces_the_crowd, test_a_crowd_with_short_waits_applies,
-     test_a_sheared_pose_is_refused_by_name, test_a_leaving_agent_walks_off_and_disappears])
+     test_a_sheared_pose_is_refused_by_name, test_a_leaving_agent_walks_off_and_disappears,
+     test_rigs_with_object_and_parent_transforms_walk_upright_on_the_plan])

@@ -77,9 +77,33 @@ def _forward_yaw(data, bones) -> float:
     return math.atan2(forward.y, forward.x)
 
 
+class TransformError(ValueError):
+    """A rig whose world transform an armature cannot take on (a shear)."""
+
+
+def _world_rest_matrix(rig) -> Matrix:
+    """The rig's world transform (its object's and its parents'), which the
+    template's bones take on: the instances stand at identity, so that their
+    armature space is the world the plan is in."""
+    world = rig.matrix_world.copy()
+    axes = [world.col[i].xyz for i in range(3)]
+    lengths = [axis.length for axis in axes]
+    if min(lengths) <= 0.0:
+        raise TransformError(f"rig '{rig.name}': its world transform flattens it (a scale of 0)")
+    for i in range(3):
+        for j in range(i + 1, 3):
+            if abs(axes[i].dot(axes[j])) > 1e-4 * lengths[i] * lengths[j]:
+                raise TransformError(f"rig '{rig.name}': its world transform shears it (a non-uniform "
+                                     "scale under a rotation, in its object or parents); apply the scale first")
+    return world
+
+
 def _template(rig, profile) -> bpy.types.Armature:
-    """A copy of the rig's armature with the IK foot targets and knee poles added."""
+    """A copy of the rig's armature in world space (its object and parent
+    transforms applied) with the IK foot targets and knee poles added."""
+    world = _world_rest_matrix(rig)
     data = rig.data.copy()
+    data.transform(world)
     holder = bpy.data.objects.new("footfall template", data)
     bpy.context.scene.collection.objects.link(holder)
     previous = bpy.context.view_layer.objects.active
@@ -136,9 +160,13 @@ def _instance(name: str, template, rig, collection) -> bpy.types.Object:
 
 def deformed_copy(mesh, armature, collection) -> bpy.types.Object:
     """A copy of `mesh` (data linked, vertex groups and modifiers copied)
-    parented to and deformed by `armature`, in `collection`."""
+    parented to and deformed by `armature`, in `collection`, where the mesh
+    is in the world (the armature's bones are in world space, _template)."""
     body = mesh.copy()
+    world = mesh.matrix_world.copy()
     body.parent = armature
+    body.matrix_parent_inverse = armature.matrix_world.inverted()
+    body.matrix_basis = world
     for modifier in body.modifiers:
         if modifier.type == "ARMATURE":
             modifier.object = armature
