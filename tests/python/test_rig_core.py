@@ -3,6 +3,7 @@ and the planner parameters derived from a rig."""
 
 import json
 import math
+import random
 
 import pytest
 
@@ -253,3 +254,76 @@ def test_with_rig_keeps_the_documents_own_overrides():
     assert result["character"]["com_height"] == pytest.approx(1.155)
     assert len(result["planner"]["gaits"]) == 3
     assert document["character"] == {"mass": 60.0, "max_step_length": 0.8}  # not changed in place
+
+
+def nameless_humanoid(facing_y=-1.0):
+    """A humanoid whose bones are named Bone.000, Bone.001, ... in no order
+    of role, facing +-Y, with its rest geometry; and the map by construction."""
+    roles = {}  # role -> (parent role, head, tail)
+
+    def add(role, parent, head, tail):
+        roles[role] = (parent, head, tail)
+
+    f = facing_y
+    add("hips", None, (0, 0, 1.0), (0, 0, 1.1))
+    add("spine", "hips", (0, 0, 1.1), (0, 0, 1.25))
+    add("chest", "spine", (0, 0, 1.25), (0, 0, 1.45))
+    add("neck", "chest", (0, 0, 1.45), (0, 0, 1.55))
+    add("head", "neck", (0, 0, 1.55), (0, 0, 1.75))
+    for side, x in (("left", -f * 0.1), ("right", f * 0.1)):
+        s = 1 if x > 0 else -1
+        add(f"{side}.thigh", "hips", (x, 0, 1.0), (x, 0, 0.55))
+        add(f"{side}.shin", f"{side}.thigh", (x, 0, 0.55), (x, 0, 0.1))
+        add(f"{side}.foot", f"{side}.shin", (x, 0, 0.1), (x, 0.15 * f, 0.03))
+        add(f"{side}.toe", f"{side}.foot", (x, 0.15 * f, 0.03), (x, 0.22 * f, 0.03))
+        add(f"{side}.clavicle", "chest", (0, 0, 1.42), (s * 0.16, 0, 1.42))
+        add(f"{side}.upper_arm", f"{side}.clavicle", (s * 0.16, 0, 1.42), (s * 0.45, 0, 1.4))
+        add(f"{side}.forearm", f"{side}.upper_arm", (s * 0.45, 0, 1.4), (s * 0.7, 0, 1.38))
+        add(f"{side}.hand", f"{side}.forearm", (s * 0.7, 0, 1.38), (s * 0.78, 0, 1.38))
+        for k in range(3):
+            add(f"{side}.finger{k}", f"{side}.hand", (s * 0.78, 0.02 * k, 1.38), (s * 0.86, 0.02 * k, 1.38))
+    order = sorted(roles)
+    random.Random(3).shuffle(order)  # names unrelated to roles
+    name = {role: f"Bone.{i:03d}" for i, role in enumerate(order)}
+    bones = [Bone(name[r], name[p] if p else None, h, t) for r, (p, h, t) in roles.items()]
+    expected = {r: name[r] for r in ("hips", "spine", "chest", "neck", "head")}
+    for side in ("left", "right"):
+        expected[side] = {role: name[f"{side}.{role}"] for role in bone_map.LIMB_ROLES}
+    return bones, expected
+
+
+@pytest.mark.parametrize("facing_y", [-1.0, 1.0])
+def test_bones_with_names_of_no_scheme_are_found_from_the_skeletons_shape(facing_y):
+    bones, expected = nameless_humanoid(facing_y)
+    assert bone_map.detect(bones) == expected
+    # Without their rest geometry they cannot be found, and the error lists the rig's bones.
+    with pytest.raises(bone_map.BoneMapError) as error:
+        bone_map.detect([Bone(b.name, b.parent) for b in bones], "nameless.glb")
+    assert "left.thigh" in str(error.value) and "Its bones: Bone.0" in str(error.value)
+
+
+def test_a_neck_chain_branching_into_a_face_ends_at_the_head():
+    """Rigify's metarig: the chest (spine.003) carries the neck (spine.004,
+    spine.005), the head (spine.006, whose children are the face) and
+    breasts pointing forward."""
+    bones = [b for b in OURS if b.name not in ("neck", "head")]
+    chest = next(b for b in OURS if b.name == "chest")
+    geometry = {"spine.004": ((0, 0, 1.45), (0, 0, 1.5)), "spine.005": ((0, 0, 1.5), (0, 0, 1.55)),
+                "spine.006": ((0, 0, 1.55), (0, 0, 1.75)), "breast.L": ((0.1, 0, 1.35), (0.1, -0.1, 1.35)),
+                "breast.R": ((-0.1, 0, 1.35), (-0.1, -0.1, 1.35)), "jaw": ((0, 0, 1.6), (0, -0.1, 1.58)),
+                "nose": ((0, -0.05, 1.65), (0, -0.1, 1.64))}
+    parents = {"spine.004": chest.name, "spine.005": "spine.004", "spine.006": "spine.005",
+               "breast.L": chest.name, "breast.R": chest.name, "jaw": "spine.006", "nose": "spine.006"}
+    bones += [Bone(name, parents[name], *geometry[name]) for name in geometry]
+    mapping = bone_map.detect(bones)
+    assert (mapping["neck"], mapping["head"]) == ("spine.004", "spine.006")
+
+
+def test_a_mapping_naming_a_bone_the_rig_lacks_says_which():
+    mapping = bone_map.detect(OURS)
+    mapping["left"]["foot"] = "Foot_L"
+    with pytest.raises(bone_map.BoneMapError) as error:
+        bone_map.validate_map(mapping, [b.name for b in OURS], "robot.glb")
+    message = str(error.value)
+    assert "names bones 'robot.glb' does not have: left.foot = 'Foot_L'" in message
+    assert "could not find" not in message and "Its bones: hips" in message

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Importing a glTF humanoid: Blender's importer, then the bone map, clips and
-dimensions, stored on the armature as its rig profile.
+"""Importing a humanoid rig (a glTF or FBX file, or an armature already in the
+Blender file): Blender's importer, then the bone map, clips and dimensions,
+stored on the armature as its rig profile.
 
 Either the whole import succeeds, or everything it created is removed again.
 """
@@ -43,12 +44,25 @@ def _run_gltf_importer(filepath: str) -> None:
     # Icosphere object in the file; the option to leave it out is newer than 3.4.
     if "disable_bone_shape" in bpy.ops.import_scene.gltf.get_rna_type().properties.keys():
         options["disable_bone_shape"] = True
+    _run_importer(bpy.ops.import_scene.gltf, "glTF", options)
+
+
+def _run_importer(operator, kind: str, options: dict) -> None:
+    filepath = options["filepath"]
     try:
-        result = bpy.ops.import_scene.gltf(**options)
+        result = operator(**options)
     except RuntimeError as error:
-        raise RigImportError(f"{filepath}: Blender's glTF importer failed: {error}") from error
+        raise RigImportError(f"{filepath}: Blender's {kind} importer failed: {error}") from error
     if "FINISHED" not in result:
-        raise RigImportError(f"{filepath}: Blender's glTF importer did not finish")
+        raise RigImportError(f"{filepath}: Blender's {kind} importer did not finish")
+
+
+# The rig files Import Rig reads, by suffix: Blender's importer for each.
+IMPORTERS = {
+    ".glb": _run_gltf_importer,
+    ".gltf": _run_gltf_importer,
+    ".fbx": lambda filepath: _run_importer(bpy.ops.import_scene.fbx, "FBX", {"filepath": filepath}),
+}
 
 
 def _merge(first: Dict[str, object], second: Dict[str, object]) -> Dict[str, object]:
@@ -62,11 +76,19 @@ def _merge(first: Dict[str, object], second: Dict[str, object]) -> Dict[str, obj
     return merged
 
 
-def _bone_map(armature, given: Dict[str, object], rig: str) -> Dict[str, object]:
-    bones = [bone_map.Bone(b.name, b.parent.name if b.parent else None) for b in armature.data.bones]
+def _bone_map(armature, given: Dict[str, object], rig: str):
+    """The rig's bone map, and notes naming the bones found from the
+    skeleton's shape rather than by name."""
+    world = armature.matrix_world
+    bones = [bone_map.Bone(b.name, b.parent.name if b.parent else None,
+                           tuple(world @ b.head_local), tuple(world @ b.tail_local)) for b in armature.data.bones]
     mapping, _missing = bone_map.detect_partial(bones, given)
     bone_map.validate_map(mapping, [b.name for b in bones], rig)
-    return mapping
+    by_name, _ = bone_map.detect_partial([bone_map.Bone(b.name, b.parent) for b in bones], given)
+    shaped = [f"{side}.{role} = '{bone}'" for side in bone_map.SIDES for role, bone in mapping[side].items()
+              if by_name[side].get(role) != bone]
+    notes = [f"bones found from the skeleton's shape: {', '.join(shaped)}"] if shaped else []
+    return mapping, notes
 
 
 def _foot_points(armature, bones: Dict[str, object]) -> Dict[str, list]:
@@ -101,41 +123,72 @@ def _clip_for(behavior: str, wanted: Optional[str], actions) -> Optional[str]:
     return None
 
 
-def import_rig(filepath: str, mapping: Optional[Dict[str, object]] = None) -> ImportedRig:
-    """Imports the rig at `filepath`. `mapping` (roles to bone names) and a
-    profile beside the file (same name, .json) win over detection.
+def _imported_armature(path: pathlib.Path, before) -> bpy.types.Object:
+    """Runs Blender's importer for the file; the one armature it made."""
+    importer = IMPORTERS.get(path.suffix.lower())
+    if importer is None:
+        raise RigImportError(f"{path}: Import Rig reads glTF (.glb, .gltf) and FBX (.fbx) files; for a rig "
+                             "already in this Blender file, give its armature instead (armature=\"Name\")")
+    importer(str(path))
+    armatures = [o for o in datablocks.new_since(before, "objects") if o.type == "ARMATURE"]
+    if len(armatures) != 1:
+        raise RigImportError(f"{path}: expected one armature, found {len(armatures)}")
+    # The template itself stays out of renders: Apply makes the crowd's instances.
+    for obj in (armatures[0], *armatures[0].children_recursive):
+        obj.hide_render = True
+    return armatures[0]
+
+
+def _scene_armature(name: str) -> bpy.types.Object:
+    obj = bpy.data.objects.get(name)
+    if obj is None or obj.type != "ARMATURE":
+        armatures = sorted(o.name for o in bpy.data.objects if o.type == "ARMATURE")
+        what = "no object" if obj is None else f"a {obj.type.lower()}, not an armature"
+        raise RigImportError(f"armature '{name}': {what} of that name (armatures: {', '.join(armatures) or 'none'})")
+    return obj
+
+
+def import_rig(filepath: str = "", mapping: Optional[Dict[str, object]] = None,
+               armature: str = "") -> ImportedRig:
+    """Imports the rig at `filepath` (glTF or FBX), or takes the armature
+    object named `armature` already in the file (a Rigify rig, say).
+    `mapping` (roles to bone names) and a profile beside the file (same name,
+    .json) win over detection.
 
     Raises RigImportError, bone_map.BoneMapError or rig_profile.ProfileError,
     leaving the scene as it was.
     """
-    path = pathlib.Path(filepath)
-    if not path.is_file():
-        raise RigImportError(f"{filepath}: no such file")
-    beside = path.with_suffix(".json")
-    given = rig_profile.load(str(beside), partial=True) if beside.is_file() else RigProfile(bones={})
+    if bool(filepath) == bool(armature):
+        raise RigImportError("Import Rig needs a rig file (filepath) or an armature in this file (armature), "
+                             "one of the two")
+    given = RigProfile(bones={})
+    if filepath:
+        path = pathlib.Path(filepath)
+        if not path.is_file():
+            raise RigImportError(f"{filepath}: no such file")
+        beside = path.with_suffix(".json")
+        if beside.is_file():
+            given = rig_profile.load(str(beside), partial=True)
     given_bones = _merge(mapping or {}, given.bones)
 
     before = datablocks.snapshot()
     try:
-        _run_gltf_importer(str(path))
-        armatures = [o for o in datablocks.new_since(before, "objects") if o.type == "ARMATURE"]
-        if len(armatures) != 1:
-            raise RigImportError(f"{filepath}: expected one armature, found {len(armatures)}")
-        armature = armatures[0]
-        bones = _bone_map(armature, given_bones, path.name)
-        world = armature.matrix_world
-        heads = {b.name: tuple(world @ b.head_local) for b in armature.data.bones}
-        tails = {b.name: tuple(world @ b.tail_local) for b in armature.data.bones}
-        dimensions = rig_measure.measure(bones, heads, tails, _foot_points(armature, bones))
-        actions = datablocks.new_since(before, "actions")
+        rig = _imported_armature(path, before) if filepath else _scene_armature(armature)
+        source = path.name if filepath else rig.name
+        bones, notes = _bone_map(rig, given_bones, source)
+        world = rig.matrix_world
+        heads = {b.name: tuple(world @ b.head_local) for b in rig.data.bones}
+        tails = {b.name: tuple(world @ b.tail_local) for b in rig.data.bones}
+        dimensions = rig_measure.measure(bones, heads, tails, _foot_points(rig, bones))
+        actions = datablocks.new_since(before, "actions") if filepath else list(bpy.data.actions)
         clips = {b: _clip_for(b, given.clips.get(b), actions) for b in BEHAVIORS}
-        profile = RigProfile(bones=bones, clips=clips, dimensions=dimensions, rig=path.name)
-        armature[PROFILE_PROPERTY] = json.dumps(profile.to_document())
+        profile = RigProfile(bones=bones, clips=clips, dimensions=dimensions, rig=source)
+        rig[PROFILE_PROPERTY] = json.dumps(profile.to_document())  # last: a failure changes nothing
     except Exception:
         datablocks.remove_new(before)
         raise
-    notes = [f"no '{b}' clip: a procedural one will be used" for b, clip in clips.items() if clip is None]
-    return ImportedRig(armature, profile, notes)
+    notes += [f"no '{b}' clip: a procedural one will be used" for b, clip in clips.items() if clip is None]
+    return ImportedRig(rig, profile, notes)
 
 
 def imported_rigs():

@@ -12,7 +12,9 @@ and head are found by name, or else as the bones above the chest.
 
 import re
 from dataclasses import dataclass
-from typing import Dict, List, Optional, Sequence
+from typing import Dict, List, Optional, Sequence, Tuple
+
+from . import bone_structure
 
 CENTER_ROLES = ("hips", "spine", "chest", "neck", "head")
 LIMB_ROLES = ("upper_arm", "forearm", "hand", "thigh", "shin", "foot", "toe")
@@ -34,22 +36,40 @@ HEAD_NAMES = {"head"}
 
 @dataclass(frozen=True)
 class Bone:
-    """A bone of the rig: its name and its parent's name (None at a root)."""
+    """A bone of the rig: its name, its parent's name (None at a root), and
+    its rest head and tail in the world (Z up), where known."""
 
     name: str
     parent: Optional[str]
+    head: Optional[Tuple[float, float, float]] = None
+    tail: Optional[Tuple[float, float, float]] = None
+
+
+MAX_LISTED_BONES = 200  # of the rig's bones, in an error
 
 
 class BoneMapError(ValueError):
-    """Some roles could not be mapped; ``missing`` lists them ("left.toe", ...)."""
+    """Some roles could not be mapped; ``missing`` lists them ("left.toe", ...),
+    ``unknown`` the roles a mapping gave a bone the rig does not have."""
 
-    def __init__(self, rig: str, missing: Sequence[str]):
+    def __init__(self, rig: str, missing: Sequence[str], unknown: Optional[Dict[str, str]] = None,
+                 bone_names: Optional[Sequence[str]] = None):
         self.missing = list(missing)
-        super().__init__(
-            f"Footfall could not find these bones in '{rig}': {', '.join(self.missing)}. "
-            "Supply a mapping: a rig profile JSON beside the file (same name, .json; see "
-            "docs/rig-profile.md), or the bone fields in the Footfall panel."
-        )
+        self.unknown = dict(unknown or {})
+        parts = []
+        not_found = [role for role in self.missing if role not in self.unknown]
+        if not_found:
+            parts.append(f"Footfall could not find these bones in '{rig}': {', '.join(not_found)}.")
+        if self.unknown:
+            named = ", ".join(f"{role} = '{bone}'" for role, bone in self.unknown.items())
+            parts.append(f"The mapping names bones '{rig}' does not have: {named}.")
+        if bone_names:
+            listed = list(bone_names)[:MAX_LISTED_BONES]
+            more = len(bone_names) - len(listed)
+            parts.append(f"Its bones: {', '.join(listed)}" + (f" and {more} more." if more else "."))
+        parts.append("Supply a mapping: a rig profile JSON beside the file (same name, .json; see "
+                     "docs/rig-profile.md), or the bone fields in the Footfall panel.")
+        super().__init__(" ".join(parts))
 
 
 def _normalise(text: str) -> str:
@@ -105,6 +125,10 @@ def _by_name(bones: Sequence[Bone], parents, side: Optional[str], names) -> Opti
     return min(found, key=lambda b: (len(_ancestors(b, parents)), b), default=None)
 
 
+def _length(bone: Bone) -> float:
+    return sum((t - h) ** 2 for h, t in zip(bone.head, bone.tail)) ** 0.5
+
+
 def detect(bones: Sequence[Bone], rig: str = "rig") -> Dict[str, object]:
     """The bone map of a humanoid: {"hips": name, ..., "left": {...}, "right": {...}}.
 
@@ -112,7 +136,7 @@ def detect(bones: Sequence[Bone], rig: str = "rig") -> Dict[str, object]:
     """
     mapping, missing = detect_partial(bones)
     if missing:
-        raise BoneMapError(rig, missing)
+        raise BoneMapError(rig, missing, bone_names=[b.name for b in bones])
     return mapping
 
 
@@ -120,15 +144,21 @@ def detect_partial(bones: Sequence[Bone], given: Optional[Dict[str, object]] = N
     """(the roles found, the roles missing as "left.toe", "hips", ...).
 
     Roles in `given` are taken as they are, and the trunk is found from the
-    limbs given as well as from those found.
+    limbs given as well as from those found. Limbs whose names say nothing
+    are found from the skeleton's shape when the bones carry their rest
+    geometry (bone_structure).
     """
     given = given or {}
     parents = {bone.name: bone.parent for bone in bones}
     mapping: Dict[str, object] = {side: {} for side in SIDES}
     missing = []
+    shape: Optional[Dict[str, Dict[str, str]]] = None  # found when first wanted
     for side in SIDES:
         for role in LIMB_ROLES:
             found = (given.get(side) or {}).get(role) or _by_name(bones, parents, side, LIMB_SYNONYMS[role])
+            if found is None:
+                shape = bone_structure.limbs(bones) if shape is None else shape
+                found = shape.get(side, {}).get(role)
             if found is None:
                 missing.append(f"{side}.{role}")
             else:
@@ -148,12 +178,21 @@ def detect_partial(bones: Sequence[Bone], given: Optional[Dict[str, object]] = N
     head = _by_name(bones, parents, None, HEAD_NAMES)
     neck = _by_name(bones, parents, None, NECK_NAMES)
     if chest and head is None:
-        # The bone above the chest that is neither arm's ancestor: the neck, or the head.
-        arm_chains = set().union(*(_ancestors(a, parents) for a in arms))
-        above = [b.name for b in bones if b.parent == chest and b.name not in arm_chains]
+        # The chain that rises from the chest, neither arm's: the neck its first
+        # bone, the head where it ends or branches (into a face's bones), as
+        # Rigify's spine.004 to spine.006 are.
+        arm_chains = set().union(*(_ancestors(a, parents) for a in arms if a))
+        above = [b for b in bones if b.parent == chest and b.name not in arm_chains]
+        if len(above) > 1 and all(b.head is not None and b.tail is not None for b in above):
+            above = [max(above, key=lambda b: (b.tail[2] - b.head[2]) / (_length(b) or 1.0))]
         if len(above) == 1:
-            children = [b.name for b in bones if b.parent == above[0]]
-            neck, head = (above[0], children[0]) if len(children) == 1 else (None, above[0])
+            chain = [above[0].name]
+            while True:
+                children = [b.name for b in bones if b.parent == chain[-1]]
+                if len(children) != 1:
+                    break
+                chain.append(children[0])
+            neck, head = (chain[0], chain[-1]) if len(chain) > 1 else (None, chain[0])
     if neck is None and head is not None and parents.get(head) not in (None, chest):
         neck = parents[head]
     for role, bone in zip(CENTER_ROLES, (hips, spine, chest, neck, head)):
@@ -166,11 +205,16 @@ def detect_partial(bones: Sequence[Bone], given: Optional[Dict[str, object]] = N
 
 
 def validate_map(mapping: Dict[str, object], bone_names, rig: str = "rig") -> None:
-    """Checks that a given map names every role with a bone of the rig."""
+    """Checks that a given map names every role with a bone of the rig; the
+    error tells roles left out from roles given a bone the rig lacks, and
+    lists the rig's bones."""
+    bone_names = list(bone_names)
     names = set(bone_names)
-    missing = [role for role in CENTER_ROLES if mapping.get(role) not in names]
+    given = [(role, mapping.get(role)) for role in CENTER_ROLES]
     for side in SIDES:
         limbs = mapping.get(side) or {}
-        missing += [f"{side}.{role}" for role in LIMB_ROLES if limbs.get(role) not in names]
-    if missing:
-        raise BoneMapError(rig, missing)
+        given += [(f"{side}.{role}", limbs.get(role)) for role in LIMB_ROLES]
+    missing = [role for role, bone in given if bone is None]
+    unknown = {role: bone for role, bone in given if bone is not None and bone not in names}
+    if missing or unknown:
+        raise BoneMapError(rig, missing + list(unknown), unknown, bone_names)

@@ -12,20 +12,29 @@ from .properties import mapping_of
 
 
 class FOOTFALL_OT_import_rig(bpy.types.Operator, ImportHelper):
-    """Import a glTF humanoid and map its bones for Footfall"""
+    """Import a glTF or FBX humanoid, or take an armature already in this file, and map its bones for Footfall"""
 
     bl_idname = "footfall.import_rig"
     bl_label = "Import Rig"
     bl_options = {"REGISTER", "UNDO"}
 
     filename_ext = ".glb"
-    filter_glob: bpy.props.StringProperty(default="*.glb;*.gltf", options={"HIDDEN"})
+    filter_glob: bpy.props.StringProperty(default="*.glb;*.gltf;*.fbx", options={"HIDDEN"})
+    armature: bpy.props.StringProperty(
+        name="Armature", description="An armature already in this file to use instead of a file (a Rigify rig, say)"
+    )
+
+    def invoke(self, context, event):
+        if self.armature:
+            return self.execute(context)
+        return super().invoke(context, event)
 
     def execute(self, context):
         from ..bridge import rig_import
 
         try:
-            rig = rig_import.import_rig(self.filepath, mapping_of(context.scene.footfall_bone_map))
+            rig = rig_import.import_rig("" if self.armature else self.filepath,
+                                        mapping_of(context.scene.footfall_bone_map), self.armature)
         except (rig_import.RigImportError, BoneMapError, ProfileError) as error:
             return report_and_cancel(self, error)
         for note in rig.notes:
@@ -55,7 +64,7 @@ class FOOTFALL_OT_apply(bpy.types.Operator):
 
         try:
             armatures = apply_plan.run(context, self.plan_filepath, self.rig)
-        except (apply_plan.ApplyError, CoreMissingError) as error:
+        except (apply_plan.ApplyError, animate.TransformError, CoreMissingError) as error:
             return report_and_cancel(self, error)
         self.report({"INFO"}, f"Animated {len(armatures)} agents in '{animate.CROWD_COLLECTION}'")
         return {"FINISHED"}

@@ -27,6 +27,12 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
         self.layout.operator("footfall.load_scenario", icon="FILE_FOLDER")
         self.layout.operator("footfall.plan", icon="TRACKING")
         self.layout.operator("footfall.import_rig", icon="ARMATURE_DATA")
+        active = context.active_object
+        from ..bridge.rig_import import PROFILE_PROPERTY
+
+        if active is not None and active.type == "ARMATURE" and PROFILE_PROPERTY not in active:
+            use = self.layout.operator("footfall.import_rig", text=f"Use '{active.name}' as Rig", icon="ARMATURE_DATA")
+            use.armature = active.name
         self.layout.operator("footfall.apply", icon="ANIM")
         self.layout.operator("footfall.export_gltf", icon="EXPORT")
 
