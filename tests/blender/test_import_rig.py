@@ -37,8 +37,9 @@ def limb_bones(side, x):
             ("toe", "foot", (s * x, -0.14, 0.02), (s * x, -0.2, 0.0))]
 
 
-def build_and_export(name, rename):
-    """A skinned rig whose bones are named by rename(role, side), written as TMP/name.glb."""
+def build_and_export(name, rename, without=()):
+    """A skinned rig whose bones are named by rename(role, side), written as
+    TMP/name.glb; the roles in `without` left out."""
     bpy.ops.wm.read_homefile(use_empty=True)
     armature_data = bpy.data.armatures.new(name)
     armature = bpy.data.objects.new(name, armature_data)
@@ -48,7 +49,7 @@ def build_and_export(name, rename):
     names = {}
     specs = [(r, None, p, h, t) for r, p, h, t in TRUNK]
     for side in ("left", "right"):
-        specs += [(r, side, p, h, t) for r, p, h, t in limb_bones(side, 0.1)]
+        specs += [(r, side, p, h, t) for r, p, h, t in limb_bones(side, 0.1) if r not in without]
     for role, side, parent, head, tail in specs:
         bone = armature_data.edit_bones.new(rename(role, side))
         bone.head, bone.tail = head, tail
@@ -111,7 +112,7 @@ def test_mixamo_rig_is_detected():
 
 
 def test_unmappable_rig_lists_bones_and_changes_nothing():
-    path = build_and_export("odd", odd_name)
+    path = build_and_export("odd", odd_name, without=("toe",))
     fresh_scene()
     bpy.ops.mesh.primitive_uv_sphere_add()  # something of the user's, which must survive
     before = inventory()
@@ -121,8 +122,67 @@ def test_unmappable_rig_lists_bones_and_changes_nothing():
     except RuntimeError as error:
         message = str(error)
     check("left.toe, right.toe" in message, message)
+    check("Its bones: " in message and "foot_L" in message, f"the bones it holds are not listed: {message}")
     check("profile JSON beside the file" in message and "Footfall panel" in message, message)
     check(inventory() == before, f"scene changed: {inventory()} vs {before}")
+
+
+def test_bones_of_no_naming_scheme_are_found_from_the_skeleton():
+    """Bones named Bone.000 to Bone.018 in no order of role: the map comes from
+    the hierarchy and the rest pose, bone by bone, and the message says so."""
+    import random
+
+    roles = [(r, None) for r, *_ in TRUNK] + [(r, s) for s in ("left", "right") for r, *_ in limb_bones(s, 0.1)]
+    order = list(roles)
+    random.Random(5).shuffle(order)
+    names = {role: f"Bone.{i:03d}" for i, role in enumerate(order)}
+    path = build_and_export("nameless", lambda role, side: names[(role, side)])
+    fresh_scene()
+    check(bpy.ops.footfall.import_rig(filepath=str(path)) == {"FINISHED"}, "import failed")
+    profile = imported_profile()
+    for (role, side), name in names.items():
+        found = profile.bones[role] if side is None else profile.bones[side][role]
+        check(found == name, f"{side or ''} {role}: {found}, not {name}")
+
+
+def test_rigs_are_read_from_gltf_and_fbx_files_only():
+    fresh_scene()
+    blend = TMP / "scene.blend"
+    bpy.ops.wm.save_as_mainfile(filepath=str(blend), copy=True)
+    before = inventory()
+    try:
+        bpy.ops.footfall.import_rig(filepath=str(blend))
+        raise AssertionError("no error")
+    except RuntimeError as error:
+        check("reads glTF (.glb, .gltf) and FBX (.fbx) files" in str(error) and "armature=" in str(error), str(error))
+    check(inventory() == before, "the refused import changed the scene")
+
+
+def test_an_fbx_rig_is_imported_and_kept_out_of_renders():
+    build_and_export("mixamo_fbx", mixamo_name)
+    path = TMP / "mixamo.fbx"
+    bpy.ops.export_scene.fbx(filepath=str(path), add_leaf_bones=False)
+    fresh_scene()
+    check(bpy.ops.footfall.import_rig(filepath=str(path)) == {"FINISHED"}, "FBX import failed")
+    profile = imported_profile()
+    check(profile.bones["left"]["shin"] == "mixamorig:LeftLeg", profile.bones)
+    check(abs(profile.dimensions["hip_height"] - 0.95) < 1e-3, profile.dimensions)
+    (armature,) = [o for o in bpy.data.objects if o.type == "ARMATURE"]
+    check(all(o.hide_render for o in (armature, *armature.children)), "the template rig would be rendered")
+
+
+def test_a_rigify_metarig_in_the_scene_is_used_as_it_is():
+    """Blender's own human metarig (Rigify), made in the scene: its neck and
+    head are spine.004 and spine.006."""
+    fresh_scene()
+    addon_utils.enable("rigify", default_set=True, handle_error=None)
+    bpy.ops.object.armature_human_metarig_add()
+    metarig = bpy.context.active_object
+    check(bpy.ops.footfall.import_rig(armature=metarig.name) == {"FINISHED"}, "the metarig was refused")
+    profile = imported_profile()
+    check((profile.bones["neck"], profile.bones["head"]) == ("spine.004", "spine.006"), profile.bones)
+    check((profile.bones["hips"], profile.bones["left"]["foot"]) == ("spine", "foot.L"), profile.bones)
+    check(0.8 < profile.dimensions["hip_height"] < 1.2, profile.dimensions)
 
 
 def test_panel_fields_complete_the_map():
@@ -156,6 +216,8 @@ def test_project_rig_matches_its_profile():
 
 
 
-run([test_mixamo_rig_is_detected, test_unmappable_rig_lists_bones_and_changes_nothing,
-             test_panel_fields_complete_the_map, test_profile_beside_the_file_completes_the_map,
-             test_project_rig_matches_its_profile])
+run([test_mixamo_rig_is_detected, test_bones_of_no_naming_scheme_are_found_from_the_skeleton,
+     test_rigs_are_read_from_gltf_and_fbx_files_only, test_an_fbx_rig_is_imported_and_kept_out_of_renders,
+     test_a_rigify_metarig_in_the_scene_is_used_as_it_is, test_unmappable_rig_lists_bones_and_changes_nothing,
+     test_panel_fields_complete_the_map, test_profile_beside_the_file_completes_the_map,
+     test_project_rig_matches_its_profile])

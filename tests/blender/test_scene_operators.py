@@ -359,7 +359,10 @@ def test_failing_operators_report_and_cancel():
     failures = (
         (scene_operators.FOOTFALL_OT_load_scenario, {"filepath": bad}, "bad-position.json: agents[0].position"),
         (scene_operators.FOOTFALL_OT_plan, {}, "No agents to plan"),
-        (operators.FOOTFALL_OT_import_rig, {"filepath": str(TMP / "missing.glb")}, "missing.glb: no such file"),
+        (operators.FOOTFALL_OT_import_rig, {"filepath": str(TMP / "missing.glb"), "armature": ""},
+         "missing.glb: no such file"),
+        (operators.FOOTFALL_OT_import_rig, {"filepath": "", "armature": "Sphere"},
+         "armature 'Sphere': a mesh, not an armature"),
         (operators.FOOTFALL_OT_apply, {"plan_filepath": "", "rig": ""}, "No plan: run Plan first"),
         (operators.FOOTFALL_OT_export_gltf, {"filepath": str(TMP / "none.glb")}, "Nothing to export"),
     )

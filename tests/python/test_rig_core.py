@@ -304,16 +304,16 @@ def test_bones_with_names_of_no_scheme_are_found_from_the_skeletons_shape(facing
 
 def test_a_neck_chain_branching_into_a_face_ends_at_the_head():
     """Rigify's metarig: the chest (spine.003) carries the neck (spine.004,
-    spine.005), the head (spine.006, whose children are the face) and
-    breasts pointing forward."""
+    spine.005), the head (spine.006, whose one child, the face, starts back at
+    its root and carries the face's bones) and breasts pointing forward."""
     bones = [b for b in OURS if b.name not in ("neck", "head")]
     chest = next(b for b in OURS if b.name == "chest")
     geometry = {"spine.004": ((0, 0, 1.45), (0, 0, 1.5)), "spine.005": ((0, 0, 1.5), (0, 0, 1.55)),
                 "spine.006": ((0, 0, 1.55), (0, 0, 1.75)), "breast.L": ((0.1, 0, 1.35), (0.1, -0.1, 1.35)),
-                "breast.R": ((-0.1, 0, 1.35), (-0.1, -0.1, 1.35)), "jaw": ((0, 0, 1.6), (0, -0.1, 1.58)),
-                "nose": ((0, -0.05, 1.65), (0, -0.1, 1.64))}
+                "breast.R": ((-0.1, 0, 1.35), (-0.1, -0.1, 1.35)), "face": ((0, 0, 1.55), (0, 0, 1.65)),
+                "jaw": ((0, 0, 1.6), (0, -0.1, 1.58)), "nose": ((0, -0.05, 1.65), (0, -0.1, 1.64))}
     parents = {"spine.004": chest.name, "spine.005": "spine.004", "spine.006": "spine.005",
-               "breast.L": chest.name, "breast.R": chest.name, "jaw": "spine.006", "nose": "spine.006"}
+               "breast.L": chest.name, "breast.R": chest.name, "face": "spine.006", "jaw": "face", "nose": "face"}
     bones += [Bone(name, parents[name], *geometry[name]) for name in geometry]
     mapping = bone_map.detect(bones)
     assert (mapping["neck"], mapping["head"]) == ("spine.004", "spine.006")

@@ -129,6 +129,15 @@ def _length(bone: Bone) -> float:
     return sum((t - h) ** 2 for h, t in zip(bone.head, bone.tail)) ** 0.5
 
 
+def _continues(bone: Bone, child: Bone) -> bool:
+    """True if `child` starts nearer `bone`'s tail than half its length (or
+    the rest geometry is not known)."""
+    if bone.tail is None or child.head is None:
+        return True
+    gap = sum((c - t) ** 2 for c, t in zip(child.head, bone.tail)) ** 0.5
+    return gap < 0.5 * _length(bone)
+
+
 def detect(bones: Sequence[Bone], rig: str = "rig") -> Dict[str, object]:
     """The bone map of a humanoid: {"hips": name, ..., "left": {...}, "right": {...}}.
 
@@ -186,13 +195,15 @@ def detect_partial(bones: Sequence[Bone], given: Optional[Dict[str, object]] = N
         if len(above) > 1 and all(b.head is not None and b.tail is not None for b in above):
             above = [max(above, key=lambda b: (b.tail[2] - b.head[2]) / (_length(b) or 1.0))]
         if len(above) == 1:
-            chain = [above[0].name]
+            chain = [above[0]]
             while True:
-                children = [b.name for b in bones if b.parent == chain[-1]]
-                if len(children) != 1:
+                children = [b for b in bones if b.parent == chain[-1].name]
+                # Only a bone that goes on from the last one's tail (Rigify's
+                # face bone starts back at the head's root, inside it).
+                if len(children) != 1 or not _continues(chain[-1], children[0]):
                     break
                 chain.append(children[0])
-            neck, head = (chain[0], chain[-1]) if len(chain) > 1 else (None, chain[0])
+            neck, head = (chain[0].name, chain[-1].name) if len(chain) > 1 else (None, chain[0].name)
     if neck is None and head is not None and parents.get(head) not in (None, chest):
         neck = parents[head]
     for role, bone in zip(CENTER_ROLES, (hips, spine, chest, neck, head)):
