@@ -301,6 +301,30 @@ def expect_rig_walks_the_plan(case, make_rig):
     check(worst <= 0.005, f"{case}: re-imported bones are {worst * 1000:.2f} mm off")
 
 
+def test_instances_and_animations_carry_the_agents_names():
+    """A scene's agents are empties named after them: Apply names each
+    instance exactly after its agent (the empty becomes 'NAME (agent)' and
+    keeps the name), planning again reads the same names, and the exported
+    animations carry them."""
+    fresh_scene_with_rig()
+    scenario = TMP / "named.json"
+    scenario.write_text(json.dumps({"format": "footfall-scenario", "version": 1, "agents": [
+        {"name": "ann", "position": [0, 0], "goals": [[4, 0]]},
+        {"name": "bob", "position": [0, 2], "goals": [[4, 2]]}]}))
+    check(bpy.ops.footfall.load_scenario(filepath=str(scenario)) == {"FINISHED"}, "load failed")
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+    check(bpy.ops.footfall.apply() == {"FINISHED"}, "apply failed")
+    for name in ("ann", "bob"):
+        check(bpy.data.objects[name].type == "ARMATURE", f"'{name}' is not the instance")
+        check(bpy.data.objects[f"{name} (agent)"].type == "EMPTY", f"no empty '{name} (agent)'")
+    check(bpy.ops.footfall.plan() == {"FINISHED"} and bpy.ops.footfall.apply() == {"FINISHED"}, "re-plan failed")
+    check(sorted(o.name for o in bpy.data.objects if o.type == "ARMATURE" and o.name in ("ann", "bob")) ==
+          ["ann", "bob"], "the instances lost their names on a second apply")
+    out = TMP / "named.glb"
+    check(bpy.ops.footfall.export_gltf(filepath=str(out)) == {"FINISHED"}, "export failed")
+    check(sorted(a["name"] for a in glb_json(out)["animations"]) == ["ann", "bob"], "animations misnamed")
+
+
 def test_rigs_of_other_origins_walk_on_the_plan():
     """Blender's Rigify human metarig made in the scene, and the project's rig
     with its bones renamed Bone.000, ... (found from the skeleton's shape),
@@ -599,4 +623,5 @@ run([test_feet_and_pelvis_follow_the_plan, test_arms_swing_opposite_to_the_legs,
      test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was,
      test_applying_again_replaces_the_crowd, test_a_crowd_with_short_waits_applies,
      test_a_sheared_pose_is_refused_by_name, test_a_leaving_agent_walks_off_and_disappears,
-     test_rigs_with_object_and_parent_transforms_walk_upright_on_the_plan, test_rigs_of_other_origins_walk_on_the_plan])
+     test_rigs_with_object_and_parent_transforms_walk_upright_on_the_plan, test_rigs_of_other_origins_walk_on_the_plan,
+     test_instances_and_animations_carry_the_agents_names])

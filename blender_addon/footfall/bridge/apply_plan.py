@@ -5,7 +5,7 @@ failure remove everything the attempt created."""
 import bpy
 
 from ..core import native
-from . import animate, datablocks
+from . import animate, datablocks, scene_extract
 from .rig_import import imported_rigs
 
 
@@ -76,6 +76,17 @@ def run(context, plan_filepath: str = "", rig_name: str = ""):
             if block is not None and block not in renamed:
                 renamed[block] = block.name
                 block.name += " (replaced)"
+    # An agent's empty gives its name to the agent's instance: it is renamed
+    # "NAME (agent)" and keeps the name as a property (scene_extract.agent_name).
+    named = []
+    for agent in plan.agents:
+        holder = bpy.data.objects.get(agent.name)
+        if holder is not None and holder.type == "EMPTY" and holder not in renamed:
+            renamed[holder] = holder.name
+            if scene_extract.AGENT_NAME not in holder:
+                holder[scene_extract.AGENT_NAME] = agent.name
+                named.append(holder)
+            holder.name = f"{agent.name} (agent)"
     before = datablocks.snapshot()
     window_manager = context.window_manager
     window_manager.progress_begin(0, 100)
@@ -86,6 +97,8 @@ def run(context, plan_filepath: str = "", rig_name: str = ""):
         datablocks.remove_new(before)
         for block, name in renamed.items():
             block.name = name
+        for holder in named:
+            del holder[scene_extract.AGENT_NAME]
         raise
     finally:
         window_manager.progress_end()

@@ -9,7 +9,9 @@ count, hidden ones included:
   of its evaluated mesh (modifiers applied) whose projection onto the ground
   (world XY) has an area; its height is the object's highest world Z;
 - every EMPTY in "Footfall Agents" whose parent is not an agent is an agent:
-  its name, world XY and world rotation about Z; its child EMPTYs in that
+  its name (its custom property "footfall_agent_name" if it has one: Apply
+  names the rig instance after the agent and the empty "NAME (agent)"),
+  world XY and world rotation about Z; its child EMPTYs in that
   collection are its goals, by "footfall_goal_index", then by name; its
   custom property "footfall_leave_at_goal" (true: it walks through its last
   goal and leaves the scene there) is optional.
@@ -32,6 +34,7 @@ OBSTACLES = "Footfall Obstacles"
 AGENTS = "Footfall Agents"
 GOAL_INDEX = "footfall_goal_index"
 LEAVE_AT_GOAL = "footfall_leave_at_goal"
+AGENT_NAME = "footfall_agent_name"
 OVERRIDES = "footfall_overrides"
 OVERRIDE_KEYS = ("character", "planner")
 MIN_AREA = 1e-8  # [m²] a face seen from above with less area is edge-on: no footprint
@@ -115,6 +118,14 @@ def _goal_order(goal):
     return (0, index, goal.name)
 
 
+def agent_name(agent) -> str:
+    """The agent's name: its custom property AGENT_NAME, else the empty's name."""
+    name = agent.get(AGENT_NAME, agent.name)
+    if not isinstance(name, str) or not name:
+        raise SceneError(f"Agent '{agent.name}': custom property '{AGENT_NAME}' must be a name, got {name!r}")
+    return name
+
+
 def _agents(objects, depsgraph) -> List[AgentInput]:
     empties = {o for o in objects if o.type == "EMPTY"}
 
@@ -122,14 +133,14 @@ def _agents(objects, depsgraph) -> List[AgentInput]:
         return obj in empties and not (obj.parent is not None and is_agent(obj.parent))
 
     agents = []
-    for agent in sorted(filter(is_agent, empties), key=lambda o: o.name):
+    for agent in sorted(filter(is_agent, empties), key=agent_name):
         goals = sorted((child for child in agent.children if child in empties), key=_goal_order)
         if not goals:
             raise SceneError(f"Agent '{agent.name}' has no goals: parent one or more empties to it "
                              f"in '{AGENTS}' (docs/blender-scenes.md)")
         world = agent.evaluated_get(depsgraph).matrix_world
         agents.append(AgentInput(
-            name=agent.name,
+            name=agent_name(agent),
             position=_xy(world.translation),
             goals=[_xy(goal.evaluated_get(depsgraph).matrix_world.translation) for goal in goals],
             facing=math.atan2(world[1][0], world[0][0]),  # where the local X axis points
