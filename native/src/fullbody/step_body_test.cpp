@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace footfall {
@@ -26,26 +27,39 @@ StepBodyTest::StepBodyTest(const CollisionScene& scene, const BodyModel& body, d
   if (!(pose_rate >= 1 && pose_rate <= 1000))
     throw std::invalid_argument("pose rate: must be in [1, 1000] poses per second");
   for (Behavior behavior : {Behavior::kWalk, Behavior::kArmsIn, Behavior::kSideStep}) {
-    const int i = static_cast<int>(behavior);
-    for (const BodyPose& pose : body.motion(behavior).poses)
+    Extent& extent = extents_[static_cast<int>(behavior)];
+    const auto take_in = [&](const BodyPose& pose) {
       for (const Capsule& c : pose)
         for (const Vec3 p : {c.a, c.b}) {
-          reach_[i] = std::max(reach_[i], std::hypot(p.x, p.y) + c.radius);
-          top_[i] = std::max(top_[i], p.z + c.radius);
+          extent.ahead = std::max(extent.ahead, p.x + c.radius);
+          extent.behind = std::max(extent.behind, c.radius - p.x);
+          extent.side = std::max(extent.side, std::fabs(p.y) + c.radius);
+          extent.top = std::max(extent.top, p.z + c.radius);
         }
+    };
+    for (const BodyPose& pose : body.motion(behavior).poses) take_in(pose);
+    take_in(body.standing(behavior));
   }
 }
 
 bool StepBodyTest::hits(const Footstep& step) const {
-  const int i = static_cast<int>(step.behavior);
-  // The box of the whole sweep: the COM's chord (a step's COM stays within
-  // its sway of it) grown by the body's reach.
-  const double grow = reach_[i] + 0.1;
-  const Vec3 lo{std::min(step.com_start.x, step.com_end.x) - grow,
-                std::min(step.com_start.y, step.com_end.y) - grow, 0.0};
-  const Vec3 hi{std::max(step.com_start.x, step.com_end.x) + grow,
-                std::max(step.com_start.y, step.com_end.y) + grow, top_[i]};
-  if (!scene_.near(lo, hi)) return false;
+  const Extent& extent = extents_[static_cast<int>(step.behavior)];
+  // The box of the whole sweep: the body's box in its travel frame, turned
+  // to the step's heading, at both ends of the COM's chord, grown by 0.1 m
+  // (a step's COM stays within its sway of the chord).
+  const double heading = step.behavior == Behavior::kSideStep ? step.phi - 0.5 * kPi : step.phi;
+  const Vec2 along = unit(heading), across = perp(along);
+  Vec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), 0.0};
+  Vec3 hi{-lo.x, -lo.y, extent.top};
+  for (const Vec2 root : {step.com_start, step.com_end})
+    for (const double x : {extent.ahead, -extent.behind})
+      for (const double y : {extent.side, -extent.side}) {
+        const Vec2 corner = root + x * along + y * across;
+        lo = {std::min(lo.x, corner.x), std::min(lo.y, corner.y), 0.0};
+        hi = {std::max(hi.x, corner.x), std::max(hi.y, corner.y), extent.top};
+      }
+  constexpr double kSway = 0.1;  // [m]
+  if (!scene_.near({lo.x - kSway, lo.y - kSway, 0.0}, {hi.x + kSway, hi.y + kSway, hi.z})) return false;
   BodyPose pose;
   GroundPlacement placement;
   const double span = step.end_time - step.start_time;

@@ -35,8 +35,12 @@ class StepBodyTest {
   const CollisionScene& scene_;
   const BodyModel& body_;
   double pose_rate_;
-  std::array<double, 3> reach_{};  // per behaviour: farthest capsule surface from the root, across [m]
-  std::array<double, 3> top_{};    // per behaviour: highest capsule surface [m]
+  // Per behaviour, the body's box in its travel frame over every pose [m]:
+  // how far it reaches ahead of and behind the root, to either side, and up.
+  struct Extent {
+    double ahead = 0, behind = 0, side = 0, top = 0;
+  };
+  std::array<Extent, 3> extents_{};
 };
 
 }  // namespace footfall
