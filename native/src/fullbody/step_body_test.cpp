@@ -63,11 +63,15 @@ bool StepBodyTest::hits(const Footstep& step) const {
   BodyPose pose;
   GroundPlacement placement;
   const double span = step.end_time - step.start_time;
-  const long long count = std::max(1LL, static_cast<long long>(std::ceil(span * pose_rate_)));
+  // A stop that leaves the COM where it is (a wait, a pivot) holds one
+  // standing pose in one place: one test is all of them.
+  const bool still = step.kind == StepKind::kStop && step.com_start == step.com_end;
+  const long long count =
+      still ? 0 : std::max(1LL, static_cast<long long>(std::ceil(span * pose_rate_)));
   for (long long k = 0; k <= count; ++k) {
-    pose_during(body_, step,
-                step.start_time + span * static_cast<double>(k) / static_cast<double>(count), pose,
-                placement);
+    const double share = count == 0 ? 0.0 : static_cast<double>(k) / static_cast<double>(count);
+    const double t = step.start_time + span * share;
+    pose_during(body_, step, t, pose, placement);
     if (scene_.test(pose, placement)) return true;
   }
   return false;
