@@ -428,7 +428,8 @@ def test_behaviours_play_their_clips():
     check(len(strips) == len(sections), f"{len(strips)} strips for {len(sections)} sections")
     for strip, section in zip(strips, sections):
         start, end = scene.frame_start + section.start * fps, scene.frame_start + section.end * fps
-        check(strip.action.name == profile.clips[section.behavior], f"{strip.name} plays {strip.action.name}")
+        check(strip.action.get("footfall_clip_of") == profile.clips[section.behavior],
+              f"{strip.name} plays {strip.action.name}")
         check(strip.frame_start <= start + 1e-6 and strip.frame_end >= end - 1e-6,
               f"{strip.name} spans {strip.frame_start}-{strip.frame_end}, its section {start}-{end}")
 

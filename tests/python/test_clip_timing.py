@@ -49,3 +49,16 @@ def test_idle_plays_at_its_own_pace():
     timing = strip_timing(section, 1.0, 49.0, 24.0, frame_offset=1.0, tail=2.0)
     assert timing.scale == 1.0 and timing.action_frame_start == 1.0
     assert timing.repeat == pytest.approx(2.5 * 24 / 48)
+
+
+@pytest.mark.parametrize("strike", [0.0, 0.4, 0.9])
+def test_a_clips_own_heel_strike_falls_on_the_right_heel_strikes(strike):
+    fps, clip_start, clip_end = 30.0, 5.0, 35.0
+    (section,) = sections(walk(6, start=0.5, duration=0.6))
+    timing = strip_timing(section, clip_start, clip_end, fps, frame_offset=1.0, lead=0.25, strike=strike)
+    for step in section.steps:
+        if step.foot == "right":
+            frame = clip_frame_at(timing, 1.0 + step.start * fps, clip_start)
+            cycle = clip_end - clip_start
+            off = (frame - clip_start - strike * cycle + cycle / 2) % cycle - cycle / 2
+            assert off == pytest.approx(0.0, abs=1e-9)

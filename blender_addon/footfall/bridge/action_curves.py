@@ -54,3 +54,16 @@ def curve(action, data_path: str, index: int, group: str):
     made = bag.fcurves.new(data_path, index=index)
     made.group = bag.groups.get(group) or bag.groups.new(group)
     return made
+
+
+def remove(action, fcurve) -> None:
+    """Removes one of the action's F-curves."""
+    if not LAYERED:
+        action.fcurves.remove(fcurve)
+        return
+    for layer in action.layers:
+        for strip in layer.strips:
+            for bag in strip.channelbags:
+                if any(c == fcurve for c in bag.fcurves):
+                    bag.fcurves.remove(fcurve)
+                    return

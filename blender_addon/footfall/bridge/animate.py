@@ -22,8 +22,8 @@ import bpy
 import numpy
 from mathutils import Matrix, Vector
 
-from ..core import clip_timing
-from . import action_curves, procedural_clips
+from ..core import clip_cycle, clip_timing
+from . import action_curves, procedural_clips, rig_clips
 from .rig_import import profile_of
 
 IK_FOOT = "footfall_ik_foot.{}"
@@ -292,19 +292,19 @@ def _key_leaving(armature, agent, frame_offset: float, fps: float) -> None:
             setattr(obj, prop, False)
 
 
-def _make_cyclic(action) -> None:
-    """Loops the clip, and spans two cycles: a strip plays a one-cycle window
-    that may start anywhere in the first, and NLA strips hold an action's last
-    value past its frame range instead of letting the Cycles modifier go on."""
-    first, last = action.curve_frame_range
-    for curve in action_curves.curves(action):
+def _make_cyclic(clip: rig_clips.Clip) -> None:
+    """Loops the clip, and spans it twice: a strip plays a one-cycle window
+    that may start anywhere in the first cycle, and NLA strips hold an
+    action's last value past its frame range instead of letting the Cycles
+    modifier go on."""
+    for curve in action_curves.curves(clip.action):
         if not any(m.type == "CYCLES" for m in curve.modifiers):
             curve.modifiers.new("CYCLES")
-    action.use_frame_range = True
-    action.frame_start, action.frame_end = first, last + (last - first)
+    clip.action.use_frame_range = True
+    clip.action.frame_start, clip.action.frame_end = clip.first, clip.last + (clip.last - clip.first)
 
 
-def _upper_body(armature, agent, clips: Dict[str, bpy.types.Action], fps: float, frame_offset: float,
+def _upper_body(armature, agent, clips: Dict[str, rig_clips.Clip], fps: float, frame_offset: float,
                 last_frame: float) -> None:
     """One NLA strip per section, on two alternating tracks that cross-fade;
     a strip that overlaps the one before on its track (sections shorter than
@@ -332,15 +332,15 @@ def _upper_body(armature, agent, clips: Dict[str, bpy.types.Action], fps: float,
     add_track()
     add_track()
     for i, section in enumerate(sections):
-        action = clips[section.behavior]
-        first, last = action.curve_frame_range  # one cycle: the clip's keys
+        clip = clips[section.behavior]
         # Neighbouring strips overlap by the blend time; the last plays to the scene's end.
         lead = BLEND_SECONDS if i > 0 else 0.0
         tail = BLEND_SECONDS if i < len(sections) - 1 else (last_frame - frame_offset) / fps - section.end
-        timing = clip_timing.strip_timing(section, first, last, fps, frame_offset, lead, max(tail, 0.0))
+        timing = clip_timing.strip_timing(section, clip.first, clip.first + clip.cycle_frames, fps, frame_offset,
+                                          lead, max(tail, 0.0), clip.cycle.strike)
         length = (timing.action_frame_end - timing.action_frame_start) * timing.scale * timing.repeat
         k = track_for(i, timing.frame_start, timing.frame_start + length)
-        strip = tracks[k].strips.new(f"{section.behavior} {i}", int(timing.frame_start), action)
+        strip = tracks[k].strips.new(f"{section.behavior} {i}", int(timing.frame_start), clip.action)
         # The start first: Blender 3.4 moves only the start; scale and repeat then set the end.
         strip.frame_start = timing.frame_start
         strip.action_frame_start, strip.action_frame_end = timing.action_frame_start, timing.action_frame_end
@@ -352,13 +352,18 @@ def _upper_body(armature, agent, clips: Dict[str, bpy.types.Action], fps: float,
             strip.blend_in = strip.blend_out = min(BLEND_SECONDS * fps, 0.5 * (strip.frame_end - strip.frame_start))
 
 
-def clips_of(armature, profile) -> Dict[str, bpy.types.Action]:
-    """The rig's clip per behaviour, cyclic; procedural ones where it has none."""
+def clips_of(rig, profile) -> Dict[str, rig_clips.Clip]:
+    """The clip per behaviour, cyclic: the rig's own (copies without root
+    motion), procedural ones where it has none."""
     clips = {}
-    for behavior, name in profile.clips.items():
-        action = bpy.data.actions.get(name) if name else None
-        clips[behavior] = action or procedural_clips.make(behavior, armature, profile)
-        _make_cyclic(clips[behavior])
+    for behavior in profile.clips:
+        clip = rig_clips.playable(rig, profile, behavior)
+        if clip is None:
+            action = procedural_clips.make(behavior, rig, profile)
+            first, last = action.curve_frame_range
+            clip = rig_clips.Clip(action, first, last, clip_cycle.ClipCycle(1, clip_cycle.CONVENTION, "convention"))
+        _make_cyclic(clip)
+        clips[behavior] = clip
     return clips
 
 

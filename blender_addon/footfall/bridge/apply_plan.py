@@ -5,7 +5,7 @@ failure remove everything the attempt created."""
 import bpy
 
 from ..core import native
-from . import animate, datablocks, scene_extract
+from . import animate, datablocks, rig_clips, scene_extract
 from .rig_import import imported_rigs
 
 
@@ -103,4 +103,5 @@ def run(context, plan_filepath: str = "", rig_name: str = ""):
     finally:
         window_manager.progress_end()
     _remove(objects)
+    rig_clips.remove_unused_copies()
     return armatures

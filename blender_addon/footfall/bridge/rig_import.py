@@ -14,8 +14,8 @@ from typing import Dict, List, Optional
 import bpy
 
 from ..core import bone_map, rig_measure, rig_profile
-from ..core.rig_profile import BEHAVIORS, RigProfile
-from . import datablocks
+from ..core.rig_profile import RigProfile
+from . import datablocks, rig_clips
 
 PROFILE_PROPERTY = "footfall_profile"
 
@@ -113,16 +113,6 @@ def _foot_points(armature, bones: Dict[str, object]) -> Dict[str, list]:
     return points
 
 
-def _clip_for(behavior: str, wanted: Optional[str], actions) -> Optional[str]:
-    """The imported action for a behaviour. The importer may append the
-    object's name to an animation's ("walk_Armature")."""
-    name = wanted or behavior
-    for action in actions:
-        if action.name == name or action.name.startswith(name + "_"):
-            return action.name
-    return None
-
-
 def _imported_armature(path: pathlib.Path, before) -> bpy.types.Object:
     """Runs Blender's importer for the file; the one armature it made."""
     importer = IMPORTERS.get(path.suffix.lower())
@@ -155,7 +145,8 @@ def import_rig(filepath: str = "", mapping: Optional[Dict[str, object]] = None,
     `mapping` (roles to bone names) and a profile beside the file (same name,
     .json) win over detection.
 
-    Raises RigImportError, bone_map.BoneMapError or rig_profile.ProfileError,
+    Raises RigImportError, bone_map.BoneMapError, rig_profile.ProfileError or
+    rig_clips.ClipError,
     leaving the scene as it was.
     """
     if bool(filepath) == bool(armature):
@@ -180,14 +171,14 @@ def import_rig(filepath: str = "", mapping: Optional[Dict[str, object]] = None,
         heads = {b.name: tuple(world @ b.head_local) for b in rig.data.bones}
         tails = {b.name: tuple(world @ b.tail_local) for b in rig.data.bones}
         dimensions = rig_measure.measure(bones, heads, tails, _foot_points(rig, bones))
-        actions = datablocks.new_since(before, "actions") if filepath else list(bpy.data.actions)
-        clips = {b: _clip_for(b, given.clips.get(b), actions) for b in BEHAVIORS}
+        actions = datablocks.new_since(before, "actions") if filepath else rig_clips.actions_of(rig)
+        clips, clip_notes = rig_clips.choose(rig, bones, given.clips, actions, source)
+        notes += clip_notes
         profile = RigProfile(bones=bones, clips=clips, dimensions=dimensions, rig=source)
         rig[PROFILE_PROPERTY] = json.dumps(profile.to_document())  # last: a failure changes nothing
     except Exception:
         datablocks.remove_new(before)
         raise
-    notes += [f"no '{b}' clip: a procedural one will be used" for b, clip in clips.items() if clip is None]
     return ImportedRig(rig, profile, notes)
 
 

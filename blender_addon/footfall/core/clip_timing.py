@@ -3,9 +3,10 @@
 one behaviour, and each section's clip scaled and phased to its steps.
 
 A clip cycle spans two steps (a left and a right). Walking clips are phased so
-that the clip's quarter-cycle point (the left arm swung furthest forward, by
-the clips' convention) falls on a right heel strike: arms swing opposite to
-the legs. A stop and standing still play "idle".
+that the clip's right heel strike (where its right foot is furthest ahead;
+in the procedural clips and an upper-body clip, its left arm swung furthest
+forward: arms swing opposite to the legs) falls on the plan's right heel
+strikes. A stop and standing still play "idle".
 """
 
 from dataclasses import dataclass
@@ -66,11 +67,12 @@ def _section(run: List[Step]) -> Section:
 
 
 def strip_timing(section: Section, clip_start: float, clip_end: float, fps: float, frame_offset: float,
-                 lead: float = 0.0, tail: float = 0.0) -> StripTiming:
-    """The strip that plays a cyclic clip (frames clip_start..clip_end) over a
-    section, from `lead` seconds before it to `tail` seconds past its end (the
-    overlaps where neighbouring sections cross-fade). Frame = frame_offset +
-    time * fps."""
+                 lead: float = 0.0, tail: float = 0.0, strike: float = 0.25) -> StripTiming:
+    """The strip that plays one cycle of a cyclic clip (frames
+    clip_start..clip_end) over a section, from `lead` seconds before it to
+    `tail` seconds past its end (the overlaps where neighbouring sections
+    cross-fade), with the clip's right heel strike, at `strike` of its
+    cycle, on the section's. Frame = frame_offset + time * fps."""
     cycle = clip_end - clip_start  # frames of the clip
     start = section.start - lead
     duration = section.end + tail - start
@@ -82,10 +84,10 @@ def strip_timing(section: Section, clip_start: float, clip_end: float, fps: floa
         step_time = sum(s.end - s.start for s in walking) / len(walking)
         scale = 2.0 * step_time * fps / cycle
         rights = [s.start for s in walking if s.foot == "right"]
-        strike = rights[0] if rights else walking[0].start + step_time
-        # The clip frame playing at the strip's start, so that the quarter
-        # cycle falls on the right heel strike.
-        phase = (0.25 * cycle - (strike - start) * fps / scale) % cycle
+        right_strike = rights[0] if rights else walking[0].start + step_time
+        # The clip frame playing at the strip's start, so that the clip's
+        # strike falls on the right heel strike.
+        phase = (strike * cycle - (right_strike - start) * fps / scale) % cycle
     repeat = max(duration * fps / (cycle * scale), 1e-3)
     return StripTiming(
         frame_start=frame_offset + start * fps,

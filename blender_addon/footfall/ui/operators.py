@@ -30,12 +30,12 @@ class FOOTFALL_OT_import_rig(bpy.types.Operator, ImportHelper):
         return super().invoke(context, event)
 
     def execute(self, context):
-        from ..bridge import rig_import
+        from ..bridge import rig_clips, rig_import
 
         try:
             rig = rig_import.import_rig("" if self.armature else self.filepath,
                                         mapping_of(context.scene.footfall_bone_map), self.armature)
-        except (rig_import.RigImportError, BoneMapError, ProfileError) as error:
+        except (rig_import.RigImportError, rig_clips.ClipError, BoneMapError, ProfileError) as error:
             return report_and_cancel(self, error)
         for note in rig.notes:
             self.report({"INFO"}, note)
@@ -59,12 +59,12 @@ class FOOTFALL_OT_apply(bpy.types.Operator):
     )
 
     def execute(self, context):
-        from ..bridge import animate, apply_plan
+        from ..bridge import animate, apply_plan, rig_clips
         from ..core.native import CoreMissingError
 
         try:
             armatures = apply_plan.run(context, self.plan_filepath, self.rig)
-        except (apply_plan.ApplyError, animate.TransformError, CoreMissingError) as error:
+        except (apply_plan.ApplyError, animate.TransformError, rig_clips.ClipError, CoreMissingError) as error:
             return report_and_cancel(self, error)
         self.report({"INFO"}, f"Animated {len(armatures)} agents in '{animate.CROWD_COLLECTION}'")
         return {"FINISHED"}

@@ -1,0 +1,121 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""A rig's own clip as a gait cycle: how many cycles it holds and where in
+the cycle the right heel strikes, found from the motion of its feet (or,
+for an upper-body clip, of its hands).
+
+Pure numpy: the caller samples the clip's channels per bone (Blender's
+F-curves, or a glTF animation) and gives the bones' rest matrices in
+armature space. The poses are computed as Blender does for bones that
+inherit their parent's rotation and scale: pose = parent pose @ (parent
+rest^-1 @ rest) @ basis, basis = T(location) R(rotation) S(scale).
+"""
+
+from dataclasses import dataclass
+from typing import Dict, Optional, Sequence
+
+import numpy
+
+MAX_CYCLES = 4  # a clip is taken to hold at most this many gait cycles
+MIN_SWING = 0.05  # feet (or hands) must part by this share of the leg's length to show a cycle
+CONVENTION = 0.25  # where the procedural clips put the right heel strike (left arm forward)
+
+
+@dataclass(frozen=True)
+class BoneRest:
+    name: str
+    parent: Optional[str]
+    matrix: numpy.ndarray  # 4x4, armature space
+
+
+@dataclass(frozen=True)
+class ClipCycle:
+    """`cycles` gait cycles over the clip's frame range; the right heel
+    strikes at `strike` (a fraction of a cycle, from the range's start);
+    `source` says what showed it: "feet", "hands" or "convention"."""
+
+    cycles: int
+    strike: float
+    source: str
+
+
+def quaternion_matrices(q: numpy.ndarray) -> numpy.ndarray:
+    """(n, 3, 3) rotations of (n, 4) quaternions (w, x, y, z), normalised."""
+    q = q / numpy.linalg.norm(q, axis=1, keepdims=True)
+    w, x, y, z = q.T
+    return numpy.stack([
+        numpy.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], axis=1),
+        numpy.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], axis=1),
+        numpy.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], axis=1),
+    ], axis=1)
+
+
+def _axis_rotation(axis: int, angles: numpy.ndarray) -> numpy.ndarray:
+    c, s = numpy.cos(angles), numpy.sin(angles)
+    m = numpy.zeros((len(angles), 3, 3))
+    i, j = (axis + 1) % 3, (axis + 2) % 3  # cyclic, so that every turn is right-handed
+    m[:, axis, axis] = 1.0
+    m[:, i, i], m[:, i, j], m[:, j, i], m[:, j, j] = c, -s, s, c
+    return m
+
+
+def euler_matrices(angles: numpy.ndarray, order: str = "XYZ") -> numpy.ndarray:
+    """(n, 3, 3) rotations of (n, 3) Euler angles in Blender's sense: order
+    "XYZ" turns about X first, so R = Rz Ry Rx."""
+    result = numpy.broadcast_to(numpy.eye(3), (len(angles), 3, 3)).copy()
+    for letter in order:
+        axis = "XYZ".index(letter)
+        result = _axis_rotation(axis, angles[:, axis]) @ result
+    return result
+
+
+def basis_matrices(location: numpy.ndarray, rotation: numpy.ndarray, scale: numpy.ndarray) -> numpy.ndarray:
+    """(n, 4, 4) pose bases from (n, 3) locations, (n, 3, 3) rotations and (n, 3) scales."""
+    basis = numpy.zeros((len(location), 4, 4))
+    basis[:, :3, :3] = rotation * scale[:, None, :]
+    basis[:, :3, 3] = location
+    basis[:, 3, 3] = 1.0
+    return basis
+
+
+def pose_heads(rests: Dict[str, BoneRest], bases: Dict[str, numpy.ndarray], names: Sequence[str],
+               count: int) -> Dict[str, numpy.ndarray]:
+    """Armature-space heads (count, 3) of the bones `names` at each sample;
+    a bone without a basis in `bases` stays at its rest relative to its parent."""
+    poses: Dict[str, numpy.ndarray] = {}
+
+    def pose(name: str) -> numpy.ndarray:
+        if name not in poses:
+            bone = rests[name]
+            local = bone.matrix if bone.parent is None else numpy.linalg.inv(rests[bone.parent].matrix) @ bone.matrix
+            above = numpy.broadcast_to(numpy.eye(4), (count, 4, 4)) if bone.parent is None else pose(bone.parent)
+            basis = bases.get(name, numpy.broadcast_to(numpy.eye(4), (count, 4, 4)))
+            poses[name] = above @ local @ basis
+        return poses[name]
+
+    return {name: pose(name)[:, :3, 3] for name in names}
+
+
+def _dominant(signal: numpy.ndarray):
+    """The strongest of the first MAX_CYCLES harmonics of a signal sampled
+    evenly over one period: (cycles, amplitude, fraction of a cycle at which
+    that harmonic peaks)."""
+    spectrum = numpy.fft.rfft(signal - signal.mean())
+    harmonics = spectrum[1:MAX_CYCLES + 1]
+    k = int(numpy.argmax(numpy.abs(harmonics)))
+    amplitude = 2.0 * abs(harmonics[k]) / len(signal)
+    # signal ~ A cos(2 pi n t - theta): its peaks at t = theta / (2 pi n) + m / n.
+    return k + 1, amplitude, (-numpy.angle(harmonics[k]) / (2 * numpy.pi)) % 1.0
+
+
+def find_cycle(forward: numpy.ndarray, leg_length: float, left_foot: numpy.ndarray, right_foot: numpy.ndarray,
+               left_hand: numpy.ndarray, right_hand: numpy.ndarray) -> ClipCycle:
+    """The cycle of a clip sampled evenly over its frame range (end left out):
+    the right heel strikes where the right foot is furthest ahead of the
+    left (along `forward`, the rig's facing); a clip whose feet keep still is
+    timed by its hands, the left hand furthest ahead at the right heel strike
+    (arms swing against the legs). `leg_length` in the same units."""
+    for source, sign, first, second in (("feet", 1.0, right_foot, left_foot), ("hands", -1.0, right_hand, left_hand)):
+        cycles, amplitude, peak = _dominant(sign * ((first - second) @ forward))
+        if amplitude >= MIN_SWING * leg_length:
+            return ClipCycle(cycles, peak, source)
+    return ClipCycle(1, CONVENTION, "convention")
