@@ -1,5 +1,7 @@
 #include <array>
 #include <limits>
+#include <memory>
+#include <optional>
 
 #include "bindings.hpp"
 #include "footfall/crowd/crowd_planner.hpp"
@@ -122,7 +124,16 @@ void bind_planner(py::module_& m) {
       .def_readwrite("position", &AgentSpec::position)
       .def_readwrite("facing", &AgentSpec::facing)
       .def_readwrite("goals", &AgentSpec::goals)
-      .def_readwrite("leave_at_goal", &AgentSpec::leave_at_goal);
+      .def_readwrite("leave_at_goal", &AgentSpec::leave_at_goal)
+      .def_property(
+          "character",
+          [](const AgentSpec& a) {
+            return a.character ? std::optional<CharacterParams>(*a.character) : std::nullopt;
+          },
+          [](AgentSpec& a, const std::optional<CharacterParams>& character) {
+            a.character = character ? std::make_shared<const CharacterParams>(*character) : nullptr;
+          },
+          "Its own character (a copy); None: the planner's.");
 
   py::enum_<AgentStatus>(m, "AgentStatus")
       .value("REACHED", AgentStatus::kReached)
@@ -142,6 +153,12 @@ void bind_planner(py::module_& m) {
       .def_readonly("nodes_expanded", &AgentPlan::nodes_expanded)
       .def_readonly("sections", &AgentPlan::sections,
                     "The annotated way (BehaviorSection), joined end to end.")
+      .def_property_readonly(
+          "character",
+          [](const AgentPlan& a) {
+            return a.character ? std::optional<CharacterParams>(*a.character) : std::nullopt;
+          },
+          "The agent's own character (a copy); None: the plan's.")
       .def("total_cost", &AgentPlan::total_cost)
       .def("end_time", &AgentPlan::end_time);
   m.def(

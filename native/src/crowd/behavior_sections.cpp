@@ -1,17 +1,28 @@
 // Footfall — each agent's annotated way.
 #include "crowd/behavior_sections.hpp"
 
+#include <map>
+#include <memory>
+#include <utility>
+
 #include "footfall/fullbody/behavioral_planner.hpp"
 
 namespace footfall::detail {
 
-void plan_sections(const Scenario& scenario, const CollisionScene& scene, const BodyModel& body,
-                   std::vector<AgentSpec>& agents) {
-  // The planner puts point obstacles into its mesh while it works: a mesh of
-  // its own, not the one the agents share.
-  NavMesh mesh = navmesh_of(scenario);
-  BehavioralPlanner planner(mesh, scene, body, scenario.planner);
+void plan_sections(const Scenario& scenario, const CollisionScene& scene,
+                   const CharacterPlanners& planners, std::vector<AgentSpec>& agents) {
+  // A planner per body. It puts point obstacles into its mesh while it
+  // works: a mesh of its own, not the one the agents share.
+  std::map<const BodyModel*, std::pair<NavMesh, std::unique_ptr<BehavioralPlanner>>> by_body;
   for (AgentSpec& agent : agents) {
+    const BodyModel& body = planners.body(agent);
+    auto found = by_body.find(&body);
+    if (found == by_body.end()) {
+      found = by_body.emplace(&body, std::make_pair(navmesh_of(scenario), nullptr)).first;
+      found->second.second =
+          std::make_unique<BehavioralPlanner>(found->second.first, scene, body, scenario.planner);
+    }
+    BehavioralPlanner& planner = *found->second.second;
     agent.sections.clear();
     Vec2 from = agent.position;
     for (const Vec2 goal : agent.goals) {

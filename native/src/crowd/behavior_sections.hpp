@@ -4,17 +4,17 @@
 
 #include <vector>
 
+#include "crowd/character_planners.hpp"
 #include "footfall/crowd/scenario.hpp"
-#include "footfall/fullbody/body_model.hpp"
 #include "footfall/fullbody/collision_scene.hpp"
 
 namespace footfall::detail {
 
 /// Plans the annotated way of every agent of `scenario` (its obstacles in
-/// `scene`, its character's `body`) into agents[i].sections (agents: the
-/// scenario's, in its order): from its start to its first goal, on to the
-/// next, as far as there is a way.
-void plan_sections(const Scenario& scenario, const CollisionScene& scene, const BodyModel& body,
-                   std::vector<AgentSpec>& agents);
+/// `scene`, each agent's body from `planners`) into agents[i].sections
+/// (agents: the scenario's, in its order): from its start to its first goal,
+/// on to the next, as far as there is a way.
+void plan_sections(const Scenario& scenario, const CollisionScene& scene,
+                   const CharacterPlanners& planners, std::vector<AgentSpec>& agents);
 
 }  // namespace footfall::detail

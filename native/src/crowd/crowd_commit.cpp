@@ -51,6 +51,7 @@ Proposal propose(const std::vector<Walker>& walkers, std::size_t i, const Attemp
   }
   if (a.steps.empty()) return p;
   AgentPlan plan;
+  plan.character = w.plan.character;
   plan.leaves = p.leaving;
   plan.start = w.plan.start;
   const std::size_t kept = w.plan.footsteps.size() - w.resting;

@@ -488,20 +488,43 @@ struct TickJobs {
 std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
                                    const FootstepPlanner& planner, const NavMesh* mesh,
                                    const RunControl& control) {
+  for (std::size_t i = 0; i < agents.size(); ++i) {
+    if (agents[i].character)
+      throw std::invalid_argument(
+          "agents[" + std::to_string(i) +
+          "].character: one planner plans every agent with its character; give a planner per agent");
+  }
+  return plan_agents(agents, std::vector<const FootstepPlanner*>(agents.size(), &planner), mesh,
+                     control);
+}
+
+std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
+                                   const std::vector<const FootstepPlanner*>& planners,
+                                   const NavMesh* mesh, const RunControl& control) {
+  if (planners.size() != agents.size() ||
+      std::find(planners.begin(), planners.end(), nullptr) != planners.end())
+    throw std::invalid_argument("plan_agents: give one planner per agent");
   for (const AgentSpec& agent : agents) check_agent(agent);
   if (control.threads < 1 || control.threads > 64)
     throw std::invalid_argument("threads must be between 1 and 64");
+  if (agents.empty()) return {};
+  const PlannerParams& params = planners.front()->params();
   std::vector<Walker> walkers(agents.size());
   for (std::size_t i = 0; i < agents.size(); ++i) {
     Walker& w = walkers[i];
     w.spec = &agents[i];
+    w.planner = planners[i];
     w.sections = std::make_shared<const SectionLookup>(agents[i].sections);
-    if (planner.params().follow_sections == 1 && w.sections->any_narrower())
+    if (params.follow_sections == 1 && w.sections->any_narrower())
       w.guides = guides_of(agents[i]);
     w.plan.name = agents[i].name;
-    w.plan.start = standing_state(agents[i].position, agents[i].facing, planner.character());
+    // Every plan carries its character while the crowd plans (the others
+    // check against it), its planner's: not owned, it outlives the run.
+    w.plan.character = std::shared_ptr<const CharacterParams>(std::shared_ptr<void>(),
+                                                              &w.planner->character());
+    w.plan.start = standing_state(agents[i].position, agents[i].facing, w.planner->character());
     w.state = w.plan.start;
-    w.bounds = std::make_shared<const PlanBounds>(w.plan, planner.character());
+    w.bounds = std::make_shared<const PlanBounds>(w.plan, w.planner->character());
   }
   std::vector<PlanWalk> walks;
   for (const Walker& w : walkers) walks.emplace_back(w.plan);
@@ -536,8 +559,8 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
                                          [&](std::size_t r) { return !wishing(walkers[r]); }),
                           w.yielding_to.end());
       const Attempt& a = jobs.attempts[k];
-      const int refused = refusal(walkers, jobs.proposals[k], planner);
-      commit(walkers, i, a, jobs.proposals[k], refused, planner, t);
+      const int refused = refusal(walkers, jobs.proposals[k], *w.planner);
+      commit(walkers, i, a, jobs.proposals[k], refused, *w.planner, t);
       others.clear();
       if (w.committed_at == t) wake_near(walkers, i, jobs.at, others);
       if (a.searched) {
@@ -545,10 +568,10 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
         w.searched_at = t;
         w.searched_from = a.from;
         w.way = a.way_from;
-        const bool gained = a.reached || a.way_left <= a.way_from - planner.params().min_progress;
+        const bool gained = a.reached || a.way_left <= a.way_from - params.min_progress;
         w.blocked = w.failures == 0 && gained ? 0 : w.blocked + 1;
       }
-      show_wish(walkers, i, jobs.attempts[k], planner, jobs.at, jobs.proposals[k].close, others);
+      show_wish(walkers, i, jobs.attempts[k], jobs.at, jobs.proposals[k].close, others);
       for (const std::size_t j : others) touch(j);
       if (!w.done && stuck(walkers, i)) {
         if (!w.roomy) {
@@ -574,7 +597,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     }
     if (!active) break;  // none in flight either
     const bool cancelled = control.cancelled();
-    if (cancelled || t > planner.params().max_time) {
+    if (cancelled || t > params.max_time) {
       if (pending) commit_tick(*pending);
       for (Walker& w : walkers)
         if (!w.done && !w.dormant) w.plan.reason = cancelled ? "cancelled" : "time limit";
@@ -588,7 +611,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       // A plan that has run into its rest starts again from where that leaves it.
       for (const std::size_t i : jobs.due) {
         if (walkers[i].state.time < t) {
-          rest_until(walkers[i], planner, t);
+          rest_until(walkers[i], *walkers[i].planner, t);
           touch(i);
         }
         in_flight[i] = 1;
@@ -625,8 +648,9 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       jobs.proposals.resize(n);
       jobs.seconds.assign(n, 0.0);
       jobs.job_seconds.assign(n, 0.0);
-      jobs.batch = workers.launch(n, [&jobs, &view, &planner, mesh](std::size_t job) {
+      jobs.batch = workers.launch(n, [&jobs, &view, mesh](std::size_t job) {
         const std::size_t k = jobs.order[job], i = jobs.due[k];
+        const FootstepPlanner& planner = *view[i].planner;
         const auto begin = std::chrono::steady_clock::now();
         if (!jobs.idle[k]) {
           jobs.attempts[k] =
@@ -655,13 +679,15 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
   std::vector<AgentPlan> plans;
   for (Walker& w : walkers) {
     w.plan.stuck_at = w.resting > 0 ? w.rested.com : w.state.com;
-    choose_foot_orientations(w.plan.footsteps, w.plan.start.foot_orientation, planner.character());
+    choose_foot_orientations(w.plan.footsteps, w.plan.start.foot_orientation,
+                             w.planner->character());
     // Steps not from a search (a first turn, a rest) take their sections' too;
     // those the search gave a narrower one (the arms held in) keep it.
     for (Footstep& step : w.plan.footsteps)
       step.behavior = std::max(step.behavior, w.sections->of(step));
-    planner.hold_arms_in(w.plan.footsteps);
+    w.planner->hold_arms_in(w.plan.footsteps);
     w.plan.sections = w.spec->sections;
+    w.plan.character = w.spec->character;
     plans.push_back(std::move(w.plan));
   }
   return plans;

@@ -101,6 +101,8 @@ struct KnownWay {
 /// One agent as the driver keeps it.
 struct Walker {
   const AgentSpec* spec = nullptr;
+  /// Its planner, made for its character.
+  const FootstepPlanner* planner = nullptr;
   /// Its sections (spec->sections), for its searches.
   std::shared_ptr<const SectionLookup> sections;
   /// Per goal, the annotated way to it from the goal before (or the start),

@@ -141,8 +141,7 @@ bool must_make_room(const std::vector<Walker>& walkers, std::size_t i, const Sna
   });
 }
 
-void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a,
-               const FootstepPlanner& planner, const Snapshot& now,
+void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a, const Snapshot& now,
                const std::vector<std::size_t>& near, std::vector<std::size_t>& asked) {
   const double t = now.t;
   Walker& w = walkers[i];
@@ -155,7 +154,8 @@ void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a,
   w.wish_makes_room = a.wish_makes_room;
   for (const std::size_t j : near) {
     Walker& other = walkers[j];
-    if (other.done || goes_first(walkers, now, j, i) || planner.validity().keeps_out(rest_of(other), w.wish))
+    if (other.done || goes_first(walkers, now, j, i) ||
+        other.planner->validity().keeps_out(rest_of(other), w.wish))
       continue;
     if (std::find(other.yielding_to.begin(), other.yielding_to.end(), i) != other.yielding_to.end())
       continue;  // asked before

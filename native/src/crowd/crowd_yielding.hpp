@@ -60,8 +60,7 @@ bool must_make_room(const std::vector<Walker>& walkers, std::size_t i, const Sna
 /// to the agents `near` that go after it (as of `now`, the tick of its
 /// search) and rest in it: they keep out of it, searching again at the next
 /// tick, and go into `asked`. Otherwise withdraws it.
-void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a,
-               const FootstepPlanner& planner, const Snapshot& now,
+void show_wish(std::vector<Walker>& walkers, std::size_t i, Attempt& a, const Snapshot& now,
                const std::vector<std::size_t>& near, std::vector<std::size_t>& asked);
 
 }  // namespace footfall::crowd

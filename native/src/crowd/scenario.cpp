@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "crowd/behavior_sections.hpp"
+#include "crowd/character_planners.hpp"
 #include "footfall/fullbody/body_model.hpp"
 #include "footfall/fullbody/step_body_test.hpp"
 #include "footfall/model/footstep.hpp"
@@ -27,7 +28,7 @@ namespace {
 // Refuses two agents whose standing bodies (torso circles and feet) overlap:
 // neither could take a step. Swept along x, so that a crowd of thousands
 // costs about a sort.
-void check_standing_apart(const Scenario& scenario) {
+void check_standing_apart(const Scenario& scenario, const detail::CharacterPlanners& planners) {
   struct Body {
     std::size_t agent;
     std::array<Circle, 5> circles;
@@ -38,10 +39,11 @@ void check_standing_apart(const Scenario& scenario) {
   double widest = 0.0;
   for (std::size_t i = 0; i < scenario.agents.size(); ++i) {
     const AgentSpec& agent = scenario.agents[i];
-    const FootstepState s = standing_state(agent.position, agent.facing, scenario.character);
-    const auto torso = torso_circles(s.com, s.facing, scenario.character);
-    Body body{i, {torso[0], torso[1], torso[2], Circle{s.feet[0], scenario.character.foot_radius},
-                  Circle{s.feet[1], scenario.character.foot_radius}}};
+    const CharacterParams& character = planners.character(agent);
+    const FootstepState s = standing_state(agent.position, agent.facing, character);
+    const auto torso = torso_circles(s.com, s.facing, character);
+    Body body{i, {torso[0], torso[1], torso[2], Circle{s.feet[0], character.foot_radius},
+                  Circle{s.feet[1], character.foot_radius}}};
     for (const Circle& c : body.circles)
       body.reach = std::max(body.reach, distance(c.center, s.com) + c.radius);
     widest = std::max(widest, body.reach);
@@ -73,13 +75,18 @@ void check_standing_apart(const Scenario& scenario) {
 void validate(const Scenario& scenario) {
   validate(scenario.character, "character");
   validate(scenario.planner, "planner");
-  const BodyModel body(scenario.character);  // its motions and clearances
-  const ObstacleMap obstacles(scenario.obstacles, scenario.character.body_height);
-  const FootstepPlanner planner(scenario.character, scenario.planner, obstacles);
+  for (size_t i = 0; i < scenario.agents.size(); ++i) {
+    if (scenario.agents[i].character)
+      validate(*scenario.agents[i].character, child(item("agents", i), "character"));
+  }
+  // Their motions and clearances are checked as they are made.
+  const detail::CharacterPlanners planners(scenario, nullptr);
   std::set<std::string> names;
   for (size_t i = 0; i < scenario.agents.size(); ++i) {
     const AgentSpec& agent = scenario.agents[i];
     const std::string path = item("agents", i);
+    const CharacterParams& character = planners.character(agent);
+    const ObstacleMap& obstacles = planners.obstacles(agent);
     if (agent.name.empty()) fail(child(path, "name"), "must not be empty");
     if (!names.insert(agent.name).second)
       fail(child(path, "name"), user_text(agent.name) + " is used twice");
@@ -87,14 +94,14 @@ void validate(const Scenario& scenario) {
       fail(child(path, "position"), "must be finite and within 1e9 m of the origin");
     if (!std::isfinite(agent.facing)) fail(child(path, "facing"), "must be finite");
     if (agent.goals.empty()) fail(child(path, "goals"), "needs at least one goal");
-    const FootstepState standing = standing_state(agent.position, agent.facing, scenario.character);
-    if (planner.validity().collides(standing)) {
+    const FootstepState standing = standing_state(agent.position, agent.facing, character);
+    if (planners.planner(agent).validity().collides(standing)) {
       int hit = -1;
-      for (const Circle& c : torso_circles(standing.com, standing.facing, scenario.character)) {
+      for (const Circle& c : torso_circles(standing.com, standing.facing, character)) {
         if (hit < 0) hit = obstacles.first_overlap(c);
       }
       for (const Vec2& foot : standing.feet) {
-        if (hit < 0) hit = obstacles.first_overlap({foot, scenario.character.foot_radius});
+        if (hit < 0) hit = obstacles.first_overlap({foot, character.foot_radius});
       }
       fail(child(path, "position"),
            "the standing agent overlaps obstacles[" + std::to_string(hit) + "]");
@@ -110,23 +117,22 @@ void validate(const Scenario& scenario) {
       }
     }
   }
-  check_standing_apart(scenario);
+  check_standing_apart(scenario, planners);
 }
 
 Plan plan_scenario(const Scenario& scenario, const RunControl& control) {
   validate(scenario);
-  const ObstacleMap obstacles(scenario.obstacles, scenario.character.body_height);
   const CollisionScene scene(scenario.obstacles);
-  const BodyModel body(scenario.character);
-  const StepBodyTest body_test(scene, body, scenario.planner.pose_rate);
-  const FootstepPlanner planner(scenario.character, scenario.planner, obstacles, &body_test);
+  const detail::CharacterPlanners planners(scenario, &scene);
   const NavMesh mesh = navmesh_of(scenario);
   Plan plan;
   plan.character = scenario.character;
   plan.obstacles = scenario.obstacles;
   std::vector<AgentSpec> agents = scenario.agents;
-  detail::plan_sections(scenario, scene, body, agents);
-  plan.agents = plan_agents(agents, planner, &mesh, control);
+  detail::plan_sections(scenario, scene, planners, agents);
+  std::vector<const FootstepPlanner*> each;
+  for (const AgentSpec& agent : agents) each.push_back(&planners.planner(agent));
+  plan.agents = plan_agents(agents, each, &mesh, control);
   if (control.cancelled()) plan.status = Status::kCancelled;
   return plan;
 }

@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <stdexcept>
 
 #include "io/json_reader.hpp"
@@ -93,6 +95,7 @@ Json agent_to_json(const AgentPlan& agent) {
         {"right_foot", to_json(agent.start.feet[1])}}},
   };
   if (agent.leaves) json["leaves"] = true;
+  if (agent.character) json["character"] = character_to_json(*agent.character);
   if (agent.status != AgentStatus::kReached) {
     json["reason"] = agent.reason;
     json["stopped_at"] = to_json(agent.stuck_at);
@@ -185,12 +188,27 @@ Footstep read_footstep(const Json& json, const std::string& path) {
   return step;
 }
 
-AgentPlan read_agent(const Json& json, const std::string& path, const CharacterParams& character) {
+// Agents' own characters by their JSON text: those with the same share one.
+using Characters = std::map<std::string, std::shared_ptr<const CharacterParams>>;
+
+AgentPlan read_agent(const Json& json, const std::string& path, const CharacterParams& shared,
+                     Characters& characters) {
   expect_object(
       json, path,
       {"name", "status", "leaves", "reason", "stopped_at", "start", "footsteps", "sections",
-       "stats"});
+       "stats", "character"});
   AgentPlan agent;
+  if (json.contains("character")) {
+    auto& own = characters[json["character"].dump()];
+    if (!own) {
+      CharacterParams read = shared;
+      read_character(json["character"], child(path, "character"), read);
+      validate(read, child(path, "character"));
+      own = std::make_shared<const CharacterParams>(std::move(read));
+    }
+    agent.character = own;
+  }
+  const CharacterParams& character = character_of(agent, shared);
   agent.name = string(require(json, path, "name"), child(path, "name"));
   agent.status = read_enum(require(json, path, "status"), child(path, "status"),
                            {AgentStatus::kReached, AgentStatus::kPartial});
@@ -275,8 +293,9 @@ Plan read_plan(const Json& root) {
   if (root.contains("stats") && !root["stats"].is_object())
     fail("stats", "expected an object, got " + type_name(root["stats"]));
   const Json& agents = array(require(root, "", "agents"), "agents");
+  Characters characters;
   for (size_t i = 0; i < agents.size(); ++i)
-    plan.agents.push_back(read_agent(agents[i], item("agents", i), plan.character));
+    plan.agents.push_back(read_agent(agents[i], item("agents", i), plan.character, characters));
   return plan;
 }
 

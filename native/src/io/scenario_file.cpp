@@ -1,6 +1,8 @@
 // Footfall — reading scenario files (docs/file-formats.md).
 #include "footfall/io/scenario_file.hpp"
 
+#include <map>
+#include <memory>
 #include <stdexcept>
 
 #include "footfall/io/steersuite.hpp"
@@ -13,6 +15,23 @@ using namespace detail;
 
 namespace {
 
+// Each agent's own character: the scenario's with its "character" overrides.
+// Agents with the same overrides share one (a planner each, not per agent).
+void read_agent_characters(const Json& agents, Scenario& scenario) {
+  std::map<std::string, std::shared_ptr<const CharacterParams>> made;
+  for (size_t i = 0; i < agents.size(); ++i) {
+    if (!agents[i].contains("character")) continue;
+    const Json& overrides = agents[i]["character"];
+    const std::string path = child(item("agents", i), "character");
+    CharacterParams character = scenario.character;
+    read_character(overrides, path, character);
+    if (overrides.empty()) continue;
+    auto& shared = made[overrides.dump()];
+    if (!shared) shared = std::make_shared<const CharacterParams>(std::move(character));
+    scenario.agents[i].character = shared;
+  }
+}
+
 Scenario read_scenario(const Json& root) {
   expect_header(root, "footfall-scenario", 1);
   expect_object(root, "", {"format", "version", "obstacles", "agents", "character", "planner"});
@@ -22,7 +41,8 @@ Scenario read_scenario(const Json& root) {
     const Json& agents = array(root["agents"], "agents");
     for (size_t i = 0; i < agents.size(); ++i) {
       const std::string path = item("agents", i);
-      expect_object(agents[i], path, {"name", "position", "facing", "goals", "leave_at_goal"});
+      expect_object(agents[i], path,
+                    {"name", "position", "facing", "goals", "leave_at_goal", "character"});
       AgentSpec agent;
       agent.name = agents[i].contains("name") ? string(agents[i]["name"], child(path, "name"))
                                               : "agent" + std::to_string(i);
@@ -44,6 +64,7 @@ Scenario read_scenario(const Json& root) {
   }
   if (root.contains("character"))
     read_character(root["character"], "character", scenario.character);
+  if (root.contains("agents")) read_agent_characters(root["agents"], scenario);
   if (root.contains("planner")) read_planner(root["planner"], "planner", scenario.planner);
   validate(scenario);
   return scenario;

@@ -79,7 +79,8 @@ double top_com_speed(const AgentPlan& plan, double from) {
   return speed;
 }
 
-double circle_reach(const AgentPlan& plan, const CharacterParams& character, double from) {
+double circle_reach(const AgentPlan& plan, const CharacterParams& shared, double from) {
+  const CharacterParams& character = character_of(plan, shared);
   double reach = torso_reach(character);
   const auto& steps = plan.footsteps;
   if (steps.empty() || from < steps.front().start_time)  // standing at the start first
@@ -102,7 +103,8 @@ double circle_reach(const AgentPlan& plan, const CharacterParams& character, dou
   return reach;
 }
 
-PlanBounds::PlanBounds(const AgentPlan& plan, const CharacterParams& character) {
+PlanBounds::PlanBounds(const AgentPlan& plan, const CharacterParams& shared) {
+  const CharacterParams& character = character_of(plan, shared);
   const auto& steps = plan.footsteps;
   const double torso = torso_reach(character);
   start_.reach = std::max(torso, start_feet_reach(plan, character));
@@ -243,9 +245,10 @@ std::array<FootPose, 2> feet_at(const AgentPlan& plan, double t) {
 namespace {
 
 // collision_circles at time t, with the step under way (k, step_index's) known.
-int circles_during(const AgentPlan& plan, int k, const CharacterParams& character, double t,
+int circles_during(const AgentPlan& plan, int k, const CharacterParams& shared, double t,
                    std::array<Circle, 5>& out) {
   if (!present_at(plan, t)) return 0;
+  const CharacterParams& character = character_of(plan, shared);
   // What com_at, facing_at and feet_at give, from the one step.
   const auto& steps = plan.footsteps;
   const bool started = !steps.empty() && t >= steps.front().start_time;

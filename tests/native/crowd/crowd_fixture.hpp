@@ -25,6 +25,7 @@ struct CrowdFixture {
       Walker w;
       w.spec = &spec;
       w.plan.name = spec.name;
+      w.planner = &planner;
       w.plan.start = standing_state(spec.position, spec.facing, planner.character());
       w.state = w.plan.start;
       w.bounds = std::make_shared<const PlanBounds>(w.plan, planner.character());

@@ -108,7 +108,7 @@ TEST(Yielding, BlockedAgentAsksThoseInItsWayWithMoreWayLeft) {
   ASSERT_TRUE(out_of(rest_of(crowd.walkers[3]), a.wish, character));
   const std::size_t discs = a.wish.size();
   std::vector<std::size_t> asked;
-  show_wish(crowd.walkers, 0, a, crowd.planner, crowd.at(2.0), {1, 2, 3}, asked);
+  show_wish(crowd.walkers, 0, a, crowd.at(2.0), {1, 2, 3}, asked);
   EXPECT_EQ(crowd.walkers[0].wish.size(), discs);  // it shows its wish
   EXPECT_EQ(asked, std::vector<std::size_t>{1});
   EXPECT_EQ(crowd.walkers[1].yielding_to, std::vector<std::size_t>{0});
@@ -127,10 +127,10 @@ TEST(Yielding, OneThatGivesWayIsAskedWhateverItsWay) {
   Attempt a = wish_of_blocked(crowd), again = a;  // show_wish takes the attempt's wish
   Snapshot now = crowd.at(0.0);
   std::vector<std::size_t> asked;
-  show_wish(crowd.walkers, 0, a, crowd.planner, now, {1}, asked);
+  show_wish(crowd.walkers, 0, a, now, {1}, asked);
   EXPECT_TRUE(asked.empty());
   now.giving_way[1] = 1;
-  show_wish(crowd.walkers, 0, again, crowd.planner, now, {1}, asked);
+  show_wish(crowd.walkers, 0, again, now, {1}, asked);
   EXPECT_EQ(asked, std::vector<std::size_t>{1});
 }
 
@@ -140,9 +140,9 @@ TEST(Yielding, AskedAgentIsWokenAndAskedOnce) {
   crowd.walkers[1].dormant = true;
   Attempt a = wish_of_blocked(crowd), again = a;
   std::vector<std::size_t> asked;
-  show_wish(crowd.walkers, 0, a, crowd.planner, crowd.at(1.0), {1}, asked);
+  show_wish(crowd.walkers, 0, a, crowd.at(1.0), {1}, asked);
   EXPECT_FALSE(crowd.walkers[1].dormant);
-  show_wish(crowd.walkers, 0, again, crowd.planner, crowd.at(1.5), {1}, asked);
+  show_wish(crowd.walkers, 0, again, crowd.at(1.5), {1}, asked);
   EXPECT_EQ(asked, std::vector<std::size_t>{1});
   EXPECT_EQ(crowd.walkers[1].yielding_to, std::vector<std::size_t>{0});
 }
@@ -157,7 +157,7 @@ TEST(Yielding, WishIsWithdrawnOnceNotBlocked) {
   Attempt a;
   a.wish = w.wish;
   std::vector<std::size_t> asked;
-  show_wish(crowd.walkers, 0, a, crowd.planner, crowd.at(0.0), {1}, asked);
+  show_wish(crowd.walkers, 0, a, crowd.at(0.0), {1}, asked);
   EXPECT_FALSE(wishing(w));
   EXPECT_FALSE(w.wish_makes_room);
   EXPECT_TRUE(asked.empty());

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,9 @@ struct AgentSpec {
   /// has a section other than walk, the agent follows it: its way is the
   /// annotated one, and its steps take their sections' behaviours.
   std::vector<BehaviorSection> sections{};
+  /// Its own character (a scenario's per-agent `character`); null: the
+  /// planner's. Its plan keeps it (AgentPlan::character).
+  std::shared_ptr<const CharacterParams> character{};
 };
 
 /// Lets a caller follow and stop a long run.
@@ -64,9 +68,18 @@ struct RunControl {
 /// walk also ends at max_time ("time limit") or on cancel ("cancelled").
 /// Each plan lists its agent's sections, and each step its behaviour.
 /// Deterministic, whatever `control.threads`.
+/// Every agent walks with the planner's character: none may have its own.
 std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
                                    const FootstepPlanner& planner, const NavMesh* mesh = nullptr,
                                    const RunControl& control = {});
+
+/// The same with a planner per agent: agent i searches with planners[i],
+/// made for its own character (plan_scenario makes one per character), and
+/// every check of one agent's body against another's takes each one's own.
+/// The planners' PlannerParams are the first one's.
+std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
+                                   const std::vector<const FootstepPlanner*>& planners,
+                                   const NavMesh* mesh = nullptr, const RunControl& control = {});
 
 /// One agent's walk alone (plan_agents with no one else).
 AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,

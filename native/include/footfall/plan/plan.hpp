@@ -3,9 +3,9 @@
 #pragma once
 
 #include <array>
-#include <vector>
-
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "footfall/model/footstep.hpp"
 #include "footfall/model/obstacles.hpp"
@@ -50,6 +50,9 @@ struct AgentPlan {
   /// The annotated way from the start through every goal, joined end to end;
   /// each footstep's behaviour is that of its section.
   std::vector<BehaviorSection> sections;
+  /// The agent's own character, where it has one (a scenario's per-agent
+  /// `character`); null: the plan's. Its body is measured with it.
+  std::shared_ptr<const CharacterParams> character;
 
   /// Sum of the step costs. [J]
   double total_cost() const;
@@ -57,6 +60,11 @@ struct AgentPlan {
   /// at every sample.)
   double end_time() const { return footsteps.empty() ? 0.0 : footsteps.back().end_time; }
 };
+
+/// The character an agent walks with: its own, else `shared` (the plan's).
+inline const CharacterParams& character_of(const AgentPlan& plan, const CharacterParams& shared) {
+  return plan.character ? *plan.character : shared;
+}
 
 /// False once an agent that leaves has taken its last step.
 inline bool present_at(const AgentPlan& plan, double t) {
@@ -94,7 +102,9 @@ double top_com_speed(const AgentPlan& plan, double from);
 
 /// How far from the COM the plan's collision circles (collision_circles)
 /// reach from time `from` on, bounded step by step: the torso's, and each
-/// planted foot's from the step's chord ends plus its sway. [m]
+/// planted foot's from the step's chord ends plus its sway. `character` is
+/// the plan's shared one: an agent's own (AgentPlan::character) wins, here
+/// and in PlanBounds and collision_circles. [m]
 double circle_reach(const AgentPlan& plan, const CharacterParams& character, double from);
 
 /// top_com_speed, circle_reach and a box round the COM path of one plan,
