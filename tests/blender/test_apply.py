@@ -525,7 +525,7 @@ def test_failures_leave_the_scene_as_it_was():
     addon_utils.enable("footfall", default_set=True, handle_error=None)
     _plan, path = doorway_plan_without_rig(ff)
     before = inventory()
-    expect_error(bpy.ops.footfall.apply, "Import one rig first", plan_filepath=str(path))
+    expect_error(bpy.ops.footfall.apply, "Import a rig first", plan_filepath=str(path))
     expect_error(bpy.ops.footfall.apply, "No plan: run Plan first")
     expect_error(bpy.ops.footfall.export_gltf, "Nothing to export", filepath=str(TMP / "none.glb"))
     check(inventory() == before, "a failed operator changed the scene")

@@ -353,6 +353,7 @@ def test_failing_operators_report_and_cancel():
     fresh_scene()
     bpy.ops.mesh.primitive_uv_sphere_add()  # something of the user's
     bpy.context.scene.footfall_bone_map  # reading the fields (as the panel does) stores them on the scene
+    bpy.context.scene.footfall_rig
     before = inventory()
     bad = write("bad-position.json", {"format": "footfall-scenario", "version": 1,
                                       "agents": [{"name": "dan", "position": [1], "goals": [[3, 3]]}]})

@@ -367,13 +367,30 @@ def clips_of(rig, profile) -> Dict[str, rig_clips.Clip]:
     return clips
 
 
-def apply_plan(ff, plan, rig, scene, progress: Optional[Callable[[float], None]] = None) -> List[bpy.types.Object]:
-    """Animates one instance of `rig` per agent of `plan`; returns the armatures.
+@dataclass
+class _Character:
+    """What Apply makes once per rig: the template armature, its rest, its clips."""
+
+    rig: bpy.types.Object
+    template: bpy.types.Armature
+    rest: RigRest
+    clips: Dict[str, rig_clips.Clip]
+
+
+def _character(rig) -> _Character:
+    profile = profile_of(rig)
+    template = _template(rig, profile)
+    return _Character(rig, template, rig_rest(template, profile), clips_of(rig, profile))
+
+
+def apply_plan(ff, plan, rigs: Dict[str, bpy.types.Object], scene,
+               progress: Optional[Callable[[float], None]] = None) -> List[bpy.types.Object]:
+    """Animates one instance of each agent's rig (`rigs`: agent name -> rig)
+    per agent of `plan`; returns the armatures.
 
     Frame `scene.frame_start` is time 0; the scene's frame range is extended to
     the end of the longest plan.
     """
-    profile = profile_of(rig)
     fps = scene.render.fps / scene.render.fps_base
     frame_offset = float(scene.frame_start)
     end_time = max((agent.end_time() for agent in plan.agents), default=0.0)
@@ -382,19 +399,22 @@ def apply_plan(ff, plan, rig, scene, progress: Optional[Callable[[float], None]]
     collection = bpy.data.collections.get(CROWD_COLLECTION) or bpy.data.collections.new(CROWD_COLLECTION)
     if collection.name not in scene.collection.children:
         scene.collection.children.link(collection)
-    template = _template(rig, profile)
-    rest = rig_rest(template, profile)
-    clips = clips_of(rig, profile)
-    armatures = [_instance(agent.name, template, rig, collection) for agent in plan.agents]
+    characters: Dict[str, _Character] = {}
+    for rig in rigs.values():
+        if rig.name not in characters:
+            characters[rig.name] = _character(rig)
+    cast = [characters[rigs[agent.name].name] for agent in plan.agents]
+    armatures = [_instance(agent.name, c.template, c.rig, collection) for agent, c in zip(plan.agents, cast)]
     bpy.context.view_layer.update()  # new armature objects get their poses here, all at once
-    for i, (agent, armature) in enumerate(zip(plan.agents, armatures)):
-        _add_controls(armature, rest)
+    for i, (agent, armature, character) in enumerate(zip(plan.agents, armatures, cast)):
+        _add_controls(armature, character.rest)
         _write_action(armature, f"{agent.name} locomotion", frames,
-                      _locomotion(ff, agent, rest, frames, frame_offset, fps))
-        _upper_body(armature, agent, clips, fps, frame_offset, last_frame)
+                      _locomotion(ff, agent, character.rest, frames, frame_offset, fps))
+        _upper_body(armature, agent, character.clips, fps, frame_offset, last_frame)
         _key_leaving(armature, agent, frame_offset, fps)
         if progress:
             progress((i + 1) / len(plan.agents))
-    bpy.data.armatures.remove(template)
+    for character in characters.values():
+        bpy.data.armatures.remove(character.template)
     scene.frame_end = max(scene.frame_end, int(last_frame))
     return armatures

@@ -5,8 +5,7 @@ failure remove everything the attempt created."""
 import bpy
 
 from ..core import native
-from . import animate, datablocks, rig_clips, scene_extract
-from .rig_import import imported_rigs
+from . import agent_rigs, animate, datablocks, rig_clips, scene_extract
 
 
 class ApplyError(ValueError):
@@ -31,19 +30,6 @@ def _plan(ff, plan_filepath: str):
     return plan
 
 
-def _rig(name: str):
-    rigs = imported_rigs()
-    if name:
-        rig = bpy.data.objects.get(name)
-        if rig is None or rig not in rigs:
-            raise ApplyError(f"'{name}' is not a rig imported with Footfall's Import Rig")
-        return rig
-    if len(rigs) != 1:
-        found = ", ".join(sorted(r.name for r in rigs)) or "none"
-        raise ApplyError(f"Import one rig first (Footfall > Import Rig), or name the rig to use (rigs: {found})")
-    return rigs[0]
-
-
 def _remove(objects) -> None:
     """Removes agents made by an earlier apply: objects, armatures, locomotion
     actions (the meshes stay: they are the rig's)."""
@@ -63,7 +49,10 @@ def run(context, plan_filepath: str = "", rig_name: str = ""):
     plan = _plan(ff, plan_filepath)
     if not plan.agents:
         raise ApplyError("The plan has no agents")
-    rig = _rig(rig_name)
+    try:
+        rigs = agent_rigs.rigs_of(context.scene, plan, agent_rigs.scene_rig(context.scene, rig_name))
+    except agent_rigs.RigChoiceError as error:
+        raise ApplyError(str(error)) from error
     if context.object is not None and context.object.mode != "OBJECT":
         bpy.ops.object.mode_set(mode="OBJECT")
     crowd = bpy.data.collections.get(animate.CROWD_COLLECTION)
@@ -91,7 +80,7 @@ def run(context, plan_filepath: str = "", rig_name: str = ""):
     window_manager = context.window_manager
     window_manager.progress_begin(0, 100)
     try:
-        armatures = animate.apply_plan(ff, plan, rig, context.scene,
+        armatures = animate.apply_plan(ff, plan, rigs, context.scene,
                                        lambda f: window_manager.progress_update(int(100 * f)))
     except Exception:
         datablocks.remove_new(before)

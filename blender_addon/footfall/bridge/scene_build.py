@@ -21,7 +21,7 @@ import bpy
 from ..core import native
 from ..core.scenario import document_of, parse
 from . import datablocks
-from .scene_extract import (AGENTS, GOAL_INDEX, LEAVE_AT_GOAL, MIN_AREA, OBSTACLES, OVERRIDE_KEYS,
+from .scene_extract import (AGENT_CHARACTER, AGENTS, GOAL_INDEX, LEAVE_AT_GOAL, MIN_AREA, OBSTACLES, OVERRIDE_KEYS,
                             OVERRIDES, collection_in, overrides, signed_area)
 
 AGENT_SIZE = 0.5  # [m] length of the agent empty's arrows
@@ -84,6 +84,9 @@ def _complete(scenario, document: dict) -> dict:
     """The document as the core read it: every default filled in."""
     complete = document_of(scenario)
     complete.update({key: document[key] for key in ("character", "planner") if document.get(key)})
+    for read, given in zip(complete["agents"], document.get("agents", [])):
+        if given.get("character"):
+            read["character"] = given["character"]
     return complete
 
 
@@ -146,6 +149,8 @@ def _add_agent(agent: dict, collection):
     obj.rotation_euler = (0.0, 0.0, agent["facing"])
     if agent.get("leave_at_goal"):
         obj[LEAVE_AT_GOAL] = True
+    if agent.get("character"):
+        obj[AGENT_CHARACTER] = json.dumps(agent["character"])
     collection.objects.link(obj)
     return obj
 

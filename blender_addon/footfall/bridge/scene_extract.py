@@ -13,8 +13,11 @@ count, hidden ones included:
   names the rig instance after the agent and the empty "NAME (agent)"),
   world XY and world rotation about Z; its child EMPTYs in that
   collection are its goals, by "footfall_goal_index", then by name; its
-  custom property "footfall_leave_at_goal" (true: it walks through its last
-  goal and leaves the scene there) is optional.
+  custom properties "footfall_leave_at_goal" (true: it walks through its last
+  goal and leaves the scene there), "footfall_character" (JSON text:
+  overrides of the character for it alone) and "footfall_rig" (the name of
+  the imported rig it is animated with, which sizes its character) are
+  optional.
 
 The scene's custom property "footfall_overrides" holds the "character" and
 "planner" overrides as JSON text.
@@ -23,8 +26,8 @@ The scene's custom property "footfall_overrides" holds the "character" and
 import json
 import math
 import re
-from dataclasses import dataclass
-from typing import List, Sequence
+from dataclasses import dataclass, field
+from typing import Dict, List, Sequence
 
 import bpy
 
@@ -35,6 +38,8 @@ AGENTS = "Footfall Agents"
 GOAL_INDEX = "footfall_goal_index"
 LEAVE_AT_GOAL = "footfall_leave_at_goal"
 AGENT_NAME = "footfall_agent_name"
+AGENT_CHARACTER = "footfall_character"
+AGENT_RIG = "footfall_rig"
 OVERRIDES = "footfall_overrides"
 OVERRIDE_KEYS = ("character", "planner")
 MIN_AREA = 1e-8  # [m²] a face seen from above with less area is edge-on: no footprint
@@ -52,6 +57,7 @@ class SceneScenario:
 
     document: dict
     obstacle_objects: List[str]
+    agent_rigs: Dict[str, str] = field(default_factory=dict)  # agent -> its custom property AGENT_RIG
 
     def locate(self, message: str) -> str:
         """The core's error `message` with the objects behind the
@@ -126,14 +132,20 @@ def agent_name(agent) -> str:
     return name
 
 
-def _agents(objects, depsgraph) -> List[AgentInput]:
+def _agent_objects(objects) -> list:
+    """The agents among `objects`: empties whose parent is not an agent."""
     empties = {o for o in objects if o.type == "EMPTY"}
 
     def is_agent(obj):
         return obj in empties and not (obj.parent is not None and is_agent(obj.parent))
 
+    return sorted(filter(is_agent, empties), key=agent_name)
+
+
+def _agents(objects, depsgraph) -> List[AgentInput]:
+    empties = {o for o in objects if o.type == "EMPTY"}
     agents = []
-    for agent in sorted(filter(is_agent, empties), key=agent_name):
+    for agent in _agent_objects(objects):
         goals = sorted((child for child in agent.children if child in empties), key=_goal_order)
         if not goals:
             raise SceneError(f"Agent '{agent.name}' has no goals: parent one or more empties to it "
@@ -145,8 +157,40 @@ def _agents(objects, depsgraph) -> List[AgentInput]:
             goals=[_xy(goal.evaluated_get(depsgraph).matrix_world.translation) for goal in goals],
             facing=math.atan2(world[1][0], world[0][0]),  # where the local X axis points
             leave_at_goal=_leaves(agent),
+            character=_own_character(agent),
         ))
     return agents
+
+
+def agent_empties(scene) -> Dict[str, object]:
+    """The scene's agent empties by agent name."""
+    return {agent_name(o): o for o in _agent_objects(_members(scene, AGENTS))}
+
+
+def _own_character(agent):
+    text = agent.get(AGENT_CHARACTER)
+    if text is None:
+        return None
+    where = f"Agent '{agent.name}': custom property '{AGENT_CHARACTER}'"
+    try:
+        value = json.loads(text) if isinstance(text, str) else None
+    except json.JSONDecodeError as error:
+        raise SceneError(f"{where}: not valid JSON: {error}") from error
+    if not isinstance(value, dict):
+        raise SceneError(f"{where}: must be JSON text of an object of character fields, got {text!r}")
+    return value
+
+
+def _rig_names(objects) -> Dict[str, str]:
+    rigs = {}
+    for agent in _agent_objects(objects):
+        name = agent.get(AGENT_RIG)
+        if name is None:
+            continue
+        if not isinstance(name, str) or not name:
+            raise SceneError(f"Agent '{agent.name}': custom property '{AGENT_RIG}' must be a rig's name, got {name!r}")
+        rigs[agent_name(agent)] = name
+    return rigs
 
 
 def _leaves(agent) -> bool:
@@ -195,12 +239,13 @@ def read(scene) -> SceneScenario:
     if depsgraph.scene != scene:
         raise SceneError(f"Scene '{scene.name}' is not the active scene; only the active scene can be read")
     obstacles, owners = _obstacles(_members(scene, OBSTACLES), depsgraph)
-    agents = _agents(_members(scene, AGENTS), depsgraph)
+    members = _members(scene, AGENTS)
+    agents = _agents(members, depsgraph)
     params = overrides(scene)
     document = scenario_document(ScenarioInput(agents=agents, obstacles=obstacles,
                                                character=params.get("character", {}),
                                                planner=params.get("planner", {})))
-    return SceneScenario(document, owners)
+    return SceneScenario(document, owners, _rig_names(members))
 
 
 def extract(scene) -> dict:

@@ -18,14 +18,16 @@ Point = Tuple[float, float]
 @dataclass(frozen=True)
 class AgentInput:
     """One agent: name, standing position [m], goals [m], facing [rad] (None:
-    toward the first goal), and whether it walks through its last goal and
-    leaves the scene there (instead of coming to rest on it)."""
+    toward the first goal), whether it walks through its last goal and
+    leaves the scene there (instead of coming to rest on it), and overrides
+    of the scenario's character for it alone (its own size, say)."""
 
     name: str
     position: Point
     goals: Sequence[Point]
     facing: Optional[float] = None
     leave_at_goal: bool = False
+    character: Optional[dict] = None
 
 
 @dataclass(frozen=True)
@@ -63,6 +65,8 @@ def scenario_document(scenario: ScenarioInput) -> dict:
             entry["facing"] = float(agent.facing)
         if agent.leave_at_goal:
             entry["leave_at_goal"] = True
+        if agent.character:
+            entry["character"] = dict(agent.character)
         agents.append(entry)
     document = {
         "format": "footfall-scenario",

@@ -39,7 +39,8 @@ class FOOTFALL_OT_import_rig(bpy.types.Operator, ImportHelper):
             return report_and_cancel(self, error)
         for note in rig.notes:
             self.report({"INFO"}, note)
-        self.report({"INFO"}, f"Imported rig '{rig.armature.name}'")
+        context.scene.footfall_rig = rig.armature
+        self.report({"INFO"}, f"Imported rig '{rig.armature.name}', the scene's rig now")
         return {"FINISHED"}
 
 
@@ -55,7 +56,7 @@ class FOOTFALL_OT_apply(bpy.types.Operator):
         name="Plan File", subtype="FILE_PATH", description="A plan file to apply; empty: the plan stored in this file"
     )
     rig: bpy.props.StringProperty(
-        name="Rig", description="The imported rig to instance; empty: the only rig imported with Footfall"
+        name="Rig", description="The imported rig to instance; empty: the scene's rig (the panel's Rig)"
     )
 
     def execute(self, context):

@@ -27,6 +27,7 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
         self.layout.operator("footfall.load_scenario", icon="FILE_FOLDER")
         self.layout.operator("footfall.plan", icon="TRACKING")
         self.layout.operator("footfall.import_rig", icon="ARMATURE_DATA")
+        self.layout.prop(context.scene, "footfall_rig")
         active = context.active_object
         from ..bridge.rig_import import PROFILE_PROPERTY
 

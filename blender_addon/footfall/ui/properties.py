@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Scene properties: the bone fields that complete a rig's bone map when
-detection fails."""
+"""Scene properties: the rig that animates the agents, and the bone fields
+that complete a rig's bone map when detection fails."""
 
 import bpy
 
@@ -42,9 +42,20 @@ def mapping_of(fields) -> dict:
     return mapping
 
 
+def _is_imported_rig(_scene, obj) -> bool:
+    from ..bridge.rig_import import PROFILE_PROPERTY
+
+    return obj.type == "ARMATURE" and PROFILE_PROPERTY in obj
+
+
 def register():
     bpy.types.Scene.footfall_bone_map = bpy.props.PointerProperty(type=FOOTFALL_PG_bone_map)
+    bpy.types.Scene.footfall_rig = bpy.props.PointerProperty(
+        type=bpy.types.Object, name="Rig", poll=_is_imported_rig,
+        description="The imported rig that animates the agents and sizes their character (an agent's "
+                    "custom property 'footfall_rig' names another for it alone)")
 
 
 def unregister():
+    del bpy.types.Scene.footfall_rig
     del bpy.types.Scene.footfall_bone_map

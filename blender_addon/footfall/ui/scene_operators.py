@@ -36,16 +36,16 @@ class FOOTFALL_OT_load_scenario(bpy.types.Operator, ImportHelper):
 def _plan_scene(context):
     """Plans the scene with a progress bar; returns the plan and the seconds it took.
     Raises SceneError naming the object or field at fault."""
-    from ..bridge.rig_import import imported_rigs, profile_of
+    from ..bridge import agent_rigs
     from ..bridge.scene_extract import AGENTS, SceneError, read
-    from ..core.character import with_rig
     from ..core.scenario import plan
 
     extracted = read(context.scene)
-    document = extracted.document
-    rigs = imported_rigs()
-    if len(rigs) == 1:  # the rig's size sets the stride; the scene's own overrides win
-        document = with_rig(document, profile_of(rigs[0]).dimensions)
+    # The rigs' sizes set the strides; the scene's and agents' own overrides win.
+    try:
+        document = agent_rigs.sized(extracted.document, extracted.agent_rigs, agent_rigs.scene_rig(context.scene))
+    except agent_rigs.RigChoiceError as error:
+        raise SceneError(str(error)) from error
     if not document["agents"]:
         raise SceneError(f"No agents to plan: add empties to the collection '{AGENTS}', "
                          "or load a scenario (docs/blender-scenes.md)")

@@ -7,14 +7,31 @@
 
 namespace footfall::detail {
 
+namespace {
+
+PlannerParams scaled_to(const CharacterParams& character, const Scenario& scenario) {
+  PlannerParams params = scenario.planner;
+  if (&character == &scenario.character) return params;
+  const double speed = character.preferred_speed / scenario.character.preferred_speed;
+  const double duration = character.preferred_step_duration / scenario.character.preferred_step_duration;
+  for (Gait& gait : params.gaits) {
+    gait.speed *= speed;
+    gait.duration *= duration;
+  }
+  return params;
+}
+
+}  // namespace
+
 CharacterPlanners::Entry::Entry(const CharacterParams& character, const Scenario& scenario,
                                 const CollisionScene* scene)
-    : obstacles(scenario.obstacles, character.body_height),
+    : params(scaled_to(character, scenario)),
+      obstacles(scenario.obstacles, character.body_height),
       body(character),
       body_test(scene ? std::optional<StepBodyTest>(std::in_place, *scene, body,
                                                      scenario.planner.pose_rate)
                       : std::nullopt),
-      planner(character, scenario.planner, obstacles, body_test ? &*body_test : nullptr) {}
+      planner(character, params, obstacles, body_test ? &*body_test : nullptr) {}
 
 CharacterPlanners::CharacterPlanners(const Scenario& scenario, const CollisionScene* scene)
     : scenario_(&scenario) {

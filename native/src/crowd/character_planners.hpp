@@ -17,7 +17,10 @@ namespace footfall::detail {
 /// One planner per character object (the scenario's, and each distinct
 /// AgentSpec::character): its obstacles at the character's body height, its
 /// body model, with a `scene` its full-body step test, and the footstep
-/// planner. `scenario` and `scene` must outlive it.
+/// planner. An agent's own character walks the scenario's gaits scaled to
+/// it: speeds by its preferred speed over the scenario's, durations by its
+/// preferred step duration over the scenario's (a smaller character takes
+/// shorter, quicker steps). `scenario` and `scene` must outlive it.
 class CharacterPlanners {
  public:
   CharacterPlanners(const Scenario& scenario, const CollisionScene* scene);
@@ -31,6 +34,7 @@ class CharacterPlanners {
  private:
   struct Entry {
     Entry(const CharacterParams& character, const Scenario& scenario, const CollisionScene* scene);
+    PlannerParams params;
     ObstacleMap obstacles;
     BodyModel body;
     std::optional<StepBodyTest> body_test;

@@ -1,0 +1,95 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Which imported rig animates which agent, and the characters sized from
+the rigs.
+
+The scene's rig (the panel's Rig field, set by Import Rig; the only rig
+imported when none is chosen) animates every agent and sizes the
+scenario's character. An agent whose custom property "footfall_rig" names
+another imported rig is animated with that one, and walks with a character
+sized from it: its own `character` in the scenario.
+"""
+
+from typing import Dict, Optional
+
+import bpy
+
+from ..core.character import COM_ABOVE_HIPS, derive_parameters, with_rig
+from .rig_import import imported_rigs, profile_of
+from .scene_extract import AGENT_RIG, agent_empties
+
+SCENE_RIG = "footfall_rig"  # the scene's property: the rig chosen in the panel
+SIZE_TOLERANCE = 0.1  # a rig may stand this share taller or shorter than the character planned for
+
+
+class RigChoiceError(ValueError):
+    """No rig, or an unclear or unusable choice; the message says what to do."""
+
+
+def _names(rigs) -> str:
+    return ", ".join(sorted(r.name for r in rigs)) or "none"
+
+
+def scene_rig(scene, name: str = "") -> Optional[bpy.types.Object]:
+    """The rig named `name`, else the scene's chosen rig, else the only
+    imported one; None when no rig is imported."""
+    rigs = imported_rigs()
+    if name:
+        rig = bpy.data.objects.get(name)
+        if rig is None or rig not in rigs:
+            raise RigChoiceError(f"'{name}' is not a rig imported with Footfall's Import Rig (rigs: {_names(rigs)})")
+        return rig
+    chosen = getattr(scene, SCENE_RIG, None)
+    if chosen is not None and chosen in rigs:
+        return chosen
+    if len(rigs) > 1:
+        raise RigChoiceError(f"Several rigs are imported ({_names(rigs)}): choose the scene's rig in the Footfall "
+                             "panel (Rig)")
+    return rigs[0] if rigs else None
+
+
+def _agent_rig(agent: str, name: str) -> bpy.types.Object:
+    rig = bpy.data.objects.get(name)
+    if rig is None or rig not in imported_rigs():
+        raise RigChoiceError(f"Agent '{agent}': custom property '{AGENT_RIG}' names '{name}', which is not a rig "
+                             f"imported with Footfall's Import Rig (rigs: {_names(imported_rigs())})")
+    return rig
+
+
+def sized(document: dict, agent_rigs: Dict[str, str], rig: Optional[bpy.types.Object]) -> dict:
+    """The scenario document with its character sized from the scene's rig
+    (where the scene sets no value itself), and every agent with a rig of
+    its own walking with a character sized from that one (where the agent
+    sets no value itself)."""
+    result = with_rig(document, profile_of(rig).dimensions) if rig is not None else dict(document)
+    agents = []
+    for entry in result.get("agents", []):
+        own = agent_rigs.get(entry["name"])
+        if own is not None and (rig is None or own != rig.name):
+            derived, _planner = derive_parameters(profile_of(_agent_rig(entry["name"], own)).dimensions)
+            entry = {**entry, "character": {**derived, **entry.get("character", {})}}
+        agents.append(entry)
+    result["agents"] = agents
+    return result
+
+
+def rigs_of(scene, plan, rig: Optional[bpy.types.Object]) -> Dict[str, bpy.types.Object]:
+    """The rig of each agent of `plan`: its empty's "footfall_rig" in the
+    scene, else `rig`. Refuses an agent whose rig stands more than
+    SIZE_TOLERANCE taller or shorter than the character it was planned with."""
+    empties = agent_empties(scene)
+    result = {}
+    for agent in plan.agents:
+        empty = empties.get(agent.name)
+        own = empty.get(AGENT_RIG) if empty is not None else None
+        chosen = _agent_rig(agent.name, own) if own else rig
+        if chosen is None:
+            raise RigChoiceError("Import a rig first (Footfall > Import Rig)")
+        planned = (agent.character or plan.character).com_height
+        standing = COM_ABOVE_HIPS * profile_of(chosen).dimensions["hip_height"]
+        if abs(standing / planned - 1.0) > SIZE_TOLERANCE:
+            raise RigChoiceError(
+                f"Agent '{agent.name}': rig '{chosen.name}' stands {100 * (standing / planned - 1):+.0f} % off the "
+                f"character it was planned with (centre of mass {standing:.2f} m against {planned:.2f} m): plan "
+                "again with this rig chosen (the panel's Rig, or the agent's 'footfall_rig')")
+        result[agent.name] = chosen
+    return result
