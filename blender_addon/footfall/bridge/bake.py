@@ -9,7 +9,8 @@ bulk and converted a block of frames at a time.
 
 An armature hidden from renders at a frame (an agent that has left) is
 written there with its root bones scaled to zero: glTF viewers then draw
-nothing of it (Blender 3.4's exporter has no KHR_node_visibility).
+nothing of it (the exporters of Blender 3.4, 4.5 and 5.0 write no
+KHR_node_visibility).
 """
 
 from dataclasses import dataclass
