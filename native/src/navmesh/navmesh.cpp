@@ -220,15 +220,32 @@ void NavMeshState::repair_windings(const std::vector<Vertex>& seeds) {
   for (Face f : region)
     for (int i = 0; i < 3; ++i)
       if (f->neighbor(i)->info().winding != kPending) known.push_back(f->neighbor(i));
+  // Each face takes its number over the fewest constrained edges: first all
+  // it can reach across free edges (no step), then one constrained crossing
+  // from what is known, and so on. A constrained piece shared by nearly
+  // collinear outlines may miss one of them among its contexts (CGAL splits
+  // it at a rounded crossing); a free path round it is exact.
+  std::vector<Face> crossed;
   while (!known.empty()) {
-    const Face f = known.back();
-    known.pop_back();
-    for (int i = 0; i < 3; ++i) {
-      const Face n = f->neighbor(i);
-      if (n->info().winding != kPending) continue;
-      n->info().winding = f->info().winding + winding_step(f, i);
-      known.push_back(n);
+    for (std::size_t k = 0; k < known.size(); ++k) {
+      const Face f = known[k];
+      for (int i = 0; i < 3; ++i) {
+        const Face n = f->neighbor(i);
+        if (n->info().winding != kPending || f->is_constrained(i)) continue;
+        n->info().winding = f->info().winding;
+        known.push_back(n);
+      }
     }
+    crossed.clear();
+    for (const Face f : known) {
+      for (int i = 0; i < 3; ++i) {
+        const Face n = f->neighbor(i);
+        if (n->info().winding != kPending) continue;
+        n->info().winding = f->info().winding + winding_step(f, i);
+        crossed.push_back(n);
+      }
+    }
+    known.swap(crossed);
   }
 }
 

@@ -125,6 +125,27 @@ TEST(NavMesh, TouchingOverlappingAndNestedPolygons) {
   EXPECT_EQ(path(mesh, {1, 5}, {9, 5}, 0.0).status, PathStatus::kNoPath);  // the right one stays
 }
 
+// Found by fuzzing (fuzz_navmesh_updates): the first box's right edge crosses
+// the second's bottom edge at a rounded point beside the third's corner, and
+// the last box's left edge crosses both nearly collinear bottom edges. The
+// faces round the last box must get their windings from the free faces
+// beside them, not across a piece whose constraint contexts miss one.
+TEST(NavMesh, UpdatesBesideNearlyCollinearEdgesKeepFreeFacesFree) {
+  NavMesh mesh({0, 0}, {8, 8});
+  const int first = mesh.add_polygon(box({3, 6.5}, {4, 8}));
+  mesh.add_polygon(box({2.5, 7.5}, {4.5, 8.5}));
+  mesh.add_polygon(box({2.5, 7.5}, {4, 9.5}));
+  mesh.remove(first);
+  mesh.add_polygon(box({3.5, 6.5}, {4.5, 8}));
+  NavMesh rebuilt({0, 0}, {8, 8});
+  rebuilt.add_polygon(box({2.5, 7.5}, {4.5, 8.5}));
+  rebuilt.add_polygon(box({2.5, 7.5}, {4, 9.5}));
+  rebuilt.add_polygon(box({3.5, 6.5}, {4.5, 8}));
+  for (const Vec2 p : {Vec2{3.25, 7.25}, Vec2{4, 1}, Vec2{1, 1}, Vec2{6, 4}, Vec2{3.4, 7}})
+    EXPECT_NEAR(mesh.clearance(p), rebuilt.clearance(p), 1e-9) << p.x << ", " << p.y;
+  EXPECT_EQ(path(mesh, {1, 1}, {7, 1}, 0.2).status, PathStatus::kFound);
+}
+
 TEST(NavMesh, SelfIntersectingPolygonBlocksBothLobes) {
   NavMesh mesh({0, 0}, {10, 10});
   mesh.add_polygon({{2, 2}, {8, 8}, {8, 2}, {2, 8}});  // a bow tie
