@@ -391,6 +391,9 @@ def test_steersuite_case_loads():
     # SteerSuite's agents leave at their goal; the property says so and reads back.
     check(a.get("footfall_leave_at_goal") and b.get("footfall_leave_at_goal"), "leave_at_goal not set")
     check(all(agent.get("leave_at_goal") is True for agent in extract()["agents"]), "leave_at_goal not read back")
+    # Its goals' timeDuration (1000 s each) is each agent's time budget.
+    check(a.get("footfall_time_limit") == 1000.0, f"time limit {a.get('footfall_time_limit')}")
+    check(all(agent.get("time_limit") == 1000.0 for agent in extract()["agents"]), "time_limit not read back")
     b["footfall_leave_at_goal"] = "yes"
     try:
         extract()

@@ -14,7 +14,8 @@ count, hidden ones included:
   world XY and world rotation about Z; its child EMPTYs in that
   collection are its goals, by "footfall_goal_index", then by name; its
   custom properties "footfall_leave_at_goal" (true: it walks through its last
-  goal and leaves the scene there), "footfall_character" (JSON text:
+  goal and leaves the scene there), "footfall_time_limit" (its time budget
+  in seconds; the core checks the range), "footfall_character" (JSON text:
   overrides of the character for it alone) and "footfall_rig" (the name of
   the imported rig it is animated with, which sizes its character) are
   optional.
@@ -39,6 +40,7 @@ GOAL_INDEX = "footfall_goal_index"
 LEAVE_AT_GOAL = "footfall_leave_at_goal"
 AGENT_NAME = "footfall_agent_name"
 AGENT_CHARACTER = "footfall_character"
+TIME_LIMIT = "footfall_time_limit"
 AGENT_RIG = "footfall_rig"
 OVERRIDES = "footfall_overrides"
 OVERRIDE_KEYS = ("character", "planner")
@@ -158,6 +160,7 @@ def _agents(objects, depsgraph) -> List[AgentInput]:
             facing=math.atan2(world[1][0], world[0][0]),  # where the local X axis points
             leave_at_goal=_leaves(agent),
             character=_own_character(agent),
+            time_limit=_time_limit(agent),
         ))
     return agents
 
@@ -165,6 +168,16 @@ def _agents(objects, depsgraph) -> List[AgentInput]:
 def agent_empties(scene) -> Dict[str, object]:
     """The scene's agent empties by agent name."""
     return {agent_name(o): o for o in _agent_objects(_members(scene, AGENTS))}
+
+
+def _time_limit(agent):
+    value = agent.get(TIME_LIMIT)
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise SceneError(f"Agent '{agent.name}': custom property '{TIME_LIMIT}' must be a number of seconds, "
+                         f"got {value!r}")
+    return float(value)
 
 
 def _own_character(agent):

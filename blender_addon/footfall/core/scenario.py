@@ -19,8 +19,9 @@ Point = Tuple[float, float]
 class AgentInput:
     """One agent: name, standing position [m], goals [m], facing [rad] (None:
     toward the first goal), whether it walks through its last goal and
-    leaves the scene there (instead of coming to rest on it), and overrides
-    of the scenario's character for it alone (its own size, say)."""
+    leaves the scene there (instead of coming to rest on it), overrides of
+    the scenario's character for it alone (its own size, say), and its time
+    budget [s] (None: the planner's default, from max_time and its route)."""
 
     name: str
     position: Point
@@ -28,6 +29,7 @@ class AgentInput:
     facing: Optional[float] = None
     leave_at_goal: bool = False
     character: Optional[dict] = None
+    time_limit: Optional[float] = None
 
 
 @dataclass(frozen=True)
@@ -67,6 +69,8 @@ def scenario_document(scenario: ScenarioInput) -> dict:
             entry["leave_at_goal"] = True
         if agent.character:
             entry["character"] = dict(agent.character)
+        if agent.time_limit is not None:
+            entry["time_limit"] = float(agent.time_limit)
         agents.append(entry)
     document = {
         "format": "footfall-scenario",
@@ -88,7 +92,8 @@ def document_of(scenario) -> dict:
     """The document of a scenario the core has read (a native Scenario, as
     from a SteerSuite file), its agents and obstacles; parameters at their defaults."""
     return scenario_document(ScenarioInput(
-        agents=[AgentInput(a.name, a.position, a.goals, a.facing, a.leave_at_goal) for a in scenario.agents],
+        agents=[AgentInput(a.name, a.position, a.goals, a.facing, a.leave_at_goal, time_limit=a.time_limit or None)
+                for a in scenario.agents],
         obstacles=[ObstacleInput(o.polygon, o.height) for o in scenario.obstacles]))
 
 

@@ -53,6 +53,8 @@ namespace {
 
 void check_agent(const AgentSpec& agent) {
   if (agent.goals.empty()) throw std::invalid_argument("agent " + agent.name + ": has no goals");
+  if (!(agent.time_limit >= 0.0 && agent.time_limit <= kMaxTimeLimit))
+    throw std::invalid_argument("agent " + agent.name + ": time_limit must be in [0, 100000] s");
   if (!in_world(agent.position) || !std::isfinite(agent.facing)) {
     throw std::invalid_argument("agent " + agent.name +
                                 ": position and facing must be finite, within 1e9 m");
@@ -525,6 +527,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     w.plan.start = standing_state(agents[i].position, agents[i].facing, w.planner->character());
     w.state = w.plan.start;
     w.bounds = std::make_shared<const PlanBounds>(w.plan, w.planner->character());
+    w.deadline = time_limit_of(agents[i], w.planner->character(), params);
   }
   std::vector<PlanWalk> walks;
   for (const Walker& w : walkers) walks.emplace_back(w.plan);
@@ -591,16 +594,22 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     bool active = false;
     for (std::size_t i = 0; i < walkers.size(); ++i) {
       if (walkers[i].done || walkers[i].dormant) continue;
+      if (!in_flight[i] && t > walkers[i].deadline) {  // it stands where its plan ends
+        walkers[i].plan.reason = "time limit";
+        walkers[i].done = true;
+        touch(i);
+        continue;
+      }
       active = true;
       if (!in_flight[i] && walkers[i].state.time - t <= kReplanLead && t >= walkers[i].retry_at)
         due.push_back(i);
     }
     if (!active) break;  // none in flight either
     const bool cancelled = control.cancelled();
-    if (cancelled || t > params.max_time) {
+    if (cancelled) {
       if (pending) commit_tick(*pending);
       for (Walker& w : walkers)
-        if (!w.done && !w.dormant) w.plan.reason = cancelled ? "cancelled" : "time limit";
+        if (!w.done && !w.dormant) w.plan.reason = "cancelled";
       break;
     }
     if (!due.empty()) {
@@ -691,6 +700,20 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     plans.push_back(std::move(w.plan));
   }
   return plans;
+}
+
+double time_limit_of(const AgentSpec& agent, const CharacterParams& character,
+                     const PlannerParams& planner) {
+  if (agent.time_limit > 0.0) return agent.time_limit;
+  double route = 0.0;
+  Vec2 from = agent.position;
+  for (const Vec2 goal : agent.goals) {
+    route += distance(from, goal);
+    from = goal;
+  }
+  constexpr double kRouteSlack = 4.0;  // detours, queues and waits
+  return std::min(kMaxTimeLimit,
+                  std::max(planner.max_time, kRouteSlack * route / character.preferred_speed));
 }
 
 AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner, const NavMesh* mesh,

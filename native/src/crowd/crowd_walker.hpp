@@ -103,6 +103,8 @@ struct Walker {
   const AgentSpec* spec = nullptr;
   /// Its planner, made for its character.
   const FootstepPlanner* planner = nullptr;
+  /// Past this time it plans no more ("time limit"). [s]
+  double deadline = 0.0;
   /// Its sections (spec->sections), for its searches.
   std::shared_ptr<const SectionLookup> sections;
   /// Per goal, the annotated way to it from the goal before (or the start),

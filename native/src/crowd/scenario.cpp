@@ -94,6 +94,8 @@ void validate(const Scenario& scenario) {
       fail(child(path, "position"), "must be finite and within 1e9 m of the origin");
     if (!std::isfinite(agent.facing)) fail(child(path, "facing"), "must be finite");
     if (agent.goals.empty()) fail(child(path, "goals"), "needs at least one goal");
+    if (!(agent.time_limit >= 0.0 && agent.time_limit <= kMaxTimeLimit))
+      fail(child(path, "time_limit"), "must be in (0, 100000] s");
     const FootstepState standing = standing_state(agent.position, agent.facing, character);
     if (planners.planner(agent).validity().collides(standing)) {
       int hit = -1;

@@ -42,7 +42,8 @@ Scenario read_scenario(const Json& root) {
     for (size_t i = 0; i < agents.size(); ++i) {
       const std::string path = item("agents", i);
       expect_object(agents[i], path,
-                    {"name", "position", "facing", "goals", "leave_at_goal", "character"});
+                    {"name", "position", "facing", "goals", "leave_at_goal", "character",
+                     "time_limit"});
       AgentSpec agent;
       agent.name = agents[i].contains("name") ? string(agents[i]["name"], child(path, "name"))
                                               : "agent" + std::to_string(i);
@@ -59,6 +60,11 @@ Scenario read_scenario(const Json& root) {
       }
       if (agents[i].contains("leave_at_goal"))
         agent.leave_at_goal = boolean(agents[i]["leave_at_goal"], child(path, "leave_at_goal"));
+      if (agents[i].contains("time_limit")) {
+        agent.time_limit = number(agents[i]["time_limit"], child(path, "time_limit"));
+        if (!(agent.time_limit > 0.0 && agent.time_limit <= kMaxTimeLimit))
+          fail(child(path, "time_limit"), "must be in (0, 100000] s");
+      }
       scenario.agents.push_back(std::move(agent));
     }
   }

@@ -1,5 +1,6 @@
 #include "footfall/io/steersuite.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <optional>
@@ -209,10 +210,20 @@ class Reader {
     } else {
       agent.position = point(position, who + ": initialConditions.position");
     }
+    // Each goal's timeDuration adds to the agent's time budget; cases give
+    // absurd ones (3e33 s), which the longest limit caps.
+    double budget = 0.0;
+    bool timed = false;
     for (const pugi::xml_node& goal : node.child("goalSequence").children()) {
       const std::string type = goal.name();
       if (type != "seekStaticTarget")
         fail(who, "goal type " + user_text(type) + " is not supported (only seekStaticTarget)");
+      if (const pugi::xml_node duration = goal.child("timeDuration")) {
+        const double seconds = number(duration, who + ": goalSequence." + type + ".timeDuration");
+        if (seconds <= 0.0) fail(who + ": goalSequence." + type + ".timeDuration", "must be positive");
+        budget += seconds;
+        timed = true;
+      }
       const pugi::xml_node target = goal.child("targetLocation");
       if (is_random(goal) || is_random(target)) {
         Vec2 point_in;
@@ -226,6 +237,7 @@ class Reader {
       }
     }
     if (agent.goals.empty()) fail(who, "has no goals");
+    if (timed) agent.time_limit = std::min(budget, kMaxTimeLimit);
     agent.leave_at_goal = true;  // SteerSuite removes an agent that reaches its last goal
     scenario_.agents.push_back(std::move(agent));
     radii_.push_back(radius);

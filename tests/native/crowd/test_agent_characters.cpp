@@ -101,6 +101,38 @@ TEST(AgentCharacters, ABadOneIsNamedByItsAgent) {
   }
 }
 
+// Time budgets: an agent's own, or max_time stretched to its route.
+TEST(AgentTimeLimits, AnAgentWalksItsRouteOrItsOwnBudget) {
+  const Scenario scenario = parse_scenario(R"({
+    "format": "footfall-scenario", "version": 1,
+    "agents": [{"name": "far", "position": [0, 0], "goals": [[15, 0], [15, 15]]},
+               {"name": "hurried", "position": [0, 3], "goals": [[30, 3]], "time_limit": 6}],
+    "planner": {"max_time": 10}
+  })", "two.json");
+  // 30 m at the preferred 1.3 m/s is 23 s: four times that, not max_time's 10 s.
+  EXPECT_NEAR(time_limit_of(scenario.agents[0], scenario.character, scenario.planner),
+              4 * 30 / scenario.character.preferred_speed, 1e-9);
+  EXPECT_DOUBLE_EQ(time_limit_of(scenario.agents[1], scenario.character, scenario.planner), 6.0);
+  const Plan plan = plan_scenario(scenario);
+  EXPECT_EQ(plan.agents[0].status, AgentStatus::kReached) << plan.agents[0].reason;
+  EXPECT_GT(plan.agents[0].end_time(), 10.0);
+  EXPECT_EQ(plan.agents[1].status, AgentStatus::kPartial);
+  EXPECT_EQ(plan.agents[1].reason, "time limit");
+  // What it had committed by then (a search's reach at most), and its rest.
+  EXPECT_LT(plan.agents[1].end_time(), 6.0 + scenario.planner.local_goal_distance /
+                                                 scenario.character.preferred_speed +
+                                             scenario.planner.stop_duration);
+  EXPECT_LT(com_at(plan.agents[1], plan.agents[1].end_time()).position.x, 29.0);
+  try {
+    parse_scenario(R"({"format": "footfall-scenario", "version": 1,
+      "agents": [{"position": [0, 0], "goals": [[1, 0]], "time_limit": -1}]})", "bad.json");
+    FAIL() << "a negative time limit was accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("bad.json: agents[0].time_limit: must be in (0, 100000] s"),
+              std::string::npos) << error.what();
+  }
+}
+
 TEST(AgentCharacters, OnePlannerForAllRefusesAgentsOfTheirOwn) {
   const Scenario scenario = parse_scenario(kScenario, "three.json");
   const ObstacleMap obstacles(scenario.obstacles);

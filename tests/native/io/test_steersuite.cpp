@@ -95,6 +95,19 @@ TEST(SteerSuite, EveryCaseLoadsOrIsRefusedByName) {
   EXPECT_EQ(loaded, 27);  // every case but EXAMPLE.xml
 }
 
+TEST(SteerSuite, GoalDurationsAreTheAgentsTimeBudget) {
+  // 3-squeeze: 1000 s for each agent's one goal; circle-20 gives 3e33 s, capped.
+  for (const AgentSpec& agent : load_steersuite((kCases / "3-squeeze.xml").string()).agents)
+    EXPECT_DOUBLE_EQ(agent.time_limit, 1000.0 * static_cast<double>(agent.goals.size()));
+  for (const AgentSpec& agent : load_steersuite((kCases / "circle-20.xml").string()).agents)
+    EXPECT_DOUBLE_EQ(agent.time_limit, kMaxTimeLimit);
+  EXPECT_DOUBLE_EQ(parse_steersuite(test_case(kAgent), "case.xml").agents[0].time_limit, 0.0);
+  std::string timed = kAgent;
+  timed.insert(timed.find("</seekStaticTarget>"), "<timeDuration>-5</timeDuration>");
+  EXPECT_NE(error_of(test_case(timed)).find("timeDuration: must be positive"), std::string::npos)
+      << error_of(test_case(timed));
+}
+
 TEST(SteerSuite, RandomRegionsAreSeededAndFree) {
   if (!std::filesystem::is_directory(kCases)) GTEST_SKIP() << kCases << " is not there";
   const std::string path = (kCases / "bottleneck-evacuation.xml").string();

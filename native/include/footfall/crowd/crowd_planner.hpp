@@ -33,7 +33,16 @@ struct AgentSpec {
   /// Its own character (a scenario's per-agent `character`); null: the
   /// planner's. Its plan keeps it (AgentPlan::character).
   std::shared_ptr<const CharacterParams> character{};
+  /// Its time budget, (0, kMaxTimeLimit]; 0: time_limit_of()'s default. [s]
+  double time_limit = 0;
 };
+
+/// The simulated time an agent may walk: its own time_limit, else the
+/// planner's max_time or four times its route's walking time at the
+/// preferred speed (straight lines through its goals), whichever is longer,
+/// up to kMaxTimeLimit. [s]
+double time_limit_of(const AgentSpec& agent, const CharacterParams& character,
+                     const PlannerParams& planner);
 
 /// Lets a caller follow and stop a long run.
 struct RunControl {

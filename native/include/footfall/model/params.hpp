@@ -147,6 +147,10 @@ struct ParamTable<Gait> {
                       param("duration", &S::duration, "s", above_up_to(0, 5), "Step duration."));
 };
 
+/// The longest time limit an agent can have (PlannerParams::max_time, an
+/// agent's own time_limit). [s]
+constexpr double kMaxTimeLimit = 1e5;
+
 /// The short-horizon best-first footstep planner (section 4).
 /// Fields: ParamTable<PlannerParams>.
 struct PlannerParams {
@@ -189,8 +193,10 @@ struct ParamTable<PlannerParams> {
             "The goal is reached when the COM is this close."),
       param("local_goal_distance", &S::local_goal_distance, "m", closed(1, 1000),
             "Each search aims at most this far along the way."),
-      param("max_time", &S::max_time, "s", above_up_to(0, 100000),
-            "Simulated time limit per agent."),
+      param("max_time", &S::max_time, "s", above_up_to(0, kMaxTimeLimit),
+            "Simulated time limit of an agent without a time_limit of its own, at least: one "
+            "whose route (through its goals, in straight lines) takes longer than a quarter of "
+            "it at the preferred speed gets four times that walking time (up to 100000 s)."),
       param("stop_duration", &S::stop_duration, "s", above_up_to(0, 5),
             "Duration of a stop (or wait) step."),
       param("collision_sample_spacing", &S::collision_sample_spacing, "m", closed(0.005, 0.05),
