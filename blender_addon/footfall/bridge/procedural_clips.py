@@ -14,6 +14,8 @@ from . import action_curves
 CYCLE_FRAMES = {"walk": 24, "arms_in": 24, "side_step": 24, "idle": 48}
 SWING = math.radians(20)  # arm swing each way while walking
 SAMPLES = 8  # keys per cycle
+PROCEDURAL_FOR = "footfall_procedural_for"  # the rig a procedural clip was made for
+PROCEDURAL_BEHAVIOR = "footfall_procedural_behavior"
 
 
 def _key(action, bone: str, frame: float, quaternion) -> None:
@@ -30,11 +32,14 @@ def _basis(rest: Matrix, world_rotation: Matrix):
 
 
 def make(behavior: str, armature, profile) -> bpy.types.Action:
-    """A cyclic upper-body action for `behavior`, named 'footfall procedural BEHAVIOR'."""
-    name = f"footfall procedural {behavior}"
-    if name in bpy.data.actions:
-        return bpy.data.actions[name]
-    action = bpy.data.actions.new(name)
+    """A cyclic upper-body action for `behavior` on `armature`'s bones,
+    named 'footfall procedural BEHAVIOR for ARMATURE'; made once per rig
+    (the property PROCEDURAL_FOR names the rig: a long name is cut short)."""
+    for action in bpy.data.actions:
+        if action.get(PROCEDURAL_FOR) == armature.name and action.get(PROCEDURAL_BEHAVIOR) == behavior:
+            return action
+    action = bpy.data.actions.new(f"footfall procedural {behavior} for {armature.name}")
+    action[PROCEDURAL_FOR], action[PROCEDURAL_BEHAVIOR] = armature.name, behavior
     cycle = CYCLE_FRAMES[behavior]
     bones = armature.data.bones
     forward = Vector((0.0, 0.0, 0.0))
