@@ -252,6 +252,18 @@ def test_plan_is_stored_and_saved_with_the_file():
     check([a.name for a in plan_store.load_plan().agents] == ["alice", "bob"], "reopened plan")
 
 
+def test_the_plan_names_those_that_did_not_arrive():
+    """An agent out of time is named, with its reason, in the report and on the panel."""
+    from footfall.bridge import plan_store
+
+    fresh_scene()
+    load_good_scenario()
+    bpy.data.objects["bob"]["footfall_time_limit"] = 0.5
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan did not finish")
+    said = bpy.context.scene[plan_store.OUTCOME]
+    check(said == "1/2 agents reached their goals; not there: 'bob' (time limit)", said)
+
+
 def plain_value(value):
     return value.to_dict() if hasattr(value, "to_dict") else value.to_list() if hasattr(value, "to_list") else value
 
@@ -403,5 +415,6 @@ def test_steersuite_case_loads():
 
 
 run([test_load_builds_the_conventions_and_extracts_back, test_hand_made_agents_and_obstacles_are_extracted,
-     test_plan_is_stored_and_saved_with_the_file, test_errors_leave_the_scene_as_it_was,
+     test_plan_is_stored_and_saved_with_the_file, test_the_plan_names_those_that_did_not_arrive,
+     test_errors_leave_the_scene_as_it_was,
      test_failing_operators_report_and_cancel, test_steersuite_case_loads])

@@ -10,6 +10,7 @@ import bpy
 from ..core import native
 
 TEXT_NAME = "footfall_plan.json"
+OUTCOME = "footfall_plan_outcome"  # the scene's property: what the last Plan reached, for the panel
 
 
 def store(text: str) -> None:

@@ -26,6 +26,11 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
         self.layout.label(text=native.status())
         self.layout.operator("footfall.load_scenario", icon="FILE_FOLDER")
         self.layout.operator("footfall.plan", icon="TRACKING")
+        from ..bridge.plan_store import OUTCOME
+
+        if OUTCOME in context.scene:
+            for line in context.scene[OUTCOME].split("; "):
+                self.layout.label(text=line)
         self.layout.operator("footfall.import_rig", icon="ARMATURE_DATA")
         self.layout.prop(context.scene, "footfall_rig")
         active = context.active_object

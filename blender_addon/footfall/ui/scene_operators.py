@@ -75,13 +75,16 @@ class FOOTFALL_OT_plan(bpy.types.Operator):
             result, seconds = _plan_scene(context)
         except (ValueError, native.CoreMissingError) as error:
             return report_and_cancel(self, error)
+        from ..core.plan_report import outcome
+
         ff = native.load()
         plan_store.store(ff.plan_to_json(result))
-        reached = sum(agent.status == ff.AgentStatus.REACHED for agent in result.agents)
+        said = outcome([(a.name, a.status == ff.AgentStatus.REACHED, a.reason) for a in result.agents])
+        context.scene[plan_store.OUTCOME] = said
         steps = sum(len(agent.footsteps) for agent in result.agents)
-        level = "INFO" if reached == len(result.agents) else "WARNING"
-        self.report({level}, f"{reached}/{len(result.agents)} agents reached their goals, {steps} footsteps, "
-                             f"planned in {seconds:.2f} s; stored in the Text '{plan_store.TEXT_NAME}'")
+        level = "INFO" if all(a.status == ff.AgentStatus.REACHED for a in result.agents) else "WARNING"
+        self.report({level}, f"{said}; {steps} footsteps, planned in {seconds:.2f} s; stored in the Text "
+                             f"'{plan_store.TEXT_NAME}'")
         return {"FINISHED"}
 
 

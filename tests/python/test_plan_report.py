@@ -1,0 +1,19 @@
+"""The plan's outcome as the Plan operator and the panel report it."""
+
+from footfall.core.plan_report import NAMED, outcome
+
+
+def test_all_reached_is_one_count():
+    assert outcome([("a", True, ""), ("b", True, "")]) == "2/2 agents reached their goals"
+
+
+def test_those_not_there_are_named_with_their_reason():
+    text = outcome([("ann", True, ""), ("kid", False, "stuck"), ("bob", False, "time limit")])
+    assert text == "1/3 agents reached their goals; not there: 'kid' (stuck), 'bob' (time limit)"
+
+
+def test_a_long_list_is_cut_short_and_counted():
+    agents = [(f"agent{i}", False, "stuck") for i in range(NAMED + 3)]
+    text = outcome(agents)
+    assert text.count("(stuck)") == NAMED and text.endswith("and 3 more")
+    assert text.startswith(f"0/{NAMED + 3} agents")
