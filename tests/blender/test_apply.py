@@ -15,6 +15,7 @@ import bpy  # first: as a Python module, bpy puts Blender's own modules on the p
 import addon_utils  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from foot_contact import FootRest  # noqa: E402
 from harness import check, run  # noqa: E402
 import mathutils
 import numpy
@@ -72,11 +73,11 @@ def evaluated(name):
 
 
 def plan_errors(ff, plan):
-    """The farthest any planted foot bone's head is from the plan, and the
-    hips from the COM, in the world at every frame: (foot, pelvis, stance samples)."""
+    """The farthest any planted foot's contact point (heel, ankle or ball, as
+    it rolls) is from the plan, and the hips from the COM, in the world at
+    every frame: (foot, pelvis, stance samples)."""
     rig, profile = imported_rig()
-    world_rest = {side: rig.matrix_world @ rig.data.bones[profile.bones[side]["foot"]].head_local
-                  for side in ("left", "right")}
+    feet = {side: FootRest(rig, profile, side) for side in ("left", "right")}
     scene = bpy.context.scene
     fps = scene.render.fps / scene.render.fps_base
     worst_foot, worst_pelvis, stance_frames = 0.0, 0.0, 0
@@ -90,9 +91,7 @@ def plan_errors(ff, plan):
                 if not pose.planted:
                     continue
                 stance_frames += 1
-                head = world @ armature.pose.bones[profile.bones[side]["foot"]].head
-                planned = (pose.position[0], pose.position[1], world_rest[side].z)
-                worst_foot = max(worst_foot, math.dist(tuple(head), planned))
+                worst_foot = max(worst_foot, feet[side].error(armature, pose))
             hips = world @ armature.pose.bones[profile.bones["hips"]].head
             worst_pelvis = max(worst_pelvis, math.dist(hips.xy, ff.com_at(agent, t).position))
     print(f"stance samples {stance_frames}, worst foot error {worst_foot * 1000:.2f} mm, "
@@ -106,6 +105,54 @@ def test_feet_and_pelvis_follow_the_plan():
     check(stance_frames > 300, f"only {stance_frames} stance samples")
     check(worst_foot <= 0.002, f"a planted foot is {worst_foot * 1000:.2f} mm off the plan")
     check(worst_pelvis <= 0.02, f"the pelvis is {worst_pelvis * 100:.2f} cm off the COM")
+
+
+def test_feet_roll_from_heel_to_toe():
+    """At full speed a foot strikes with its toes up, is flat in mid-stance,
+    and leaves with its heel up and its toes bent (footfall.core.foot_roll)."""
+    from footfall.core import foot_roll
+
+    ff, plan, path = applied(doorway_plan)
+    rig, profile = imported_rig()
+    scene = bpy.context.scene
+    fps = scene.render.fps / scene.render.fps_base
+    agent = plan.agents[0]
+
+    def angles(step, u):
+        """The foot's pitch and the toe's bend from rest [deg], a share u into `step`."""
+        t = step.start_time + u * (step.end_time - step.start_time)
+        frame = scene.frame_start + t * fps
+        scene.frame_set(int(frame), subframe=frame % 1)
+        armature = evaluated(agent.name)
+        side = step.foot.name.lower()
+        found = []
+        for data in (rig.data, None):
+            bones = {r: (data.bones[profile.bones[side][r]] if data else armature.pose.bones[profile.bones[side][r]])
+                     for r in ("foot", "toe")}
+            world = rig.matrix_world if data else armature.matrix_world
+            ends = {r: (world @ (b.head_local if data else b.head), world @ (b.tail_local if data else b.tail))
+                    for r, b in bones.items()}
+            foot, toe = (ends[r][1] - ends[r][0] for r in ("foot", "toe"))
+            found.append((math.atan2(foot.z, foot.xy.length), foot.angle(toe)))
+        (pitch, bend), (rest_pitch, rest_bend) = found[1], found[0]
+        return math.degrees(pitch - rest_pitch), math.degrees(bend - rest_bend)
+
+    walks = [s for s in agent.footsteps if s.kind == ff.StepKind.WALK]
+    checked = 0
+    for before, step, after in zip(walks, walks[1:], walks[2:]):
+        full = math.dist(step.com_start, step.com_end) / (step.end_time - step.start_time) >= 1.2
+        if not full or before.end_time != step.start_time or after.start_time != step.end_time:
+            continue
+        strike, _ = angles(step, 0.02)
+        flat, flat_bend = angles(step, 0.4)
+        off, off_bend = angles(step, 0.98)
+        print(f"step at {step.start_time:.2f} s: pitch {strike:.1f} / {flat:.1f} / {off:.1f} deg, toe bend {off_bend:.1f}")
+        check(strike > 0.6 * math.degrees(foot_roll.HEEL_STRIKE), f"toes not up at heel strike: {strike:.1f} deg")
+        check(abs(flat) < 0.5 and abs(flat_bend) < 0.5, f"not flat in mid-stance: {flat:.1f}, {flat_bend:.1f} deg")
+        check(off < -0.6 * math.degrees(foot_roll.TOE_OFF), f"heel not up at toe-off: {off:.1f} deg")
+        check(abs(off_bend + off) < 1.0, f"the toe does not stay flat: bent {off_bend:.1f} deg at {off:.1f} deg")
+        checked += 1
+    check(checked >= 3, f"only {checked} full-speed steps checked")
 
 
 def test_arms_swing_opposite_to_the_legs():
@@ -620,7 +667,7 @@ def test_a_leaving_agent_walks_off_and_disappears():
     check(numpy.all(values[times <= leo.end_time()] > 0.5), "leo is scaled down before leaving")
 
 
-run([test_feet_and_pelvis_follow_the_plan, test_arms_swing_opposite_to_the_legs, test_behaviours_play_their_clips,
+run([test_feet_and_pelvis_follow_the_plan, test_feet_roll_from_heel_to_toe, test_arms_swing_opposite_to_the_legs, test_behaviours_play_their_clips,
      test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was,
      test_applying_again_replaces_the_crowd, test_a_crowd_with_short_waits_applies,
      test_a_sheared_pose_is_refused_by_name, test_a_leaving_agent_walks_off_and_disappears,

@@ -18,6 +18,7 @@ import addon_utils  # noqa: E402
 import numpy  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from foot_contact import FootRest  # noqa: E402
 from harness import check, run  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -96,6 +97,8 @@ def test_each_agent_walks_with_its_own_rig():
     scene = bpy.context.scene
     fps = scene.render.fps / scene.render.fps_base
     rig_of = {"ann": tall, "kid": small, "bob": tall}
+    feet = {(rig.name, side): FootRest(rig, rig_import.profile_of(rig), side)
+            for rig in (tall, small) for side in ("left", "right")}
     worst, stance = 0.0, 0
     for frame in range(scene.frame_start, scene.frame_end + 1, 2):
         scene.frame_set(frame)
@@ -104,16 +107,11 @@ def test_each_agent_walks_with_its_own_rig():
 
         ff = native.load()
         for name, agent in agents.items():
-            rig = rig_of[name]
-            profile = rig_import.profile_of(rig)
             armature = bpy.data.objects[name].evaluated_get(bpy.context.evaluated_depsgraph_get())
             for side, pose in zip(("left", "right"), ff.feet_at(agent, t)):
-                if not pose.planted:
-                    continue
-                rest = rig.matrix_world @ rig.data.bones[profile.bones[side]["foot"]].head_local
-                head = armature.matrix_world @ armature.pose.bones[profile.bones[side]["foot"]].head
-                worst = max(worst, math.dist(tuple(head), (*pose.position, rest.z)))
-                stance += 1
+                if pose.planted:
+                    worst = max(worst, feet[rig_of[name].name, side].error(armature, pose))
+                    stance += 1
     print(f"{stance} stance samples, feet at most {worst * 1000:.2f} mm off the plan")
     check(stance > 100 and worst <= 0.002, f"feet {worst * 1000:.2f} mm off the plan")
     kid_hips = bpy.data.objects["kid"].data.bones[rig_import.profile_of(small).bones["hips"]].head_local.z

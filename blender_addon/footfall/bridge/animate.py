@@ -10,8 +10,9 @@ agent keys, at every frame, the hips on the planned COM path and the foot
 targets on the planned feet; the upper body plays the rig's clips as NLA
 strips, one per section of the path (clip_timing).
 
-Every planned foot position is the point on the ground under the ankle; the
-ankle stays at its rest height while the foot is planted.
+Every planned foot position is the point on the ground under the ankle with
+the foot flat; the foot rolls heel to toe about it (core/foot_roll.py), and
+the toe bends as the heel rises.
 """
 
 import math
@@ -22,9 +23,9 @@ import bpy
 import numpy
 from mathutils import Matrix, Vector
 
-from ..core import clip_cycle, clip_timing
+from ..core import clip_cycle, clip_timing, foot_roll
 from . import action_curves, procedural_clips, rig_clips
-from .rig_import import profile_of
+from .rig_import import foot_points, profile_of
 
 IK_FOOT = "footfall_ik_foot.{}"
 POLE = "footfall_pole.{}"
@@ -41,12 +42,15 @@ class _Leg:
     foot: str
     shin: str
     thigh: str
+    toe: str
     foot_rest: Matrix  # armature space
     pole_rest: Matrix
+    toe_rest: Matrix
     thigh_head: Vector
     ankle: Vector
     knee: Vector
     length: float  # hip to knee to ankle
+    shape: foot_roll.FootShape  # the foot seen from the side, for its roll
 
 
 @dataclass
@@ -129,19 +133,25 @@ def _template(rig, profile) -> bpy.types.Armature:
     return data
 
 
-def rig_rest(data, profile) -> RigRest:
-    """Rest geometry of a template armature (one with the IK bones)."""
+def rig_rest(data, profile, feet=None) -> RigRest:
+    """Rest geometry of a template armature (one with the IK bones); `feet`
+    (side -> world positions of the vertices skinned to its foot and toe)
+    place the heels."""
     bones = profile.bones
     rest = RigRest(bones["hips"], data.bones[bones["hips"]].matrix_local.copy(), _forward_yaw(data, bones))
+    forward = Vector((math.cos(rest.forward_yaw), math.sin(rest.forward_yaw), 0.0))
     for side, suffix in SIDES:
         limb = bones[side]
-        thigh, shin, foot = (data.bones[limb[r]] for r in ("thigh", "shin", "foot"))
+        thigh, shin, foot, toe = (data.bones[limb[r]] for r in ("thigh", "shin", "foot", "toe"))
         rest.legs[side] = _Leg(
-            foot=limb["foot"], shin=limb["shin"], thigh=limb["thigh"],
+            foot=limb["foot"], shin=limb["shin"], thigh=limb["thigh"], toe=limb["toe"],
             foot_rest=foot.matrix_local.copy(),
             pole_rest=data.bones[POLE.format(suffix)].matrix_local.copy(),
+            toe_rest=toe.matrix_local.copy(),
             thigh_head=thigh.head_local.copy(), ankle=foot.head_local.copy(), knee=shin.head_local.copy(),
             length=(shin.head_local - thigh.head_local).length + (foot.head_local - shin.head_local).length,
+            shape=foot_roll.foot_shape(foot.head_local, toe.head_local, forward, profile.dimensions["foot_length"],
+                                       (feet or {}).get(side, ())),
         )
     return rest
 
@@ -175,9 +185,12 @@ def deformed_copy(mesh, armature, collection) -> bpy.types.Object:
 
 
 def _add_controls(armature, rest: RigRest) -> None:
-    """The shins reach for the foot targets (IK with a knee pole); the feet copy their rotation."""
+    """The shins reach for the foot targets (IK with a knee pole); the feet
+    copy their rotation. The bones keyed by quaternion turn by quaternion."""
+    armature.pose.bones[rest.hips].rotation_mode = "QUATERNION"
     for side, suffix in SIDES:
         leg = rest.legs[side]
+        armature.pose.bones[leg.toe].rotation_mode = "QUATERNION"
         ik = armature.pose.bones[leg.shin].constraints.new("IK")
         ik.target, ik.subtarget = armature, IK_FOOT.format(suffix)
         ik.pole_target, ik.pole_subtarget = armature, POLE.format(suffix)
@@ -185,6 +198,22 @@ def _add_controls(armature, rest: RigRest) -> None:
         ik.chain_count = 2
         copy = armature.pose.bones[leg.foot].constraints.new("COPY_ROTATION")
         copy.target, copy.subtarget = armature, IK_FOOT.format(suffix)
+
+
+def _quaternion_product(a, b):
+    """Row-wise products of (n, 4) quaternions (w, x, y, z)."""
+    aw, ax, ay, az = a.T
+    bw, bx, by, bz = b.T
+    return numpy.column_stack((aw * bw - ax * bx - ay * by - az * bz, aw * bx + ax * bw + ay * bz - az * by,
+                               aw * by - ax * bz + ay * bw + az * bx, aw * bz + ax * by - ay * bx + az * bw))
+
+
+def _turns(rest: Matrix, axis, angles):
+    """Pose quaternions of a bone (parents at rest) turning it by `angles`
+    about the armature-space `axis`: about R^T axis in the bone's frame."""
+    local = numpy.array(rest.to_3x3()).T @ numpy.asarray(axis, dtype=float)
+    half = 0.5 * angles
+    return numpy.column_stack((numpy.cos(half), numpy.outer(numpy.sin(half), local)))
 
 
 def _pose_arrays(rest: Matrix, positions, yaws=None):
@@ -235,8 +264,18 @@ def _facings(feet_yaw, steps, step_index):
     return numpy.where((step_index >= 0) & side_step[index], across, between)
 
 
-def _locomotion(ff, agent, rest: RigRest, frames, frame_offset: float, fps: float):
-    """Channels of the hips on the COM path, the foot targets on the feet and
+def _step_arrays(ff, steps) -> foot_roll.Steps:
+    start = numpy.array([s.start_time for s in steps])
+    end = numpy.array([s.end_time for s in steps])
+    chord = numpy.array([math.dist(s.com_start, s.com_end) for s in steps])
+    return foot_roll.Steps(start, end, numpy.array([0 if s.foot == ff.Foot.LEFT else 1 for s in steps]),
+                           numpy.array([s.kind == ff.StepKind.WALK for s in steps], dtype=bool),
+                           chord / numpy.maximum(end - start, 1e-9))
+
+
+def _locomotion(ff, agent, rest: RigRest, frames, frame_offset: float, fps: float, full_speed: float):
+    """Channels of the hips on the COM path, the foot targets on the feet
+    (rolling heel to toe: foot_roll, the toes bending as the heels rise) and
     the poles ahead of the knees, at every frame; after its plan the agent
     holds its last pose (one that leaves is hidden then, _key_leaving)."""
     times = numpy.minimum((frames - frame_offset) / fps, agent.end_time())
@@ -245,13 +284,17 @@ def _locomotion(ff, agent, rest: RigRest, frames, frame_offset: float, fps: floa
     feet_xy = numpy.empty((count, 2, 2))
     feet_yaw = numpy.empty((count, 2))
     lift = numpy.empty((count, 2))
+    planted = numpy.empty((count, 2), dtype=bool)
     for i, t in enumerate(times):
         com[i] = ff.com_at(agent, t).position
         for side, foot in enumerate(ff.feet_at(agent, t)):
             feet_xy[i, side] = foot.position
             feet_yaw[i, side] = foot.orientation
             lift[i, side] = foot.lift
+            planted[i, side] = foot.planted
     steps = agent.footsteps
+    step_arrays = _step_arrays(ff, steps)
+    lateral = numpy.cross([math.cos(rest.forward_yaw), math.sin(rest.forward_yaw), 0.0], [0.0, 0.0, 1.0])
     step_index = numpy.searchsorted([s.start_time for s in steps], times, side="right") - 1
     body_yaw = numpy.unwrap(_facings(feet_yaw, steps, step_index)) - rest.forward_yaw
     hips_head = numpy.array(rest.hips_rest.to_translation())
@@ -261,16 +304,23 @@ def _locomotion(ff, agent, rest: RigRest, frames, frame_offset: float, fps: floa
     channels = {}
     for side, (name, suffix) in enumerate(SIDES):
         leg = rest.legs[name]
-        ankles = numpy.column_stack((feet_xy[:, side], leg.ankle.z + lift[:, side]))
+        flat = numpy.column_stack((feet_xy[:, side], leg.ankle.z + lift[:, side]))
+        pitch, forward, up = foot_roll.roll(times, planted[:, side], side, step_arrays, leg.shape, full_speed)
+        ankles = flat + numpy.column_stack((forward * numpy.cos(feet_yaw[:, side]),
+                                            forward * numpy.sin(feet_yaw[:, side]), up))
         offset = numpy.array(leg.thigh_head) - hips_head
         hip_xy = com + numpy.column_stack((cos * offset[0] - sin * offset[1], sin * offset[0] + cos * offset[1]))
         horizontal = numpy.linalg.norm(hip_xy - ankles[:, :2], axis=1)
         rise = numpy.sqrt(numpy.maximum((REACH * leg.length) ** 2 - horizontal ** 2, 0.0))
         height = numpy.minimum(height, ankles[:, 2] + rise - offset[2])
         foot_yaw = numpy.unwrap(feet_yaw[:, side]) - rest.forward_yaw
-        channels[IK_FOOT.format(suffix)] = _pose_arrays(leg.foot_rest, ankles, foot_yaw)
+        locations, yawed = _pose_arrays(leg.foot_rest, ankles, foot_yaw)
+        # Pitched about the rest's side axis first, then turned to the foot's yaw.
+        channels[IK_FOOT.format(suffix)] = (locations, _quaternion_product(
+            yawed, _turns(leg.foot_rest, lateral, pitch)))
+        channels[leg.toe] = (None, _turns(leg.toe_rest, lateral, -numpy.minimum(pitch, 0.0)))
         ahead = numpy.array(leg.pole_rest.to_translation() - leg.ankle)  # the pole, seen from the ankle
-        poles = ankles + numpy.column_stack((numpy.cos(foot_yaw) * ahead[0] - numpy.sin(foot_yaw) * ahead[1],
+        poles = flat + numpy.column_stack((numpy.cos(foot_yaw) * ahead[0] - numpy.sin(foot_yaw) * ahead[1],
                                              numpy.sin(foot_yaw) * ahead[0] + numpy.cos(foot_yaw) * ahead[1],
                                              numpy.full(count, ahead[2])))
         channels[POLE.format(suffix)] = _pose_arrays(leg.pole_rest, poles)
@@ -380,7 +430,8 @@ class _Character:
 def _character(rig) -> _Character:
     profile = profile_of(rig)
     template = _template(rig, profile)
-    return _Character(rig, template, rig_rest(template, profile), clips_of(rig, profile))
+    rest = rig_rest(template, profile, foot_points(rig, profile.bones))
+    return _Character(rig, template, rest, clips_of(rig, profile))
 
 
 def apply_plan(ff, plan, rigs: Dict[str, bpy.types.Object], scene,
@@ -408,8 +459,9 @@ def apply_plan(ff, plan, rigs: Dict[str, bpy.types.Object], scene,
     bpy.context.view_layer.update()  # new armature objects get their poses here, all at once
     for i, (agent, armature, character) in enumerate(zip(plan.agents, armatures, cast)):
         _add_controls(armature, character.rest)
+        walker = agent.character or plan.character
         _write_action(armature, f"{agent.name} locomotion", frames,
-                      _locomotion(ff, agent, character.rest, frames, frame_offset, fps))
+                      _locomotion(ff, agent, character.rest, frames, frame_offset, fps, walker.preferred_speed))
         _upper_body(armature, agent, character.clips, fps, frame_offset, last_frame)
         _key_leaving(armature, agent, frame_offset, fps)
         if progress:

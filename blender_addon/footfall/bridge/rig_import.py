@@ -91,7 +91,7 @@ def _bone_map(armature, given: Dict[str, object], rig: str):
     return mapping, notes
 
 
-def _foot_points(armature, bones: Dict[str, object]) -> Dict[str, list]:
+def foot_points(armature, bones: Dict[str, object]) -> Dict[str, list]:
     """Rest positions of the vertices skinned (weight >= 0.5) to each side's
     foot or toe bone, over every mesh the armature deforms."""
     points = {"left": [], "right": []}
@@ -170,7 +170,7 @@ def import_rig(filepath: str = "", mapping: Optional[Dict[str, object]] = None,
         world = rig.matrix_world
         heads = {b.name: tuple(world @ b.head_local) for b in rig.data.bones}
         tails = {b.name: tuple(world @ b.tail_local) for b in rig.data.bones}
-        dimensions = rig_measure.measure(bones, heads, tails, _foot_points(rig, bones))
+        dimensions = rig_measure.measure(bones, heads, tails, foot_points(rig, bones))
         actions = datablocks.new_since(before, "actions") if filepath else rig_clips.actions_of(rig)
         clips, clip_notes = rig_clips.choose(rig, bones, given.clips, actions, source)
         notes += clip_notes

@@ -1,0 +1,81 @@
+"""Heel-toe roll: the point a foot rolls on stays put, the pitch is
+continuous through stance and swing, and starts and stops stay flat."""
+
+import math
+
+import numpy
+import pytest
+
+from footfall.core import foot_roll
+from footfall.core.foot_roll import FootShape, Steps
+
+SHAPE = FootShape(ankle_height=0.085, heel_back=0.065, ball_ahead=0.135, ball_height=0.025)
+
+
+def turned(point, pitch):
+    c, s = math.cos(pitch), math.sin(pitch)
+    return numpy.array([c * point[0] - s * point[1], s * point[0] + c * point[1]])
+
+
+@pytest.mark.parametrize("pitch", [math.radians(15), math.radians(4), math.radians(-30), math.radians(-9)])
+def test_the_foot_turns_on_its_heel_or_its_ball(pitch):
+    forward, up = SHAPE.offset(numpy.array([pitch]))
+    ankle = numpy.array([0.0, SHAPE.ankle_height])
+    moved = ankle + [forward[0], up[0]]
+    heel, ball = numpy.array([-SHAPE.heel_back, 0.0]), numpy.array([SHAPE.ball_ahead, SHAPE.ball_height])
+    pivot = heel if pitch > 0 else ball
+    # The foot turned by the pitch about its ankle's new place leaves the pivot where it was.
+    assert moved + turned(pivot - ankle, pitch) == pytest.approx(pivot, abs=1e-12)
+
+
+def walk(count, duration=0.5, speed=1.3, stops=()):
+    start = numpy.arange(count) * duration
+    walking = numpy.array([k not in stops for k in range(count)])
+    return Steps(start, start + duration, numpy.arange(count) % 2, walking, numpy.where(walking, speed, 0.0))
+
+
+def planted_for(times, steps, side):
+    """As the plan has it: the foot of the step under way is planted, the other swings."""
+    k = numpy.clip(numpy.searchsorted(steps.start, times, side="right") - 1, 0, len(steps.start) - 1)
+    return (steps.foot[k] == side) | ~steps.walk[k]
+
+
+def test_the_roll_is_continuous_and_reaches_its_amplitudes():
+    steps = walk(8)
+    times = numpy.linspace(0.0, 4.0, 8001)
+    for side in (0, 1):
+        pitch, forward, up = foot_roll.roll(times, planted_for(times, steps, side), side, steps, SHAPE, 1.3)
+        for values in (pitch, forward, up):
+            assert numpy.max(numpy.abs(numpy.diff(values))) < 0.01  # no jumps between samples 0.5 ms apart
+        assert pitch.max() == pytest.approx(foot_roll.HEEL_STRIKE, rel=1e-3)
+        assert pitch.min() == pytest.approx(-foot_roll.TOE_OFF, rel=1e-3)
+        mid_stance = (steps.start + 0.4 * 0.5)[steps.foot == side]
+        assert numpy.interp(mid_stance, times, pitch) == pytest.approx(0.0, abs=1e-12)
+
+
+def test_starts_and_stops_stay_flat():
+    steps = walk(6, stops=(5,))
+    times = numpy.linspace(0.0, 3.0, 3001)
+    for side in (0, 1):
+        pitch, _, _ = foot_roll.roll(times, planted_for(times, steps, side), side, steps, SHAPE, 1.3)
+        assert pitch[0] == 0.0  # from standing: the swinging foot only starts to raise its toes
+        if side == 0:  # the first step's own foot: no heel strike, flat until its heel rises
+            assert pitch[times < 0.6 * 0.5] == pytest.approx(0.0)
+        assert pitch[times >= 2.5] == pytest.approx(0.0)  # the stop, and the walking step before its end
+        assert abs(pitch[numpy.searchsorted(times, 2.49)]) < math.radians(2)
+
+
+def test_a_slow_step_rolls_less():
+    fast, slow = walk(6), walk(6, speed=0.65)
+    times = numpy.linspace(0.0, 3.0, 3001)
+    pitch_fast, _, _ = foot_roll.roll(times, planted_for(times, fast, 0), 0, fast, SHAPE, 1.3)
+    pitch_slow, _, _ = foot_roll.roll(times, planted_for(times, slow, 0), 0, slow, SHAPE, 1.3)
+    assert pitch_slow.min() == pytest.approx(0.5 * pitch_fast.min(), rel=1e-3)
+
+
+def test_the_heel_comes_from_the_mesh_or_the_foots_length():
+    ankle, ball, forward = (0.0, 0.0, 0.08), (0.13, 0.0, 0.02), (1.0, 0.0, 0.0)
+    mesh = [(-0.06, 0.02, 0.0), (0.2, 0.0, 0.0), (0.05, -0.03, 0.1)]
+    assert foot_roll.foot_shape(ankle, ball, forward, 0.26, mesh).heel_back == pytest.approx(0.06)
+    assert foot_roll.foot_shape(ankle, ball, forward, 0.26).heel_back == pytest.approx(0.26 * foot_roll.HEEL_SHARE)
+    assert foot_roll.foot_shape(ankle, ball, forward, 0.26).ball_ahead == pytest.approx(0.13)
