@@ -28,16 +28,18 @@ def test_the_foot_turns_on_its_heel_or_its_ball(pitch):
     assert moved + turned(pivot - ankle, pitch) == pytest.approx(pivot, abs=1e-12)
 
 
-def walk(count, duration=0.5, speed=1.3, stops=()):
+def walk(count, duration=0.5, speed=1.3, waits=()):
+    """Steps by alternate feet; `waits` stand still (stops that carry the body nowhere)."""
     start = numpy.arange(count) * duration
-    walking = numpy.array([k not in stops for k in range(count)])
-    return Steps(start, start + duration, numpy.arange(count) % 2, walking, numpy.where(walking, speed, 0.0))
+    moving = numpy.array([k not in waits for k in range(count)])
+    return Steps(start, start + duration, numpy.arange(count) % 2, numpy.ones(count, dtype=bool),
+                 numpy.where(moving, speed, 0.0))
 
 
 def planted_for(times, steps, side):
     """As the plan has it: the foot of the step under way is planted, the other swings."""
     k = numpy.clip(numpy.searchsorted(steps.start, times, side="right") - 1, 0, len(steps.start) - 1)
-    return (steps.foot[k] == side) | ~steps.walk[k]
+    return (steps.foot[k] == side) | (steps.speed[k] == 0.0)
 
 
 def test_the_roll_is_continuous_and_reaches_its_amplitudes():
@@ -53,16 +55,40 @@ def test_the_roll_is_continuous_and_reaches_its_amplitudes():
         assert numpy.interp(mid_stance, times, pitch) == pytest.approx(0.0, abs=1e-12)
 
 
-def test_starts_and_stops_stay_flat():
-    steps = walk(6, stops=(5,))
+def test_starts_and_waits_stay_flat():
+    steps = walk(6, waits=(5,))
     times = numpy.linspace(0.0, 3.0, 3001)
     for side in (0, 1):
         pitch, _, _ = foot_roll.roll(times, planted_for(times, steps, side), side, steps, SHAPE, 1.3)
         assert pitch[0] == 0.0  # from standing: the swinging foot only starts to raise its toes
         if side == 0:  # the first step's own foot: no heel strike, flat until its heel rises
             assert pitch[times < 0.6 * 0.5] == pytest.approx(0.0)
-        assert pitch[times >= 2.5] == pytest.approx(0.0)  # the stop, and the walking step before its end
+        assert pitch[times >= 2.5] == pytest.approx(0.0)  # the wait, and the step before it at its end
         assert abs(pitch[numpy.searchsorted(times, 2.49)]) < math.radians(2)
+
+
+def test_one_that_leaves_rolls_on_past_its_last_step():
+    steps = walk(6)
+    times = numpy.linspace(0.0, 3.0, 3001)
+    last = times >= 2.5 + 0.59 * 0.5  # late in the last step's stance, before its heel would rise
+    side = int(steps.foot[-1])
+    staying, _, _ = foot_roll.roll(times, planted_for(times, steps, side), side, steps, SHAPE, 1.3)
+    leaving, _, _ = foot_roll.roll(times, planted_for(times, steps, side), side, steps, SHAPE, 1.3, leaves=True)
+    assert staying[last] == pytest.approx(0.0)
+    assert leaving[-1] == pytest.approx(-foot_roll.TOE_OFF)
+    other = 1 - side
+    swinging, _, _ = foot_roll.roll(times, planted_for(times, steps, other), other, steps, SHAPE, 1.3, leaves=True)
+    assert swinging[-1] == pytest.approx(foot_roll.HEEL_STRIKE)
+
+
+def test_a_side_step_does_not_roll():
+    steps = walk(6)
+    sideways = Steps(steps.start, steps.end, steps.foot, numpy.array([True, True, False, False, True, True]),
+                     steps.speed)
+    times = numpy.linspace(0.0, 3.0, 3001)
+    for side in (0, 1):
+        pitch, _, _ = foot_roll.roll(times, planted_for(times, sideways, side), side, sideways, SHAPE, 1.3)
+        assert pitch[(times >= 1.0) & (times < 2.0)] == pytest.approx(0.0)
 
 
 def test_a_slow_step_rolls_less():

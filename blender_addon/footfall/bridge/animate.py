@@ -269,7 +269,7 @@ def _step_arrays(ff, steps) -> foot_roll.Steps:
     end = numpy.array([s.end_time for s in steps])
     chord = numpy.array([math.dist(s.com_start, s.com_end) for s in steps])
     return foot_roll.Steps(start, end, numpy.array([0 if s.foot == ff.Foot.LEFT else 1 for s in steps]),
-                           numpy.array([s.kind == ff.StepKind.WALK for s in steps], dtype=bool),
+                           numpy.array([s.kind in (ff.StepKind.WALK, ff.StepKind.STOP) for s in steps], dtype=bool),
                            chord / numpy.maximum(end - start, 1e-9))
 
 
@@ -305,7 +305,8 @@ def _locomotion(ff, agent, rest: RigRest, frames, frame_offset: float, fps: floa
     for side, (name, suffix) in enumerate(SIDES):
         leg = rest.legs[name]
         flat = numpy.column_stack((feet_xy[:, side], leg.ankle.z + lift[:, side]))
-        pitch, forward, up = foot_roll.roll(times, planted[:, side], side, step_arrays, leg.shape, full_speed)
+        pitch, forward, up = foot_roll.roll(times, planted[:, side], side, step_arrays, leg.shape, full_speed,
+                                            agent.leaves)
         ankles = flat + numpy.column_stack((forward * numpy.cos(feet_yaw[:, side]),
                                             forward * numpy.sin(feet_yaw[:, side]), up))
         offset = numpy.array(leg.thigh_head) - hips_head

@@ -8,8 +8,9 @@ over it; from HEEL_OFF_AT of the stance on its heel rises, pivoting on the
 ball (the toe joint), up to toe-off at the stance's end. In the swing the
 pitch and the ankle's offset go smoothly from toe-off to the next heel
 strike. Amplitudes grow with the step's speed up to the preferred speed.
-A foot rolls in only from a walking step by the other foot and rolls off
-only into one, so that starts, stops, waits and side steps stay flat.
+A foot rolls in only from a moving step by the other foot and rolls off
+only into one (a walk, or a stop that still carries the body forward), so
+that starts, waits and side steps stay flat.
 
 Pitch is positive with the toes up. Offsets are the ankle's displacement
 from where it stands with the foot flat, along the foot's forward direction
@@ -67,12 +68,13 @@ def foot_shape(ankle, ball, forward, foot_length: float, points=()) -> FootShape
 @dataclass(frozen=True)
 class Steps:
     """A plan's footsteps as arrays: start and end times [s], the foot
-    (0 left, 1 right), whether the step is a walk, and its COM speed [m/s]."""
+    (0 left, 1 right), whether the body goes over the feet (a walk or a
+    stop; not a side step), and the COM's speed [m/s]."""
 
     start: numpy.ndarray
     end: numpy.ndarray
     foot: numpy.ndarray
-    walk: numpy.ndarray
+    forward: numpy.ndarray
     speed: numpy.ndarray
 
 
@@ -82,19 +84,22 @@ def _smooth(w):
 
 
 def roll(times: numpy.ndarray, planted: numpy.ndarray, side: int, steps: Steps, shape: FootShape,
-         full_speed: float):
+         full_speed: float, leaves: bool = False):
     """(pitch [rad], forward offset [m], up offset [m]) of foot `side` at
-    `times`, where `planted` says whether the plan has it planted."""
+    `times`, where `planted` says whether the plan has it planted. An agent
+    that `leaves` walks on past its last step: its feet roll as if another
+    step followed."""
     count = len(steps.start)
     pitch = numpy.zeros(len(times))
     if count == 0:
         return pitch, pitch.copy(), pitch.copy()
-    amplitude = numpy.where(steps.walk, numpy.clip(steps.speed / full_speed, 0.0, 1.0), 0.0)
+    amplitude = numpy.where(steps.forward, numpy.clip(steps.speed / full_speed, 0.0, 1.0), 0.0)
     rolling = amplitude > 0.0
     after = numpy.zeros(count, dtype=bool)  # swung in during the step before
     after[1:] = rolling[1:] & rolling[:-1] & (steps.foot[1:] != steps.foot[:-1])
     before = numpy.zeros(count, dtype=bool)  # swings during the step after
     before[:-1] = rolling[:-1] & rolling[1:] & (steps.foot[1:] != steps.foot[:-1])
+    before[-1] = leaves and rolling[-1]
     strike = numpy.where(after, HEEL_STRIKE * amplitude, 0.0)
     toe_off = numpy.where(before, -TOE_OFF * amplitude, 0.0)
 
@@ -113,7 +118,8 @@ def roll(times: numpy.ndarray, planted: numpy.ndarray, side: int, steps: Steps, 
     # (the step before) to its heel strike (the step after).
     swing = ~own & ~planted & started & rolling[k]
     previous = numpy.where(k > 0, toe_off[numpy.maximum(k - 1, 0)], 0.0)
-    following = numpy.where(k + 1 < count, strike[numpy.minimum(k + 1, count - 1)], 0.0)
+    walk_on = HEEL_STRIKE * amplitude[-1] if leaves else 0.0  # the step it would take next
+    following = numpy.where(k + 1 < count, strike[numpy.minimum(k + 1, count - 1)], walk_on)
     w = _smooth(u)
     from_forward, from_up = shape.offset(previous)
     to_forward, to_up = shape.offset(following)
