@@ -94,7 +94,7 @@ def test_an_unnamed_walk_is_found_by_its_feet():
 
 
 def test_the_walk_plays_without_root_motion_phased_by_its_own_strike():
-    from footfall.bridge import action_curves, rig_import
+    from footfall.bridge import action_curves, rig_clips, rig_import
     from footfall.core import character, native, scenario as sc
 
     ff = native.load()
@@ -134,6 +134,9 @@ def test_the_walk_plays_without_root_motion_phased_by_its_own_strike():
     print(f"hips at most {worst_hips * 100:.2f} cm off the COM; {strikes} heel strikes checked")
     check(strikes >= 6, f"only {strikes} heel strikes checked")
     check(worst_hips <= 0.02, f"the hips are {worst_hips * 100:.2f} cm off the planned COM: root motion played")
+    offered = sorted(a.name for a in rig_clips.actions_of(rig))
+    check(TAKE in offered and not any("locomotion" in n or n.startswith("footfall") for n in offered),
+          f"the rig's actions after Apply: {offered}")
     take = bpy.data.actions[TAKE]
     check(any(c.data_path == 'pose.bones["root"].location' for c in action_curves.curves(take)) and
           not any(c.modifiers for c in action_curves.curves(take)), "the rig's own action was changed")

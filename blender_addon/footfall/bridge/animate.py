@@ -32,6 +32,7 @@ POLE = "footfall_pole.{}"
 CONTROL_PREFIXES = (IK_FOOT.format(""), POLE.format(""))  # bones that only drive the others
 SIDES = (("left", "L"), ("right", "R"))
 CROWD_COLLECTION = "Footfall Crowd"
+LOCOMOTION_OF = "footfall_locomotion_of"  # on an instance's locomotion action: the instance
 POLE_AHEAD = 0.5  # [m] knee poles in front of the knees
 REACH = 0.995  # share of the leg's length the hips may stretch it to (a locked knee snaps)
 BLEND_SECONDS = 0.25  # cross-fade between the clips of two sections
@@ -237,6 +238,7 @@ def _write_action(armature, name: str, frames, channels) -> bpy.types.Action:
     """A new active action with a key at every frame: channels maps a bone
     to its (locations, quaternions or None) arrays."""
     action = bpy.data.actions.new(name)
+    action[LOCOMOTION_OF] = armature.name  # not a clip of the rig (rig_clips.actions_of)
     for bone, arrays in channels.items():
         for path, values in zip(("location", "rotation_quaternion"), arrays):
             if values is None:

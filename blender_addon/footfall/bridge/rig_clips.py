@@ -63,10 +63,13 @@ def _channels(action) -> Dict[str, Dict[str, Dict[int, bpy.types.FCurve]]]:
 
 def actions_of(armature) -> List[bpy.types.Action]:
     """The actions in the file that animate the armature's bones (most of
-    whose bone channels name its bones)."""
+    whose bone channels name its bones), but for Footfall's own (clip copies,
+    procedural clips, an applied crowd's locomotion: properties "footfall_...")."""
     names = set(armature.data.bones.keys())
     result = []
     for action in bpy.data.actions:
+        if any(key.startswith("footfall_") for key in action.keys()):
+            continue
         bones = _channels(action)
         if bones and 2 * sum(b in names for b in bones) >= len(bones):
             result.append(action)
@@ -74,8 +77,9 @@ def actions_of(armature) -> List[bpy.types.Action]:
 
 
 def _frame_range(action):
+    """The action's frames; a pose keyed on one frame spans one."""
     first, last = action.frame_range
-    return float(first), float(last)
+    return float(first), max(float(last), float(first) + 1.0)
 
 
 def _values(curves: Dict[int, bpy.types.FCurve], size: int, default: Sequence[float], frames) -> numpy.ndarray:
@@ -119,8 +123,6 @@ def find_cycle(rig, action, bones: Dict[str, object]) -> clip_cycle.ClipCycle:
     """The gait cycle of `action` played on `rig`, whose bone map is `bones`."""
     data = rig.data
     first, last = _frame_range(action)
-    if last <= first:
-        return clip_cycle.ClipCycle(1, clip_cycle.CONVENTION, "convention")
     frames = first + (last - first) * numpy.arange(SAMPLES) / SAMPLES
     ends = {(side, role): bones[side][role] for side in ("left", "right") for role in ("foot", "hand")}
     needed = sorted({b for name in ends.values() for b in _chain(data, name)})
