@@ -234,7 +234,10 @@ def test_plan_is_stored_and_saved_with_the_file():
     fresh_scene()
     load_good_scenario()
     check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan did not finish")
-    check("footfall_plan.json" in bpy.data.texts, "no Text footfall_plan.json")
+    check(plan_store.TEXT_NAME in bpy.data.texts, f"no Text {plan_store.TEXT_NAME}")
+    packed = len(bpy.data.texts[plan_store.TEXT_NAME].as_string())
+    print(f"plan JSON {len(plan_store.load())} characters, stored in {packed}")
+    check(packed < 0.4 * len(plan_store.load()), "the stored plan is not packed")
     document = json.loads(plan_store.load())
     check({a["name"]: a["status"] for a in document["agents"]} == {"alice": "reached", "bob": "reached"},
           [(a["name"], a["status"]) for a in document["agents"]])
@@ -250,6 +253,21 @@ def test_plan_is_stored_and_saved_with_the_file():
     bpy.ops.wm.open_mainfile(filepath=path)
     check(plan_store.load() == text, "the reopened plan differs")
     check([a.name for a in plan_store.load_plan().agents] == ["alice", "bob"], "reopened plan")
+
+    # A file saved before plans were packed keeps its plain JSON: it is read,
+    # and the next Plan replaces it with the packed one.
+    bpy.data.texts.remove(bpy.data.texts[plan_store.TEXT_NAME])
+    bpy.data.texts.new(plan_store.PLAIN_TEXT_NAME).from_string(text)
+    check(plan_store.load() == text, "the plain plan of an older file is not read")
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan did not finish")
+    check(plan_store.PLAIN_TEXT_NAME not in bpy.data.texts and plan_store.load() == text, "not replaced")
+    # A damaged packed plan is named, not read as nonsense.
+    bpy.data.texts[plan_store.TEXT_NAME].from_string(plan_store.HEADER + "\n!!!!")
+    try:
+        plan_store.load()
+        check(False, "a damaged plan was read")
+    except ValueError as error:
+        check("footfall_plan: the packed plan is damaged" in str(error), str(error))
 
 
 def test_the_plan_names_those_that_did_not_arrive():
@@ -341,7 +359,7 @@ def test_errors_leave_the_scene_as_it_was():
     bpy.data.collections["Footfall Agents"].objects.link(lonely)
     message = operator_error(bpy.ops.footfall.plan)
     check("Agent 'lonely' has no goals" in message, message)
-    check("footfall_plan.json" not in bpy.data.texts, "a failed plan stored a Text")
+    check("footfall_plan" not in bpy.data.texts, "a failed plan stored a Text")
 
 
 class RecordingOperator:

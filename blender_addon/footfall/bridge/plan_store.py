@@ -1,35 +1,66 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""The scene's plan, kept in the .blend: the plan JSON text
-(docs/file-formats.md) in a Text data-block named "footfall_plan.json",
-which Blender saves with the file."""
+"""The scene's plan, kept in the .blend: the plan JSON (docs/file-formats.md)
+compressed (zlib, then base64 in lines of 76 characters) in a Text
+data-block named "footfall_plan", which Blender saves with the file. A
+plan's JSON is mostly digits: it packs to about a fifth.
 
+Files saved before keep the plain JSON in a Text named "footfall_plan.json";
+it is read as such, and replaced by the packed one at the next Plan.
+"""
+
+import base64
+import zlib
 from typing import Optional
 
 import bpy
 
 from ..core import native
 
-TEXT_NAME = "footfall_plan.json"
+TEXT_NAME = "footfall_plan"
+PLAIN_TEXT_NAME = "footfall_plan.json"  # the plain JSON of older files
+HEADER = "footfall-plan zlib base64 1"  # the packed text's first line
 OUTCOME = "footfall_plan_outcome"  # the scene's property: what the last Plan reached, for the panel
+LINE = 76
+
+
+def _pack(text: str) -> str:
+    packed = base64.b64encode(zlib.compress(text.encode("utf-8"), 6)).decode("ascii")
+    return "\n".join([HEADER, *(packed[i:i + LINE] for i in range(0, len(packed), LINE))])
+
+
+def _unpack(packed: str) -> str:
+    header, _, body = packed.partition("\n")
+    if header != HEADER:
+        raise ValueError(f"{TEXT_NAME}: not a packed plan (its first line is not '{HEADER}')")
+    try:
+        return zlib.decompress(base64.b64decode("".join(body.split()), validate=True)).decode("utf-8")
+    except (ValueError, zlib.error) as error:
+        raise ValueError(f"{TEXT_NAME}: the packed plan is damaged ({error})") from error
 
 
 def store(text: str) -> None:
-    """Stores `text` as the plan, replacing a stored one."""
-    block = bpy.data.texts.get(TEXT_NAME)
-    if block is None:
-        block = bpy.data.texts.new(TEXT_NAME)
-    block.from_string(text)
+    """Stores the plan JSON `text`, replacing a stored plan."""
+    packed = _pack(text)  # first: nothing changes if packing fails
+    block = bpy.data.texts.get(TEXT_NAME) or bpy.data.texts.new(TEXT_NAME)
+    block.from_string(packed)
+    plain = bpy.data.texts.get(PLAIN_TEXT_NAME)
+    if plain is not None:
+        bpy.data.texts.remove(plain)
 
 
 def load() -> Optional[str]:
-    """The stored plan text, or None if no plan is stored."""
+    """The stored plan JSON, or None if no plan is stored. Raises ValueError
+    if the packed text was damaged."""
     block = bpy.data.texts.get(TEXT_NAME)
-    return None if block is None else block.as_string()
+    if block is not None:
+        return _unpack(block.as_string())
+    plain = bpy.data.texts.get(PLAIN_TEXT_NAME)
+    return None if plain is None else plain.as_string()
 
 
 def load_plan():
     """The stored plan read by the core (a native Plan), or None if no plan
-    is stored. Raises ValueError "footfall_plan.json: FIELD.PATH: problem"
-    if the text was edited into an invalid plan."""
+    is stored. Raises ValueError "footfall_plan: FIELD.PATH: problem" if the
+    text was edited into an invalid plan."""
     text = load()
     return None if text is None else native.load().parse_plan(text, TEXT_NAME)
