@@ -282,6 +282,32 @@ def test_the_plan_names_those_that_did_not_arrive():
     check(said == "1/2 agents reached their goals; not there: 'bob' (time limit)", said)
 
 
+def test_an_agents_own_speed():
+    """footfall_speed sets an agent's preferred speed: it walks slower than
+    without it; a value that is no number, or out of range, names the agent."""
+    from footfall.bridge import plan_store
+
+    def alices_speed():
+        check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan did not finish")
+        alice = plan_store.load_plan().agents[0]
+        walked = sum(math.dist(s.com_start, s.com_end) for s in alice.footsteps)
+        return walked / alice.end_time()
+
+    fresh_scene()
+    load_good_scenario()
+    usual = alices_speed()
+    bpy.data.objects["alice"]["footfall_speed"] = 0.7
+    slow = alices_speed()
+    print(f"alice's mean speed {usual:.2f} m/s, {slow:.2f} m/s at footfall_speed 0.7")
+    check(slow < 0.8 * usual, f"footfall_speed 0.7: {slow:.2f} m/s against {usual:.2f} m/s")
+    bpy.data.objects["alice"]["footfall_speed"] = "fast"
+    message = operator_error(bpy.ops.footfall.plan)
+    check("Agent 'alice': custom property 'footfall_speed' must be a number of metres per second" in message, message)
+    bpy.data.objects["alice"]["footfall_speed"] = 40.0
+    message = operator_error(bpy.ops.footfall.plan)
+    check("agents[0].character.preferred_speed" in message and "agent 'alice'" in message, message)
+
+
 def plain_value(value):
     return value.to_dict() if hasattr(value, "to_dict") else value.to_list() if hasattr(value, "to_list") else value
 
@@ -434,5 +460,6 @@ def test_steersuite_case_loads():
 
 run([test_load_builds_the_conventions_and_extracts_back, test_hand_made_agents_and_obstacles_are_extracted,
      test_plan_is_stored_and_saved_with_the_file, test_the_plan_names_those_that_did_not_arrive,
+     test_an_agents_own_speed,
      test_errors_leave_the_scene_as_it_was,
      test_failing_operators_report_and_cancel, test_steersuite_case_loads])

@@ -15,7 +15,8 @@ count, hidden ones included:
   collection are its goals, by "footfall_goal_index", then by name; its
   custom properties "footfall_leave_at_goal" (true: it walks through its last
   goal and leaves the scene there), "footfall_time_limit" (its time budget
-  in seconds; the core checks the range), "footfall_character" (JSON text:
+  in seconds; the core checks the range), "footfall_speed" (its preferred
+  speed, m/s), "footfall_character" (JSON text:
   overrides of the character for it alone) and "footfall_rig" (the name of
   the imported rig it is animated with, which sizes its character) are
   optional.
@@ -40,6 +41,7 @@ GOAL_INDEX = "footfall_goal_index"
 LEAVE_AT_GOAL = "footfall_leave_at_goal"
 AGENT_NAME = "footfall_agent_name"
 AGENT_CHARACTER = "footfall_character"
+AGENT_SPEED = "footfall_speed"
 TIME_LIMIT = "footfall_time_limit"
 AGENT_RIG = "footfall_rig"
 OVERRIDES = "footfall_overrides"
@@ -170,28 +172,37 @@ def agent_empties(scene) -> Dict[str, object]:
     return {agent_name(o): o for o in _agent_objects(_members(scene, AGENTS))}
 
 
-def _time_limit(agent):
-    value = agent.get(TIME_LIMIT)
+def _number(agent, prop: str, unit: str):
+    """The agent's custom property `prop` as a number, None if it has none
+    (its range is the core's to check)."""
+    value = agent.get(prop)
     if value is None:
         return None
     if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise SceneError(f"Agent '{agent.name}': custom property '{TIME_LIMIT}' must be a number of seconds, "
-                         f"got {value!r}")
+        raise SceneError(f"Agent '{agent.name}': custom property '{prop}' must be a number of {unit}, got {value!r}")
     return float(value)
 
 
+def _time_limit(agent):
+    return _number(agent, TIME_LIMIT, "seconds")
+
+
 def _own_character(agent):
+    """The agent's character overrides: its preferred speed, and what its
+    JSON text sets (which wins)."""
+    speed = _number(agent, AGENT_SPEED, "metres per second")
+    value = {} if speed is None else {"preferred_speed": speed}
     text = agent.get(AGENT_CHARACTER)
     if text is None:
-        return None
+        return value or None
     where = f"Agent '{agent.name}': custom property '{AGENT_CHARACTER}'"
     try:
-        value = json.loads(text) if isinstance(text, str) else None
+        given = json.loads(text) if isinstance(text, str) else None
     except json.JSONDecodeError as error:
         raise SceneError(f"{where}: not valid JSON: {error}") from error
-    if not isinstance(value, dict):
+    if not isinstance(given, dict):
         raise SceneError(f"{where}: must be JSON text of an object of character fields, got {text!r}")
-    return value
+    return {**value, **given}
 
 
 def _rig_names(objects) -> Dict[str, str]:
