@@ -282,9 +282,10 @@ def test_the_plan_names_those_that_did_not_arrive():
     check(said == "1/2 agents reached their goals; not there: 'bob' (time limit)", said)
 
 
-def test_an_agents_own_speed():
+def test_an_agents_own_speed_and_start():
     """footfall_speed sets an agent's preferred speed: it walks slower than
-    without it; a value that is no number, or out of range, names the agent."""
+    without it; a value that is no number, or out of range, names the agent.
+    footfall_start_delay keeps it standing until then."""
     from footfall.bridge import plan_store
 
     def alices_speed():
@@ -306,6 +307,12 @@ def test_an_agents_own_speed():
     bpy.data.objects["alice"]["footfall_speed"] = 40.0
     message = operator_error(bpy.ops.footfall.plan)
     check("agents[0].character.preferred_speed" in message and "agent 'alice'" in message, message)
+    del bpy.data.objects["alice"]["footfall_speed"]
+    bpy.data.objects["alice"]["footfall_start_delay"] = 2.0  # she stands, then walks
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan did not finish")
+    alice = plan_store.load_plan().agents[0]
+    moved = [s.start_time for s in alice.footsteps if math.dist(s.com_start, s.com_end) > 0.0]
+    check(moved and moved[0] >= 2.0, f"alice moved before her start: {moved[:1]}")
 
 
 def plain_value(value):
@@ -460,6 +467,6 @@ def test_steersuite_case_loads():
 
 run([test_load_builds_the_conventions_and_extracts_back, test_hand_made_agents_and_obstacles_are_extracted,
      test_plan_is_stored_and_saved_with_the_file, test_the_plan_names_those_that_did_not_arrive,
-     test_an_agents_own_speed,
+     test_an_agents_own_speed_and_start,
      test_errors_leave_the_scene_as_it_was,
      test_failing_operators_report_and_cancel, test_steersuite_case_loads])

@@ -21,7 +21,7 @@ import bpy
 from ..core import native
 from ..core.scenario import document_of, parse
 from . import datablocks
-from .scene_extract import (AGENT_CHARACTER, AGENTS, GOAL_INDEX, TIME_LIMIT, LEAVE_AT_GOAL, MIN_AREA, OBSTACLES, OVERRIDE_KEYS,
+from .scene_extract import (AGENT_CHARACTER, AGENTS, GOAL_INDEX, START_DELAY, TIME_LIMIT, LEAVE_AT_GOAL, MIN_AREA, OBSTACLES, OVERRIDE_KEYS,
                             OVERRIDES, collection_in, overrides, signed_area)
 
 AGENT_SIZE = 0.5  # [m] length of the agent empty's arrows
@@ -153,6 +153,8 @@ def _add_agent(agent: dict, collection):
         obj[AGENT_CHARACTER] = json.dumps(agent["character"])
     if agent.get("time_limit"):
         obj[TIME_LIMIT] = float(agent["time_limit"])
+    if agent.get("start_delay"):
+        obj[START_DELAY] = float(agent["start_delay"])
     collection.objects.link(obj)
     return obj
 

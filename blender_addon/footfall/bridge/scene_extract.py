@@ -15,7 +15,8 @@ count, hidden ones included:
   collection are its goals, by "footfall_goal_index", then by name; its
   custom properties "footfall_leave_at_goal" (true: it walks through its last
   goal and leaves the scene there), "footfall_time_limit" (its time budget
-  in seconds; the core checks the range), "footfall_speed" (its preferred
+  in seconds; the core checks the range), "footfall_start_delay" (seconds
+  it stands before setting off), "footfall_speed" (its preferred
   speed, m/s), "footfall_character" (JSON text:
   overrides of the character for it alone) and "footfall_rig" (the name of
   the imported rig it is animated with, which sizes its character) are
@@ -43,6 +44,7 @@ AGENT_NAME = "footfall_agent_name"
 AGENT_CHARACTER = "footfall_character"
 AGENT_SPEED = "footfall_speed"
 TIME_LIMIT = "footfall_time_limit"
+START_DELAY = "footfall_start_delay"
 AGENT_RIG = "footfall_rig"
 OVERRIDES = "footfall_overrides"
 OVERRIDE_KEYS = ("character", "planner")
@@ -162,7 +164,8 @@ def _agents(objects, depsgraph) -> List[AgentInput]:
             facing=math.atan2(world[1][0], world[0][0]),  # where the local X axis points
             leave_at_goal=_leaves(agent),
             character=_own_character(agent),
-            time_limit=_time_limit(agent),
+            time_limit=_number(agent, TIME_LIMIT, "seconds"),
+            start_delay=_number(agent, START_DELAY, "seconds"),
         ))
     return agents
 
@@ -181,10 +184,6 @@ def _number(agent, prop: str, unit: str):
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise SceneError(f"Agent '{agent.name}': custom property '{prop}' must be a number of {unit}, got {value!r}")
     return float(value)
-
-
-def _time_limit(agent):
-    return _number(agent, TIME_LIMIT, "seconds")
 
 
 def _own_character(agent):

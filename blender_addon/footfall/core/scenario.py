@@ -20,8 +20,9 @@ class AgentInput:
     """One agent: name, standing position [m], goals [m], facing [rad] (None:
     toward the first goal), whether it walks through its last goal and
     leaves the scene there (instead of coming to rest on it), overrides of
-    the scenario's character for it alone (its own size, say), and its time
-    budget [s] (None: the planner's default, from max_time and its route)."""
+    the scenario's character for it alone (its own size, say), its time
+    budget [s] (None: the planner's default, from max_time and its route),
+    and how long it stands before it sets off [s]."""
 
     name: str
     position: Point
@@ -30,6 +31,7 @@ class AgentInput:
     leave_at_goal: bool = False
     character: Optional[dict] = None
     time_limit: Optional[float] = None
+    start_delay: Optional[float] = None
 
 
 @dataclass(frozen=True)
@@ -71,6 +73,8 @@ def scenario_document(scenario: ScenarioInput) -> dict:
             entry["character"] = dict(agent.character)
         if agent.time_limit is not None:
             entry["time_limit"] = float(agent.time_limit)
+        if agent.start_delay is not None:
+            entry["start_delay"] = float(agent.start_delay)
         agents.append(entry)
     document = {
         "format": "footfall-scenario",
@@ -92,8 +96,8 @@ def document_of(scenario) -> dict:
     """The document of a scenario the core has read (a native Scenario, as
     from a SteerSuite file), its agents and obstacles; parameters at their defaults."""
     return scenario_document(ScenarioInput(
-        agents=[AgentInput(a.name, a.position, a.goals, a.facing, a.leave_at_goal, time_limit=a.time_limit or None)
-                for a in scenario.agents],
+        agents=[AgentInput(a.name, a.position, a.goals, a.facing, a.leave_at_goal, time_limit=a.time_limit or None,
+                           start_delay=a.start_delay or None) for a in scenario.agents],
         obstacles=[ObstacleInput(o.polygon, o.height) for o in scenario.obstacles]))
 
 

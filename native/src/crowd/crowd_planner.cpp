@@ -55,6 +55,8 @@ void check_agent(const AgentSpec& agent) {
   if (agent.goals.empty()) throw std::invalid_argument("agent " + agent.name + ": has no goals");
   if (!(agent.time_limit >= 0.0 && agent.time_limit <= kMaxTimeLimit))
     throw std::invalid_argument("agent " + agent.name + ": time_limit must be in [0, 100000] s");
+  if (!(agent.start_delay >= 0.0 && agent.start_delay <= kMaxTimeLimit))
+    throw std::invalid_argument("agent " + agent.name + ": start_delay must be in [0, 100000] s");
   if (!in_world(agent.position) || !std::isfinite(agent.facing)) {
     throw std::invalid_argument("agent " + agent.name +
                                 ": position and facing must be finite, within 1e9 m");
@@ -527,7 +529,8 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     w.plan.start = standing_state(agents[i].position, agents[i].facing, w.planner->character());
     w.state = w.plan.start;
     w.bounds = std::make_shared<const PlanBounds>(w.plan, w.planner->character());
-    w.deadline = time_limit_of(agents[i], w.planner->character(), params);
+    w.start_at = agents[i].start_delay;
+    w.deadline = w.start_at + time_limit_of(agents[i], w.planner->character(), params);
   }
   std::vector<PlanWalk> walks;
   for (const Walker& w : walkers) walks.emplace_back(w.plan);
@@ -601,7 +604,8 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
         continue;
       }
       active = true;
-      if (!in_flight[i] && walkers[i].state.time - t <= kReplanLead && t >= walkers[i].retry_at)
+      if (!in_flight[i] && walkers[i].state.time - t <= kReplanLead && t >= walkers[i].retry_at &&
+          t >= walkers[i].start_at)
         due.push_back(i);
     }
     if (!active) break;  // none in flight either

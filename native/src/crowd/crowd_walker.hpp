@@ -103,7 +103,9 @@ struct Walker {
   const AgentSpec* spec = nullptr;
   /// Its planner, made for its character.
   const FootstepPlanner* planner = nullptr;
-  /// Past this time it plans no more ("time limit"). [s]
+  /// It plans from this time on (its start delay), and no more past the
+  /// deadline ("time limit"). [s]
+  double start_at = 0.0;
   double deadline = 0.0;
   /// Its sections (spec->sections), for its searches.
   std::shared_ptr<const SectionLookup> sections;

@@ -96,6 +96,8 @@ void validate(const Scenario& scenario) {
     if (agent.goals.empty()) fail(child(path, "goals"), "needs at least one goal");
     if (!(agent.time_limit >= 0.0 && agent.time_limit <= kMaxTimeLimit))
       fail(child(path, "time_limit"), "must be in (0, 100000] s");
+    if (!(agent.start_delay >= 0.0 && agent.start_delay <= kMaxTimeLimit))
+      fail(child(path, "start_delay"), "must be in [0, 100000] s");
     const FootstepState standing = standing_state(agent.position, agent.facing, character);
     if (planners.planner(agent).validity().collides(standing)) {
       int hit = -1;

@@ -43,7 +43,7 @@ Scenario read_scenario(const Json& root) {
       const std::string path = item("agents", i);
       expect_object(agents[i], path,
                     {"name", "position", "facing", "goals", "leave_at_goal", "character",
-                     "time_limit"});
+                     "time_limit", "start_delay"});
       AgentSpec agent;
       agent.name = agents[i].contains("name") ? string(agents[i]["name"], child(path, "name"))
                                               : "agent" + std::to_string(i);
@@ -65,6 +65,8 @@ Scenario read_scenario(const Json& root) {
         if (!(agent.time_limit > 0.0 && agent.time_limit <= kMaxTimeLimit))
           fail(child(path, "time_limit"), "must be in (0, 100000] s");
       }
+      if (agents[i].contains("start_delay"))
+        agent.start_delay = number(agents[i]["start_delay"], child(path, "start_delay"));
       scenario.agents.push_back(std::move(agent));
     }
   }

@@ -133,6 +133,24 @@ TEST(AgentTimeLimits, AnAgentWalksItsRouteOrItsOwnBudget) {
   }
 }
 
+TEST(AgentTimeLimits, ADelayedAgentStandsUntilItsStart) {
+  const Scenario scenario = parse_scenario(R"({
+    "format": "footfall-scenario", "version": 1,
+    "agents": [{"name": "late", "position": [0, 0], "goals": [[6, 0]], "start_delay": 3,
+                "time_limit": 4},
+               {"name": "early", "position": [0, 3], "goals": [[6, 3]]}]
+  })", "two.json");
+  const Plan plan = plan_scenario(scenario);
+  const AgentPlan& late = plan.agents[0];
+  // Its budget starts with it: 4 s of walking after 3 s of standing.
+  EXPECT_EQ(late.status, AgentStatus::kReached) << late.reason;
+  for (const Footstep& step : late.footsteps) {
+    if (step.start_time < 3.0) EXPECT_EQ(distance(step.com_start, step.com_end), 0.0) << step.start_time;
+  }
+  EXPECT_GE(late.end_time(), 3.0 + 6.0 / scenario.character.preferred_speed);
+  EXPECT_LT(plan.agents[1].end_time(), late.end_time() - 2.0);
+}
+
 TEST(AgentCharacters, OnePlannerForAllRefusesAgentsOfTheirOwn) {
   const Scenario scenario = parse_scenario(kScenario, "three.json");
   const ObstacleMap obstacles(scenario.obstacles);

@@ -35,6 +35,9 @@ struct AgentSpec {
   std::shared_ptr<const CharacterParams> character{};
   /// Its time budget, (0, kMaxTimeLimit]; 0: time_limit_of()'s default. [s]
   double time_limit = 0;
+  /// It stands where it is until this time, then sets off; its time budget
+  /// starts then. [s] [0, kMaxTimeLimit]
+  double start_delay = 0;
 };
 
 /// The simulated time an agent may walk: its own time_limit, else the
