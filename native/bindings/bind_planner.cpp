@@ -127,6 +127,8 @@ void bind_planner(py::module_& m) {
       .def_readwrite("leave_at_goal", &AgentSpec::leave_at_goal)
       .def_readwrite("start_delay", &AgentSpec::start_delay,
                      "It stands still until this time [s], then sets off.")
+      .def_readwrite("goal_wait", &AgentSpec::goal_wait,
+                     "It stands this long [s] at each goal but the last.")
       .def_readwrite("time_limit", &AgentSpec::time_limit,
                      "Its time budget [s]; 0: the planner's max_time or four times its route's "
                      "walking time, whichever is longer.")

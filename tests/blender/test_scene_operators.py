@@ -313,6 +313,9 @@ def test_an_agents_own_speed_and_start():
     alice = plan_store.load_plan().agents[0]
     moved = [s.start_time for s in alice.footsteps if math.dist(s.com_start, s.com_end) > 0.0]
     check(moved and moved[0] >= 2.0, f"alice moved before her start: {moved[:1]}")
+    check(extract()["agents"][0].get("start_delay") == 2.0, "footfall_start_delay not read")
+    bpy.data.objects["alice"]["footfall_wait"] = 3.0
+    check(extract()["agents"][0].get("goal_wait") == 3.0, "footfall_wait not read")
 
 
 def plain_value(value):

@@ -21,7 +21,7 @@ import bpy
 from ..core import native
 from ..core.scenario import document_of, parse
 from . import datablocks
-from .scene_extract import (AGENT_CHARACTER, AGENTS, GOAL_INDEX, START_DELAY, TIME_LIMIT, LEAVE_AT_GOAL, MIN_AREA, OBSTACLES, OVERRIDE_KEYS,
+from .scene_extract import (AGENT_CHARACTER, AGENTS, GOAL_INDEX, GOAL_WAIT, START_DELAY, TIME_LIMIT, LEAVE_AT_GOAL, MIN_AREA, OBSTACLES, OVERRIDE_KEYS,
                             OVERRIDES, collection_in, overrides, signed_area)
 
 AGENT_SIZE = 0.5  # [m] length of the agent empty's arrows
@@ -155,6 +155,8 @@ def _add_agent(agent: dict, collection):
         obj[TIME_LIMIT] = float(agent["time_limit"])
     if agent.get("start_delay"):
         obj[START_DELAY] = float(agent["start_delay"])
+    if agent.get("goal_wait"):
+        obj[GOAL_WAIT] = float(agent["goal_wait"])
     collection.objects.link(obj)
     return obj
 

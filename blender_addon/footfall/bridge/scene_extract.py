@@ -15,8 +15,9 @@ count, hidden ones included:
   collection are its goals, by "footfall_goal_index", then by name; its
   custom properties "footfall_leave_at_goal" (true: it walks through its last
   goal and leaves the scene there), "footfall_time_limit" (its time budget
-  in seconds; the core checks the range), "footfall_start_delay" (seconds
-  it stands before setting off), "footfall_speed" (its preferred
+  in seconds; the core checks the range), "footfall_start_delay" and
+  "footfall_wait" (seconds it stands before setting off, and at each goal
+  but the last), "footfall_speed" (its preferred
   speed, m/s), "footfall_character" (JSON text:
   overrides of the character for it alone) and "footfall_rig" (the name of
   the imported rig it is animated with, which sizes its character) are
@@ -45,6 +46,7 @@ AGENT_CHARACTER = "footfall_character"
 AGENT_SPEED = "footfall_speed"
 TIME_LIMIT = "footfall_time_limit"
 START_DELAY = "footfall_start_delay"
+GOAL_WAIT = "footfall_wait"
 AGENT_RIG = "footfall_rig"
 OVERRIDES = "footfall_overrides"
 OVERRIDE_KEYS = ("character", "planner")
@@ -166,6 +168,7 @@ def _agents(objects, depsgraph) -> List[AgentInput]:
             character=_own_character(agent),
             time_limit=_number(agent, TIME_LIMIT, "seconds"),
             start_delay=_number(agent, START_DELAY, "seconds"),
+            goal_wait=_number(agent, GOAL_WAIT, "seconds"),
         ))
     return agents
 

@@ -22,7 +22,7 @@ class AgentInput:
     leaves the scene there (instead of coming to rest on it), overrides of
     the scenario's character for it alone (its own size, say), its time
     budget [s] (None: the planner's default, from max_time and its route),
-    and how long it stands before it sets off [s]."""
+    how long it stands before it sets off and at each goal but the last [s]."""
 
     name: str
     position: Point
@@ -32,6 +32,7 @@ class AgentInput:
     character: Optional[dict] = None
     time_limit: Optional[float] = None
     start_delay: Optional[float] = None
+    goal_wait: Optional[float] = None
 
 
 @dataclass(frozen=True)
@@ -75,6 +76,8 @@ def scenario_document(scenario: ScenarioInput) -> dict:
             entry["time_limit"] = float(agent.time_limit)
         if agent.start_delay is not None:
             entry["start_delay"] = float(agent.start_delay)
+        if agent.goal_wait is not None:
+            entry["goal_wait"] = float(agent.goal_wait)
         agents.append(entry)
     document = {
         "format": "footfall-scenario",
@@ -97,7 +100,8 @@ def document_of(scenario) -> dict:
     from a SteerSuite file), its agents and obstacles; parameters at their defaults."""
     return scenario_document(ScenarioInput(
         agents=[AgentInput(a.name, a.position, a.goals, a.facing, a.leave_at_goal, time_limit=a.time_limit or None,
-                           start_delay=a.start_delay or None) for a in scenario.agents],
+                           start_delay=a.start_delay or None, goal_wait=a.goal_wait or None)
+                for a in scenario.agents],
         obstacles=[ObstacleInput(o.polygon, o.height) for o in scenario.obstacles]))
 
 

@@ -57,6 +57,8 @@ void check_agent(const AgentSpec& agent) {
     throw std::invalid_argument("agent " + agent.name + ": time_limit must be in [0, 100000] s");
   if (!(agent.start_delay >= 0.0 && agent.start_delay <= kMaxTimeLimit))
     throw std::invalid_argument("agent " + agent.name + ": start_delay must be in [0, 100000] s");
+  if (!(agent.goal_wait >= 0.0 && agent.goal_wait <= kMaxTimeLimit))
+    throw std::invalid_argument("agent " + agent.name + ": goal_wait must be in [0, 100000] s");
   if (!in_world(agent.position) || !std::isfinite(agent.facing)) {
     throw std::invalid_argument("agent " + agent.name +
                                 ": position and facing must be finite, within 1e9 m");

@@ -43,7 +43,7 @@ Scenario read_scenario(const Json& root) {
       const std::string path = item("agents", i);
       expect_object(agents[i], path,
                     {"name", "position", "facing", "goals", "leave_at_goal", "character",
-                     "time_limit", "start_delay"});
+                     "time_limit", "start_delay", "goal_wait"});
       AgentSpec agent;
       agent.name = agents[i].contains("name") ? string(agents[i]["name"], child(path, "name"))
                                               : "agent" + std::to_string(i);
@@ -67,6 +67,8 @@ Scenario read_scenario(const Json& root) {
       }
       if (agents[i].contains("start_delay"))
         agent.start_delay = number(agents[i]["start_delay"], child(path, "start_delay"));
+      if (agents[i].contains("goal_wait"))
+        agent.goal_wait = number(agents[i]["goal_wait"], child(path, "goal_wait"));
       scenario.agents.push_back(std::move(agent));
     }
   }

@@ -151,6 +151,29 @@ TEST(AgentTimeLimits, ADelayedAgentStandsUntilItsStart) {
   EXPECT_LT(plan.agents[1].end_time(), late.end_time() - 2.0);
 }
 
+TEST(AgentTimeLimits, AnAgentWaitsAtEachGoalButTheLast) {
+  const std::string text = R"({
+    "format": "footfall-scenario", "version": 1,
+    "agents": [{"name": "a", "position": [0, 0], "goals": [[4, 0], [4, 4]], "goal_wait": 20}]
+  })";
+  const Plan plan = plan_scenario(parse_scenario(text, "one.json"));
+  const AgentPlan& a = plan.agents[0];
+  EXPECT_EQ(a.status, AgentStatus::kReached) << a.reason;
+  // It stands still at the first goal for the wait, at one stretch.
+  double longest = 0.0, since = 0.0;
+  Vec2 where{0, 0};
+  for (const Footstep& step : a.footsteps) {
+    if (distance(step.com_start, step.com_end) > 0.0) {
+      since = step.end_time;
+    } else if (step.end_time - since > longest) {
+      longest = step.end_time - since;
+      where = step.com_end;
+    }
+  }
+  EXPECT_GE(longest, 20.0);
+  EXPECT_LT(distance(where, {4, 0}), 0.5);
+}
+
 TEST(AgentCharacters, OnePlannerForAllRefusesAgentsOfTheirOwn) {
   const Scenario scenario = parse_scenario(kScenario, "three.json");
   const ObstacleMap obstacles(scenario.obstacles);

@@ -38,6 +38,9 @@ struct AgentSpec {
   /// It stands where it is until this time, then sets off; its time budget
   /// starts then. [s] [0, kMaxTimeLimit]
   double start_delay = 0;
+  /// It stands this long at each goal but the last before it walks on. [s]
+  /// [0, kMaxTimeLimit]
+  double goal_wait = 0;
 };
 
 /// The simulated time an agent may walk: its own time_limit, else the
