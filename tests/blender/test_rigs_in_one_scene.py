@@ -130,6 +130,11 @@ def test_a_rig_of_another_size_than_planned_is_refused():
     bpy.data.objects["kid"]["footfall_rig"] = "nobody"
     message = operator_error(bpy.ops.footfall.plan)
     check("Agent 'kid': custom property 'footfall_rig' names 'nobody'" in message, message)
+    message = operator_error(bpy.ops.footfall.apply)
+    check("Agent 'kid': custom property 'footfall_rig' names 'nobody'" in message, message)
+    bpy.data.objects["kid"]["footfall_rig"] = 7
+    message = operator_error(bpy.ops.footfall.apply)
+    check("Agent 'kid': custom property 'footfall_rig' must be a rig's name, got 7" in message, message)
 
 
 def test_several_rigs_and_none_chosen_is_an_error():

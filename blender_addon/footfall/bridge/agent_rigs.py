@@ -47,7 +47,9 @@ def scene_rig(scene, name: str = "") -> Optional[bpy.types.Object]:
     return rigs[0] if rigs else None
 
 
-def _agent_rig(agent: str, name: str) -> bpy.types.Object:
+def _agent_rig(agent: str, name) -> bpy.types.Object:
+    if not isinstance(name, str):
+        raise RigChoiceError(f"Agent '{agent}': custom property '{AGENT_RIG}' must be a rig's name, got {name!r}")
     rig = bpy.data.objects.get(name)
     if rig is None or rig not in imported_rigs():
         raise RigChoiceError(f"Agent '{agent}': custom property '{AGENT_RIG}' names '{name}', which is not a rig "
@@ -81,7 +83,7 @@ def rigs_of(scene, plan, rig: Optional[bpy.types.Object]) -> Dict[str, bpy.types
     for agent in plan.agents:
         empty = empties.get(agent.name)
         own = empty.get(AGENT_RIG) if empty is not None else None
-        chosen = _agent_rig(agent.name, own) if own else rig
+        chosen = rig if own is None else _agent_rig(agent.name, own)
         if chosen is None:
             raise RigChoiceError("Import a rig first (Footfall > Import Rig)")
         planned = (agent.character or plan.character).com_height
