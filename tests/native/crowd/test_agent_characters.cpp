@@ -145,7 +145,9 @@ TEST(AgentTimeLimits, ADelayedAgentStandsUntilItsStart) {
   // Its budget starts with it: 4 s of walking after 3 s of standing.
   EXPECT_EQ(late.status, AgentStatus::kReached) << late.reason;
   for (const Footstep& step : late.footsteps) {
-    if (step.start_time < 3.0) EXPECT_EQ(distance(step.com_start, step.com_end), 0.0) << step.start_time;
+    if (step.start_time < 3.0) {
+      EXPECT_EQ(distance(step.com_start, step.com_end), 0.0) << step.start_time;
+    }
   }
   EXPECT_GE(late.end_time(), 3.0 + 6.0 / scenario.character.preferred_speed);
   EXPECT_LT(plan.agents[1].end_time(), late.end_time() - 2.0);
