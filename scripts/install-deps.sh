@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ make
-  pybind11-dev nlohmann-json3-dev libpugixml-dev libcgal-dev python3-dev
+  pybind11-dev nlohmann-json3-dev libpugixml-dev libcgal-dev libtinygltf-dev python3-dev
   libgtest-dev libbenchmark-dev
   clang libclang-rt-14-dev
   python3-pytest python3-numpy python3-venv

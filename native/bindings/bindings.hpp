@@ -15,6 +15,7 @@ void bind_planner(pybind11::module_& m);
 void bind_scenario(pybind11::module_& m);
 void bind_navmesh(pybind11::module_& m);
 void bind_fullbody(pybind11::module_& m);
+void bind_animate(pybind11::module_& m);
 
 }  // namespace footfall::bindings
 

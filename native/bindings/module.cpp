@@ -16,4 +16,5 @@ PYBIND11_MODULE(_native, m) {
   footfall::bindings::bind_scenario(m);
   footfall::bindings::bind_navmesh(m);
   footfall::bindings::bind_fullbody(m);
+  footfall::bindings::bind_animate(m);
 }

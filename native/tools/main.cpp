@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "animate_command.hpp"
 #include "bench_command.hpp"
 #include "footfall/fullbody/body_check.hpp"
 #include "footfall/io/path_json.hpp"
@@ -39,10 +40,16 @@ constexpr int kExitBadInput = 2;
 // The usage keeps its columns.
 // clang-format off
 const char* const kUsage =
-    "usage: footfall plan SCENARIO -o PLAN [--threads N]\n"
+    "usage: footfall plan SCENARIO -o PLAN [--threads N] [--glb CROWD --rig RIG]\n"
     "                                         plan every agent of a scenario (JSON, or SteerSuite\n"
-    "                                         .xml) on N threads (default 1; same plan either way)\n"
-    "       footfall demo [-o PLAN] [--threads N]  the built-in demo (default out/demo-plan.json)\n"
+    "                                         .xml) on N threads (default 1; same plan either way);\n"
+    "                                         with --glb, also the crowd animated as in animate\n"
+    "       footfall demo [-o PLAN] [--threads N] [--glb CROWD --rig RIG]\n"
+    "                                         the built-in demo (default out/demo-plan.json)\n"
+    "       footfall animate PLAN --rig RIG -o CROWD [--profile PROFILE] [--fps N]\n"
+    "                                         every agent animated on a rig (.glb or .gltf; its\n"
+    "                                         profile beside it by default, RIG.json) as one\n"
+    "                                         animated .glb, N keys a second (default 24)\n"
     "       footfall metrics PLAN             our figures and SteerBench's, per agent, at 20 Hz,\n"
     "                                         and the full-body check of limbs against obstacles\n"
     "       footfall path SCENARIO --from X,Y --to X,Y --radius R\n"
@@ -121,9 +128,22 @@ void print_metrics(const footfall::PlanMetrics& metrics, const footfall::BodyChe
       << ", composite02 " << metrics.composite02 << "\n";
 }
 
+// The options after the verb: "-o PATH", "--threads N", and the crowd's
+// "--glb PATH", "--rig RIG", "--profile PROFILE", "--fps N".
+struct Options {
+  std::string output;
+  int threads = 1;
+  std::string glb;
+  footfall::tools::AnimateArguments animate;
+  bool animate_given = false;  ///< any of --rig, --profile, --fps
+};
+
 // Plans (showing progress when standard error is a terminal), writes the plan
-// atomically (creating the folder), prints the table.
-int plan_and_write(const footfall::Scenario& scenario, const std::string& output, int threads) {
+// atomically (creating the folder), prints the table; with --glb, writes the
+// animated crowd too.
+int plan_and_write(const footfall::Scenario& scenario, const Options& options) {
+  const std::string& output = options.output;
+  const int threads = options.threads;
   footfall::RunControl control;
   control.threads = threads;
   const bool terminal = isatty(STDERR_FILENO) == 1;
@@ -151,14 +171,17 @@ int plan_and_write(const footfall::Scenario& scenario, const std::string& output
             << 1000.0 * search_seconds / static_cast<double>(std::max(1L, searches))
             << " ms each\n";
   std::cout << "plan written to " << output << "\n";
+  if (!options.glb.empty()) footfall::tools::animate_and_write(plan, options.animate, options.glb, std::cout);
   return 0;
 }
 
-// The options after the verb: "-o PATH", "--threads N".
-struct Options {
-  std::string output;
-  int threads = 1;
-};
+// plan's and demo's --glb needs --rig; --rig, --profile and --fps need --glb.
+void check_crowd_options(const Options& options, const std::string& verb) {
+  if (!options.glb.empty() && options.animate.rig.empty())
+    throw UsageError(verb + ": --glb needs --rig RIG");
+  if (options.glb.empty() && options.animate_given)
+    throw UsageError(verb + ": --rig, --profile and --fps go with --glb CROWD");
+}
 
 // A whole number from lo to hi, or a usage error naming the flag.
 int parse_whole(const std::string& flag, const std::string& text, int lo, int hi) {
@@ -169,6 +192,18 @@ int parse_whole(const std::string& flag, const std::string& text, int lo, int hi
     throw UsageError(flag + ": expected a whole number from " + std::to_string(lo) + " to " +
                      std::to_string(hi) + ", got " + user_text(text));
   return n;
+}
+
+// A finite number, or a usage error naming the flag. (strtod, not stod: a
+// number too small for a normal double is still a number.)
+double parse_number(const std::string& flag, const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  const bool whole = !text.empty() && !std::isspace(static_cast<unsigned char>(text[0])) &&
+                     end == text.c_str() + text.size();
+  if (!whole || !std::isfinite(value))
+    throw UsageError(flag + ": expected a finite number, got " + user_text(text));
+  return value;
 }
 
 // Reads the options after the verb; returns the positional arguments.
@@ -182,6 +217,17 @@ std::vector<std::string> parse_arguments(int argc, char** argv, Options& options
     } else if (arg == "--threads") {
       if (i + 1 >= argc) throw UsageError("--threads needs a number");
       options.threads = parse_whole(arg, argv[++i], 1, 64);
+    } else if (arg == "--glb" || arg == "--rig" || arg == "--profile") {
+      if (i + 1 >= argc) throw UsageError(arg + " needs a file name");
+      std::string& value = arg == "--glb" ? options.glb : arg == "--rig" ? options.animate.rig : options.animate.profile;
+      value = argv[++i];
+      options.animate_given = options.animate_given || arg != "--glb";
+    } else if (arg == "--fps") {
+      if (i + 1 >= argc) throw UsageError("--fps needs a number");
+      options.animate.fps = parse_number(arg, argv[++i]);
+      if (options.animate.fps < 1 || options.animate.fps > 240)
+        throw UsageError("--fps: expected a number from 1 to 240, got " + user_text(argv[i]));
+      options.animate_given = true;
     } else if (!arg.empty() && arg[0] == '-') {
       throw UsageError("unknown option " + user_text(arg));
     } else {
@@ -189,18 +235,6 @@ std::vector<std::string> parse_arguments(int argc, char** argv, Options& options
     }
   }
   return positional;
-}
-
-// A finite number, or a usage error naming the flag. (strtod, not stod: a
-// number too small for a normal double is still a number.)
-double parse_number(const std::string& flag, const std::string& text) {
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  const bool whole = !text.empty() && !std::isspace(static_cast<unsigned char>(text[0])) &&
-                     end == text.c_str() + text.size();
-  if (!whole || !std::isfinite(value))
-    throw UsageError(flag + ": expected a finite number, got " + user_text(text));
-  return value;
 }
 
 footfall::Vec2 parse_point(const std::string& flag, const std::string& text) {
@@ -272,22 +306,35 @@ int run(int argc, char** argv) {
     const auto positional = parse_arguments(argc, argv, options);
     if (positional.size() != 1) throw UsageError("plan takes one scenario file");
     if (options.output.empty()) throw UsageError("plan needs -o PLAN");
-    return plan_and_write(footfall::load_scenario_file(positional[0]), options.output,
-                          options.threads);
+    check_crowd_options(options, "plan");
+    return plan_and_write(footfall::load_scenario_file(positional[0]), options);
   }
   if (verb == "demo") {
     Options options;
     options.output = "out/demo-plan.json";
     if (!parse_arguments(argc, argv, options).empty()) throw UsageError("demo takes no file");
-    return plan_and_write(footfall::demo_scenario(), options.output, options.threads);
+    check_crowd_options(options, "demo");
+    return plan_and_write(footfall::demo_scenario(), options);
   }
   if (verb == "metrics") {
     Options options;
     const auto positional = parse_arguments(argc, argv, options);
-    if (positional.size() != 1 || !options.output.empty())
+    if (positional.size() != 1 || !options.output.empty() || !options.glb.empty() ||
+        options.animate_given)
       throw UsageError("metrics takes one plan file");
     const footfall::Plan plan = footfall::load_plan(positional[0]);
     print_metrics(footfall::measure_plan(plan), footfall::check_body(plan), std::cout);
+    return 0;
+  }
+  if (verb == "animate") {
+    Options options;
+    const auto positional = parse_arguments(argc, argv, options);
+    if (positional.size() != 1) throw UsageError("animate takes one plan file");
+    if (options.output.empty() || options.animate.rig.empty())
+      throw UsageError("animate needs --rig RIG and -o CROWD");
+    if (!options.glb.empty()) throw UsageError("animate writes -o CROWD; --glb is plan's");
+    footfall::tools::animate_and_write(footfall::load_plan(positional[0]), options.animate,
+                                       options.output, std::cout);
     return 0;
   }
   if (verb == "path") return print_path(argc, argv);

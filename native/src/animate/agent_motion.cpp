@@ -1,0 +1,204 @@
+#include "animate/agent_motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "animate/clips.hpp"
+#include "animate/section_timing.hpp"
+
+namespace footfall::animate {
+
+namespace {
+
+constexpr double kReach = 0.995;  // share of the leg's length the hips may stretch it to (a locked knee snaps)
+constexpr double kPi = 3.14159265358979323846;
+
+// glTF's frame (Y up) as seen from the plan's (Z up), and back.
+Mat4 y_up_to_z_up() {
+  Mat4 c;
+  c.m[1] = {0, 0, -1, 0};
+  c.m[2] = {0, 1, 0, 0};
+  return c;
+}
+
+// A rigid motion of the plan's world (Z up) expressed in glTF's frame.
+Mat4 in_gltf(const Mat4& motion) {
+  static const Mat4 c = y_up_to_z_up();
+  static const Mat4 c_inverse = inverse(c);
+  return c_inverse * motion * c;
+}
+
+Mat4 turn_about_z(double yaw) { return rotation(axis_angle({0, 0, 1}, yaw)); }
+
+// The rotation taking the frame (a, b) to (c, d): each pair a direction and a
+// second one off it (the knee's plane), orthonormalised.
+Mat4 frame_turn(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  const auto frame = [](Vec3 x, Vec3 y) {
+    x = normalized(x);
+    y = normalized(y - dot(y, x) * x);
+    const Vec3 z = cross(x, y);
+    Mat4 f;
+    f.m[0] = {x.x, y.x, z.x, 0};
+    f.m[1] = {x.y, y.y, z.y, 0};
+    f.m[2] = {x.z, y.z, z.z, 0};
+    return f;
+  };
+  const Mat4 from = frame(a, b);
+  Mat4 from_t;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) from_t.m[i][j] = from.m[j][i];
+  return frame(c, d) * from_t;
+}
+
+// The body's facing: between the feet; in a side step, across the step's
+// direction of travel, on the side the feet point to.
+double facing(const AgentPlan& plan, int step, const std::array<FootPose, 2>& feet) {
+  const double between = std::atan2(std::sin(feet[0].orientation) + std::sin(feet[1].orientation),
+                                    std::cos(feet[0].orientation) + std::cos(feet[1].orientation));
+  if (step < 0 || plan.footsteps[step].kind != StepKind::kSideStep) return between;
+  const Footstep& s = plan.footsteps[step];
+  double across = std::atan2(s.com_end.y - s.com_start.y, s.com_end.x - s.com_start.x) + kPi / 2;
+  if (std::cos(across - between) < 0) across -= kPi;
+  return across;
+}
+
+// The angle nearest `previous` that equals `angle` modulo a turn.
+double unwrapped(double angle, double previous) {
+  return angle + 2 * kPi * std::round((previous - angle) / (2 * kPi));
+}
+
+Trs blend(const Trs& a, const Trs& b, double w) {
+  return {(1 - w) * a.translation + w * b.translation, nlerp(a.rotation, b.rotation, w),
+          (1 - w) * a.scale + w * b.scale};
+}
+
+// Keeps a node's rest translation and scale, with the rotation of `local`:
+// the skeleton stays rigid whatever the IK asked of it.
+Trs rotated_rest(const Trs& rest, const Mat4& local) {
+  Trs trs = rest;
+  trs.rotation = decompose(local).rotation;
+  return trs;
+}
+
+}  // namespace
+
+AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const CharacterParams& character,
+                         const std::vector<double>& times) {
+  AgentMotion motion;
+  const std::size_t frames = times.size();
+  const auto add = [&](int node) {
+    motion.nodes.push_back(node);
+    motion.frames.emplace_back(frames);
+    return motion.nodes.size() - 1;
+  };
+  const std::size_t hips_slot = add(rig.hips);
+  std::array<std::array<std::size_t, 4>, 2> leg_slots;
+  for (int side = 0; side < 2; ++side) {
+    const Leg& leg = rig.legs[side];
+    leg_slots[side] = {add(leg.thigh), add(leg.shin), add(leg.foot), add(leg.toe)};
+  }
+  std::vector<std::size_t> upper_slots;
+  for (int node : rig.upper_body) upper_slots.push_back(add(node));
+
+  const Vec3 hips_head = to_z_up(rig.rest_world[rig.hips].translation());
+  const Mat4 hips_parent = rig.parent[rig.hips] >= 0 ? rig.rest_world[rig.parent[rig.hips]] : Mat4{};
+  const Vec3 forward{std::cos(rig.forward_yaw), std::sin(rig.forward_yaw), 0.0};
+  const Vec3 lateral = cross(forward, {0, 0, 1});  // the feet pitch about it
+  const FootRoller roller(plan, character.preferred_speed);
+  const SectionTiming timing(plan, rig.clips);
+  double body_yaw = 0, previous_yaw = 0;
+  std::array<double, 2> foot_yaw{0, 0}, previous_foot{0, 0};
+
+  for (std::size_t f = 0; f < frames; ++f) {
+    const double t = std::min(times[f], plan.end_time());
+    const Vec2 com = com_at(plan, t).position;
+    const std::array<FootPose, 2> feet = feet_at(plan, t);
+    const auto later = std::upper_bound(plan.footsteps.begin(), plan.footsteps.end(), t,
+                                        [](double time, const Footstep& s) { return time < s.start_time; });
+    const int step = static_cast<int>(later - plan.footsteps.begin()) - 1;
+    body_yaw = facing(plan, step, feet) - rig.forward_yaw;
+    if (f > 0) body_yaw = unwrapped(body_yaw, previous_yaw);
+    previous_yaw = body_yaw;
+
+    // The ankles where the feet roll, and the hips as high as at rest but low
+    // enough for both legs to reach.
+    std::array<Vec3, 2> ankles, flats;
+    std::array<FootRoll, 2> rolls;
+    double height = hips_head.z;
+    const Mat4 body_turn = turn_about_z(body_yaw);
+    for (int side = 0; side < 2; ++side) {
+      const Leg& leg = rig.legs[side];
+      const FootPose& foot = feet[side];
+      foot_yaw[side] = foot.orientation - rig.forward_yaw;
+      if (f > 0) foot_yaw[side] = unwrapped(foot_yaw[side], previous_foot[side]);
+      previous_foot[side] = foot_yaw[side];
+      rolls[side] = roller.at(t, side, foot.planted, leg.shape);
+      flats[side] = {foot.position.x, foot.position.y, leg.ankle.z + foot.lift};
+      ankles[side] = flats[side] + Vec3{rolls[side].forward * std::cos(foot.orientation),
+                                        rolls[side].forward * std::sin(foot.orientation), rolls[side].up};
+      const Vec3 offset = leg.hip - hips_head;
+      const Vec3 hip = Vec3{com.x, com.y, 0} + transform_direction(body_turn, {offset.x, offset.y, 0});
+      const double horizontal = std::hypot(hip.x - ankles[side].x, hip.y - ankles[side].y);
+      const double reach = kReach * (leg.upper + leg.lower);
+      const double rise = std::sqrt(std::max(reach * reach - horizontal * horizontal, 0.0));
+      height = std::min(height, ankles[side].z + rise - offset.z);
+    }
+
+    // The hips: turned by the body's yaw about their head, the head on the COM path.
+    const Mat4 body = translation({com.x, com.y, height}) * body_turn * translation(-1.0 * hips_head);
+    const Mat4 hips_world = in_gltf(body) * rig.rest_world[rig.hips];
+    motion.frames[hips_slot][f] = decompose(local_under(hips_parent, hips_world));
+
+    for (int side = 0; side < 2; ++side) {
+      const Leg& leg = rig.legs[side];
+      const Vec3 hip = transform_point(body, leg.hip);
+      const Mat4 foot_turn = turn_about_z(foot_yaw[side]);
+      const Vec3 pole = flats[side] + transform_direction(foot_turn, leg.pole_ahead);
+      const Vec3 pole_rest = leg.ankle + leg.pole_ahead;
+      // The knee in the plane of hip, ankle and pole, the legs' lengths kept.
+      const Vec3 to_ankle = ankles[side] - hip;
+      const double longest = leg.upper + leg.lower;
+      const double d = std::clamp(length(to_ankle), std::abs(leg.upper - leg.lower) + 1e-6, longest - 1e-9);
+      const Vec3 u = normalized(to_ankle);
+      const double along = (leg.upper * leg.upper - leg.lower * leg.lower + d * d) / (2 * d);
+      const double out = std::sqrt(std::max(leg.upper * leg.upper - along * along, 0.0));
+      const Vec3 off = (pole - hip) - dot(pole - hip, u) * u;
+      const Vec3 knee = hip + along * u + out * normalized(off);
+      const Vec3 ankle = hip + d * u;
+
+      const Mat4 thigh_turn = translation(hip) *
+                              frame_turn(leg.knee - leg.hip, pole_rest - leg.hip, knee - hip, pole - hip) *
+                              translation(-1.0 * leg.hip);
+      const Mat4 shin_turn = translation(knee) *
+                             frame_turn(leg.ankle - leg.knee, pole_rest - leg.knee, ankle - knee, pole - knee) *
+                             translation(-1.0 * leg.knee);
+      const Mat4 foot_motion = translation(ankle) * foot_turn * rotation(axis_angle(lateral, rolls[side].pitch)) *
+                               translation(-1.0 * leg.ankle);
+      const Mat4 thigh_world = in_gltf(thigh_turn) * rig.rest_world[leg.thigh];
+      const Mat4 shin_world = in_gltf(shin_turn) * rig.rest_world[leg.shin];
+      const Mat4 foot_world = in_gltf(foot_motion) * rig.rest_world[leg.foot];
+      const Mat4 thigh_parent = hips_world * inverse(rig.rest_world[rig.hips]) * rig.rest_world[rig.parent[leg.thigh]];
+      motion.frames[leg_slots[side][0]][f] = rotated_rest(rig.rest_trs[leg.thigh], local_under(thigh_parent, thigh_world));
+      motion.frames[leg_slots[side][1]][f] = rotated_rest(rig.rest_trs[leg.shin], local_under(thigh_world, shin_world));
+      motion.frames[leg_slots[side][2]][f] = rotated_rest(rig.rest_trs[leg.foot], local_under(shin_world, foot_world));
+      // The toe bends back as the heel rises, staying flat on the ground.
+      const Quat toe_world = decompose(rig.rest_world[leg.toe]).rotation;
+      const Vec3 axis = rotate({toe_world.w, -toe_world.x, -toe_world.y, -toe_world.z}, to_y_up(lateral));
+      Trs toe = rig.rest_trs[leg.toe];
+      toe.rotation = toe.rotation * axis_angle(axis, -std::min(rolls[side].pitch, 0.0));
+      motion.frames[leg_slots[side][3]][f] = toe;
+    }
+
+    const ClipPhase phase = timing.at(times[f]);
+    for (std::size_t i = 0; i < upper_slots.size(); ++i) {
+      const int node = rig.upper_body[i];
+      Trs pose = sample(*phase.clip, node, rig.rest_trs[node], phase.time);
+      if (phase.next_weight > 0)
+        pose = blend(pose, sample(*phase.next, node, rig.rest_trs[node], phase.next_time), phase.next_weight);
+      motion.frames[upper_slots[i]][f] = pose;
+    }
+  }
+  return motion;
+}
+
+}  // namespace footfall::animate

@@ -1,0 +1,59 @@
+// Footfall — heel-toe roll: the foot's pitch through each stance and swing,
+// and where the ankle goes so that the point the foot rolls on stays put.
+// The model is documented once, in docs/animation.md; the add-on's
+// core/foot_roll.py computes the same.
+#pragma once
+
+#include <vector>
+
+#include "footfall/plan/plan.hpp"
+
+namespace footfall::animate {
+
+constexpr double kHeelStrike = 0.2617993877991494;  ///< 15 deg: toes up at heel strike, at full speed
+constexpr double kToeOff = 0.5235987755982988;      ///< 30 deg: heel up at toe-off, at full speed
+constexpr double kFlatAt = 0.15;     ///< of the stance: the foot is flat from here
+constexpr double kHeelOffAt = 0.6;   ///< of the stance: the heel rises from here
+constexpr double kHeelShare = 0.25;  ///< of the foot's length behind the ankle, without a mesh
+
+/// The foot seen from the side, flat on the ground, from the point under the
+/// ankle: the ankle's height, the heel's contact behind it, the ball (toe
+/// joint) ahead of and above it. [m]
+struct FootShape {
+  double ankle_height = 0;
+  double heel_back = 0;
+  double ball_ahead = 0;
+  double ball_height = 0;
+};
+
+/// A foot's pitch [rad, toes up positive] and the ankle's displacement from
+/// where it stands with the foot flat, along the foot's forward and up. [m]
+struct FootRoll {
+  double pitch = 0;
+  double forward = 0;
+  double up = 0;
+};
+
+/// The ankle's offset at `pitch`: turning on the heel (toes up) or the ball.
+FootRoll roll_at_pitch(const FootShape& shape, double pitch);
+
+/// The roll of both feet of one agent's plan, step by step.
+class FootRoller {
+ public:
+  /// `full_speed`: the speed at which the amplitudes are full (the
+  /// character's preferred speed). [m/s]
+  FootRoller(const AgentPlan& plan, double full_speed);
+  /// Foot `side` (0 left, 1 right) at time `t`, where the plan has it
+  /// `planted` or not.
+  FootRoll at(double t, int side, bool planted, const FootShape& shape) const;
+
+ private:
+  const AgentPlan* plan_;
+  bool leaves_;
+  std::vector<double> strike_;   ///< per step: pitch at its heel strike
+  std::vector<double> toe_off_;  ///< per step: pitch at its toe-off
+  std::vector<char> rolling_;    ///< per step: the body goes over the feet at some speed
+  double walk_on_ = 0;           ///< the strike of the step a leaving agent would take next
+};
+
+}  // namespace footfall::animate

@@ -1,0 +1,307 @@
+// Reading a rig: the glTF document (tinygltf), its rest pose, the bones the
+// profile names, the legs' geometry and the clips.
+#include "footfall/animate/rig.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+#include "animate/accessor_data.hpp"
+#include "animate/clips.hpp"
+#include "animate/rig_data.hpp"
+#include "util/quoted.hpp"
+
+namespace footfall {
+
+namespace {
+
+using animate::Mat4;
+using animate::RigData;
+using animate::to_z_up;
+using detail::user_text;
+
+constexpr double kPoleAhead = 0.5;  // [m] knee poles in front of the knees, as the add-on's
+constexpr const char* kBehaviors[] = {"walk", "arms_in", "side_step", "idle"};
+
+// Images are carried over as they are, never decoded.
+bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+  if (image->bufferView < 0) image->image.assign(bytes, bytes + size);  // a data URI's
+  return true;
+}
+
+tinygltf::Model read_model(const std::string& path) {
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(keep_image_bytes, nullptr);
+  tinygltf::Model model;
+  std::string error, warning;
+  const bool binary = path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
+  const bool ok = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
+                         : loader.LoadASCIIFromFile(&model, &error, &warning, path);
+  if (!ok) {
+    std::string first = error.substr(0, error.find('\n'));
+    throw std::invalid_argument(path + ": not a glTF file this Footfall can read: " +
+                                user_text(first.empty() ? "no reason given" : first));
+  }
+  for (const std::string& extension : model.extensionsRequired) {
+    throw std::invalid_argument(path + ": needs the glTF extension " + user_text(extension) +
+                                ", which Footfall cannot carry into a crowd");
+  }
+  return model;
+}
+
+Mat4 local_matrix(const tinygltf::Node& node) {
+  if (node.matrix.size() == 16) {
+    Mat4 m;  // glTF stores columns
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) m.m[r][c] = node.matrix[4 * c + r];
+    return m;
+  }
+  animate::Trs trs;
+  if (node.translation.size() == 3) trs.translation = {node.translation[0], node.translation[1], node.translation[2]};
+  if (node.rotation.size() == 4)
+    trs.rotation = animate::normalized({node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]});
+  if (node.scale.size() == 3) trs.scale = {node.scale[0], node.scale[1], node.scale[2]};
+  return animate::to_matrix(trs);
+}
+
+// A transform that is a rotation, a uniform or per-axis scale and a
+// translation, without shear or mirror, as poses of its children need.
+bool without_shear(const Mat4& m) {
+  const animate::Trs trs = animate::decompose(m);
+  if (!(trs.scale.x > 0 && trs.scale.y > 0 && trs.scale.z > 0)) return false;
+  const Mat4 back = animate::to_matrix(trs);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(back.m[r][c] - m.m[r][c]) > 1e-5 * std::max(1.0, std::abs(m.m[r][c]))) return false;
+  return true;
+}
+
+void read_hierarchy(RigData& rig) {
+  const auto& nodes = rig.model.nodes;
+  const std::size_t n = nodes.size();
+  rig.parent.assign(n, -1);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int child : nodes[i].children) {
+      if (child < 0 || child >= static_cast<int>(n) || rig.parent[child] >= 0)
+        throw std::invalid_argument(rig.path + ": nodes[" + std::to_string(i) + "]: a child that is not a node, or has two parents");
+      rig.parent[child] = static_cast<int>(i);
+    }
+  const int scene = rig.model.defaultScene >= 0 ? rig.model.defaultScene : 0;
+  if (scene < static_cast<int>(rig.model.scenes.size())) {
+    rig.scene_roots = rig.model.scenes[scene].nodes;
+  } else {
+    for (std::size_t i = 0; i < n; ++i)
+      if (rig.parent[i] < 0) rig.scene_roots.push_back(static_cast<int>(i));
+  }
+  rig.rest_local.resize(n);
+  rig.rest_trs.resize(n);
+  rig.rest_world.resize(n);
+  std::vector<char> placed(n, 0);
+  const std::function<void(int, const Mat4&, int)> place = [&](int node, const Mat4& above, int depth) {
+    if (depth > static_cast<int>(n) || placed[node])
+      throw std::invalid_argument(rig.path + ": the node hierarchy has a cycle");
+    placed[node] = 1;
+    rig.rest_local[node] = local_matrix(nodes[node]);
+    rig.rest_trs[node] = animate::decompose(rig.rest_local[node]);
+    rig.rest_world[node] = above * rig.rest_local[node];
+    for (int child : nodes[node].children) place(child, rig.rest_world[node], depth + 1);
+  };
+  for (int root : rig.scene_roots) {
+    if (root < 0 || root >= static_cast<int>(n) || rig.parent[root] >= 0)
+      throw std::invalid_argument(rig.path + ": the scene lists a node that is not a root");
+    place(root, Mat4{}, 0);
+  }
+  rig.in_scene = placed;
+}
+
+// The node of a bone the profile names: one of the skin's joints.
+int bone(const RigData& rig, const std::vector<int>& joints, const std::string& name, const std::string& field) {
+  int found = -1;
+  for (int joint : joints) {
+    if (rig.model.nodes[joint].name != name) continue;
+    if (found >= 0)
+      throw std::invalid_argument(rig.path + ": " + field + " = " + user_text(name) + ": two bones have that name");
+    found = joint;
+  }
+  if (found < 0)
+    throw std::invalid_argument(rig.path + ": " + field + " = " + user_text(name) + ": the rig has no such bone");
+  return found;
+}
+
+// Rest positions (Z up) of the skinned vertices whose strongest joint is
+// one of `joints`.
+std::vector<Vec3> skinned_points(const RigData& rig, const std::vector<int>& joints) {
+  const tinygltf::Skin& skin = rig.model.skins[rig.skin];
+  std::vector<Mat4> bind(skin.joints.size());  // joint world at rest times its inverse bind matrix
+  const std::vector<double> inverse =
+      skin.inverseBindMatrices >= 0 ? animate::accessor_values(rig.model, skin.inverseBindMatrices) : std::vector<double>{};
+  for (std::size_t j = 0; j < skin.joints.size(); ++j) {
+    Mat4 ibm;
+    if (inverse.size() >= 16 * (j + 1))
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) ibm.m[r][c] = inverse[16 * j + 4 * c + r];
+    bind[j] = rig.rest_world[skin.joints[j]] * ibm;
+  }
+  std::vector<Vec3> points;
+  for (std::size_t node = 0; node < rig.model.nodes.size(); ++node) {
+    const tinygltf::Node& n = rig.model.nodes[node];
+    if (n.skin != rig.skin || n.mesh < 0) continue;
+    for (const tinygltf::Primitive& primitive : rig.model.meshes[n.mesh].primitives) {
+      const auto position = primitive.attributes.find("POSITION");
+      const auto joint = primitive.attributes.find("JOINTS_0");
+      const auto weight = primitive.attributes.find("WEIGHTS_0");
+      if (position == primitive.attributes.end() || joint == primitive.attributes.end() ||
+          weight == primitive.attributes.end())
+        continue;
+      const auto p = animate::accessor_values(rig.model, position->second);
+      const auto j = animate::accessor_values(rig.model, joint->second);
+      const auto w = animate::accessor_values(rig.model, weight->second);
+      const std::size_t count = std::min({p.size() / 3, j.size() / 4, w.size() / 4});
+      for (std::size_t v = 0; v < count; ++v) {
+        const std::size_t strongest = static_cast<std::size_t>(std::max_element(&w[4 * v], &w[4 * v + 4]) - &w[4 * v]);
+        const auto index = static_cast<std::size_t>(j[4 * v + strongest]);
+        if (index >= skin.joints.size() ||
+            std::find(joints.begin(), joints.end(), skin.joints[index]) == joints.end())
+          continue;
+        Vec3 world{0, 0, 0};
+        for (int k = 0; k < 4; ++k) {
+          const auto jk = static_cast<std::size_t>(j[4 * v + k]);
+          if (w[4 * v + k] <= 0 || jk >= bind.size()) continue;
+          world = world + w[4 * v + k] * animate::transform_point(bind[jk], {p[3 * v], p[3 * v + 1], p[3 * v + 2]});
+        }
+        points.push_back(to_z_up(world));
+      }
+    }
+  }
+  return points;
+}
+
+void read_legs(RigData& rig, const RigProfile& profile) {
+  Vec3 forward{0, 0, 0};
+  for (int side = 0; side < 2; ++side) {
+    const animate::Leg& leg = rig.legs[side];
+    forward = forward + (to_z_up(rig.rest_world[leg.toe].translation()) - to_z_up(rig.rest_world[leg.foot].translation()));
+  }
+  forward.z = 0;
+  if (length(forward) < 1e-9)
+    throw std::invalid_argument(rig.path + ": the feet point straight up or down at rest: the rig's facing is unclear");
+  forward = animate::normalized(forward);
+  rig.forward_yaw = std::atan2(forward.y, forward.x);
+  double hips = 0;
+  for (int side = 0; side < 2; ++side) {
+    animate::Leg& leg = rig.legs[side];
+    leg.hip = to_z_up(rig.rest_world[leg.thigh].translation());
+    leg.knee = to_z_up(rig.rest_world[leg.shin].translation());
+    leg.ankle = to_z_up(rig.rest_world[leg.foot].translation());
+    const Vec3 ball = to_z_up(rig.rest_world[leg.toe].translation());
+    leg.upper = length(leg.knee - leg.hip);
+    leg.lower = length(leg.ankle - leg.knee);
+    leg.pole_ahead = (leg.knee + kPoleAhead * forward) - leg.ankle;
+    const auto found = profile.dimensions.find("foot_length");
+    const double foot_length = found != profile.dimensions.end() ? found->second : length(ball - leg.ankle) / (1 - animate::kHeelShare);
+    double heel = 0;
+    for (const Vec3& p : skinned_points(rig, {leg.foot, leg.toe})) heel = std::max(heel, -dot(p - leg.ankle, forward));
+    leg.shape = {leg.ankle.z, heel > 0 ? heel : animate::kHeelShare * foot_length, dot(ball - leg.ankle, forward), ball.z};
+    hips += 0.5 * leg.hip.z;
+  }
+  rig.hip_height = hips;
+  if (!(rig.hip_height > 0))
+    throw std::invalid_argument(rig.path + ": the hip joints are not above the ground (z = 0) at rest: a rig lying down or below the floor");
+}
+
+void read_clips(RigData& rig, const RigProfile& profile) {
+  const auto& animations = rig.model.animations;
+  const auto find = [&](const std::string& name, bool exact) {
+    for (std::size_t i = 0; i < animations.size(); ++i) {
+      std::string a = animations[i].name, b = name;
+      if (!exact) {
+        std::transform(a.begin(), a.end(), a.begin(), [](unsigned char c) { return std::tolower(c); });
+        std::transform(b.begin(), b.end(), b.begin(), [](unsigned char c) { return std::tolower(c); });
+      }
+      if (a == b) return static_cast<int>(i);
+    }
+    return -1;
+  };
+  for (const char* behavior : kBehaviors) {
+    const auto named = profile.clips.find(behavior);
+    int index = -1;
+    if (named != profile.clips.end()) {
+      index = find(named->second, true);
+      if (index < 0) {
+        std::string names;
+        for (const auto& a : animations) names += (names.empty() ? "" : ", ") + user_text(a.name);
+        throw std::invalid_argument(rig.path + ": clips." + behavior + " = " + user_text(named->second) +
+                                    ": the rig has no such animation (it has: " + (names.empty() ? "none" : names) + ")");
+      }
+    } else {
+      index = find(behavior, false);
+    }
+    rig.clips[behavior] = index >= 0 ? animate::clip_from_animation(rig, index) : animate::procedural_clip(rig, behavior);
+  }
+}
+
+}  // namespace
+
+Rig Rig::load(const std::string& path, const RigProfile& profile) {
+  auto rig = std::make_shared<RigData>();
+  rig->path = path;
+  rig->model = read_model(path);
+  read_hierarchy(*rig);
+  const std::vector<tinygltf::Skin>& skins = rig->model.skins;
+  for (std::size_t s = 0; s < skins.size() && rig->skin < 0; ++s)
+    for (int joint : skins[s].joints)
+      if (joint >= 0 && joint < static_cast<int>(rig->model.nodes.size()) && rig->model.nodes[joint].name == profile.hips)
+        rig->skin = static_cast<int>(s);
+  if (rig->skin < 0)
+    throw std::invalid_argument(path + ": no skin has the bone " + user_text(profile.hips) +
+                                " (bones.hips): the rig needs a skinned mesh on a skeleton");
+  const std::vector<int>& joints = skins[rig->skin].joints;
+  for (int joint : joints)
+    if (joint < 0 || joint >= static_cast<int>(rig->model.nodes.size()) || !rig->in_scene[joint])
+      throw std::invalid_argument(path + ": skins[" + std::to_string(rig->skin) +
+                                  "]: a joint that is not a node of the rig's scene");
+  rig->hips = bone(*rig, joints, profile.hips, "bones.hips");
+  const char* sides[] = {"left", "right"};
+  for (int side = 0; side < 2; ++side) {
+    const RigProfile::Limb& limb = profile.sides[side];
+    const std::string field = std::string("bones.") + sides[side] + ".";
+    animate::Leg& leg = rig->legs[side];
+    leg.thigh = bone(*rig, joints, limb.thigh, field + "thigh");
+    leg.shin = bone(*rig, joints, limb.shin, field + "shin");
+    leg.foot = bone(*rig, joints, limb.foot, field + "foot");
+    leg.toe = bone(*rig, joints, limb.toe, field + "toe");
+    rig->upper_arms[side] = bone(*rig, joints, limb.upper_arm, field + "upper_arm");
+    rig->forearms[side] = bone(*rig, joints, limb.forearm, field + "forearm");
+    rig->hands[side] = bone(*rig, joints, limb.hand, field + "hand");
+  }
+  for (int joint : joints)
+    if (!without_shear(rig->rest_world[joint]))
+      throw std::invalid_argument(path + ": bone " + user_text(rig->model.nodes[joint].name) +
+                                  ": its rest transform mirrors or shears it (apply the scale in the modelling tool first)");
+  read_legs(*rig, profile);
+  // The bones a clip poses: below the hips, the legs left out.
+  for (int joint : joints) {
+    bool below = false;
+    for (int up = rig->parent[joint]; up >= 0 && !below; up = rig->parent[up]) below = up == rig->hips;
+    bool leg = false;
+    for (const animate::Leg& l : rig->legs) leg = leg || joint == l.thigh || joint == l.shin || joint == l.foot || joint == l.toe;
+    if (below && !leg) rig->upper_body.push_back(joint);
+  }
+  read_clips(*rig, profile);
+  Rig result;
+  result.data_ = std::move(rig);
+  return result;
+}
+
+double Rig::hip_height() const { return data_->hip_height; }
+const std::string& Rig::path() const { return data_->path; }
+
+std::map<std::string, std::string> Rig::clip_sources() const {
+  std::map<std::string, std::string> sources;
+  for (const auto& [behavior, clip] : data_->clips) sources[behavior] = clip.source;
+  return sources;
+}
+
+}  // namespace footfall

@@ -1,0 +1,233 @@
+"""The core's animated crowd (`footfall animate`, `plan --glb`,
+`animate_gltf`): valid glTF, read back by an independent reader
+(crowd_glb), with every planted foot's contact point on the plan and the
+hips on the planned COM path, for the project's rig and for one under a
+parent transform; bad input refused with no file left."""
+
+import json
+import math
+import pathlib
+import struct
+import subprocess
+
+import numpy
+import pytest
+
+from crowd_glb import CrowdGlb, z_up
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+RIG = ROOT / "rigs" / "footfall_humanoid.glb"
+PROFILE = ROOT / "rigs" / "footfall_humanoid.json"
+VALIDATOR = ROOT / "tests" / "gltf" / "validate.mjs"
+CONTACT_TOLERANCE = 0.002  # [m] a planted foot's contact point from the plan
+HIPS_TOLERANCE = 0.02  # [m] the hips from the planned COM, on the ground
+
+
+def validator_errors(path):
+    run = subprocess.run(["node", str(VALIDATOR), str(path)], capture_output=True, text=True)
+    return json.loads(run.stdout)["issues"]["numErrors"], run.stdout
+
+
+class RigFeet:
+    """Each foot of a rig at rest, Z up: ankle, ball and heel contact, read
+    from the rig's file (the heel: the skinned vertex furthest behind the
+    ankle among those whose strongest joint is the foot or toe)."""
+
+    def __init__(self, rig_path, profile):
+        rig = CrowdGlb(rig_path)
+        document = rig.document
+        names = {node.get("name"): i for i, node in enumerate(document["nodes"])}
+        world = rig.world_matrices(None, numpy.zeros(1))
+        bones = profile["bones"]
+        self.sides = {}
+        forward = numpy.zeros(3)
+        for side in ("left", "right"):
+            foot, toe = names[bones[side]["foot"]], names[bones[side]["toe"]]
+            forward += z_up(world[toe][0, :3, 3]) - z_up(world[foot][0, :3, 3])
+        forward[2] = 0.0
+        self.yaw = math.atan2(forward[1], forward[0])
+        forward /= numpy.linalg.norm(forward)
+        skin = document["skins"][0]
+        binds = [world[j][0] @ m for j, m in zip(skin["joints"], rig.accessor(skin["inverseBindMatrices"]))]
+        mesh_node = next(n for n in document["nodes"] if "skin" in n and "mesh" in n)
+        for side in ("left", "right"):
+            foot, toe = names[bones[side]["foot"]], names[bones[side]["toe"]]
+            ankle = z_up(world[foot][0, :3, 3])
+            points = []
+            for primitive in document["meshes"][mesh_node["mesh"]]["primitives"]:
+                attributes = primitive["attributes"]
+                positions = rig.accessor(attributes["POSITION"])
+                joints = rig.accessor(attributes["JOINTS_0"]).astype(int)
+                weights = rig.accessor(attributes["WEIGHTS_0"])
+                for p, j, w in zip(positions, joints, weights):
+                    if skin["joints"][j[numpy.argmax(w)]] not in (foot, toe):
+                        continue
+                    skinned = sum(wk * (binds[jk] @ numpy.append(p, 1.0))[:3] for jk, wk in zip(j, w) if wk > 0)
+                    points.append(z_up(skinned))
+            heel_back = max(-numpy.dot(p - ankle, forward) for p in points)
+            self.sides[side] = {
+                "foot": bones[side]["foot"], "toe": bones[side]["toe"], "ankle": ankle,
+                "ball": z_up(world[toe][0, :3, 3]),
+                "heel": numpy.array([ankle[0], ankle[1], 0.0]) - heel_back * forward,
+                "rest": world[foot][0],
+            }
+        self.hips = bones["hips"]
+
+
+def turn(angle):
+    c, s = math.cos(angle), math.sin(angle)
+    return numpy.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+def measure(ff, plan, crowd_path, feet):
+    """(worst contact error of a planted foot, worst hips-to-COM distance on
+    the ground, stance frames checked) over every agent and key."""
+    crowd = CrowdGlb(crowd_path)
+    worst_contact = worst_hips = 0.0
+    checked = 0
+    y_up_to_z_up = numpy.array([[1, 0, 0, 0], [0, 0, -1, 0], [0, 1, 0, 0], [0, 0, 0, 1.0]])
+    for agent in plan.agents:
+        times = crowd.animation_times(agent.name)
+        root = crowd.agent_root(agent.name)
+        nodes = crowd.subtree(root)
+        wanted = [feet.hips] + [feet.sides[s][k] for s in feet.sides for k in ("foot", "toe")]
+        world = crowd.world_matrices(agent.name, times, [nodes[n] for n in wanted])
+        shown = times <= agent.end_time() + 1e-6 if agent.leaves else numpy.ones(len(times), dtype=bool)
+        for i, t in enumerate(times):
+            if not shown[i]:
+                continue
+            planned_t = min(float(t), agent.end_time())
+            com = ff.com_at(agent, planned_t).position
+            hips = z_up(world[nodes[feet.hips]][i, :3, 3])
+            worst_hips = max(worst_hips, math.hypot(hips[0] - com[0], hips[1] - com[1]))
+            for side, pose in zip(("left", "right"), ff.feet_at(agent, planned_t)):
+                if not pose.planted:
+                    continue
+                rest = feet.sides[side]
+                rotation = turn(pose.orientation - feet.yaw)
+                ankle = numpy.array([pose.position[0], pose.position[1], rest["ankle"][2]])
+                planned = [ankle, ankle + rotation @ (rest["ball"] - rest["ankle"]),
+                           ankle + rotation @ (rest["heel"] - rest["ankle"])]
+                foot_world = world[nodes[rest["foot"]]][i]
+                # The heel rides with the foot: its rest point carried by the foot's motion.
+                heel_local = numpy.linalg.inv(y_up_to_z_up @ rest["rest"]) @ numpy.append(rest["heel"], 1.0)
+                posed = [z_up(foot_world[:3, 3]), z_up(world[nodes[rest["toe"]]][i, :3, 3]),
+                         (y_up_to_z_up @ foot_world @ heel_local)[:3]]
+                worst_contact = max(worst_contact, min(numpy.linalg.norm(a - b) for a, b in zip(posed, planned)))
+                checked += 1
+    return worst_contact, worst_hips, checked
+
+
+@pytest.fixture(scope="module")
+def demo(tmp_path_factory, cli):
+    folder = tmp_path_factory.mktemp("crowd")
+    plan, crowd = folder / "plan.json", folder / "crowd.glb"
+    run = subprocess.run([cli, "demo", "-o", str(plan), "--glb", str(crowd), "--rig", str(RIG)],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    return plan, crowd, run.stdout
+
+
+def test_demo_crowd_is_valid_gltf_with_an_animation_per_agent(ff, demo):
+    plan_path, crowd_path, output = demo
+    errors, report = validator_errors(crowd_path)
+    assert errors == 0, report[:2000]
+    plan = ff.load_plan(str(plan_path))
+    crowd = CrowdGlb(crowd_path)
+    assert sorted(crowd.animation_names()) == sorted(a.name for a in plan.agents)
+    assert "walk = 'walk'" in output  # the rig's own clips play
+    # One mesh, shared: its data is in the file once, however many agents.
+    assert len(crowd.document["meshes"]) == 1
+    assert len(crowd.document["skins"]) == len(plan.agents)
+    for accessor in crowd.document["accessors"]:
+        assert "min" in accessor and "max" in accessor or accessor.get("bufferView") is not None
+
+
+def test_demo_feet_stay_on_the_plan_and_hips_on_the_com_path(ff, demo):
+    plan_path, crowd_path, _ = demo
+    plan = ff.load_plan(str(plan_path))
+    contact, hips, checked = measure(ff, plan, crowd_path, RigFeet(RIG, json.loads(PROFILE.read_text())))
+    print(f"demo: worst contact {1000 * contact:.2f} mm over {checked} planted feet, hips {100 * hips:.2f} cm")
+    assert checked > 500
+    assert contact < CONTACT_TOLERANCE
+    assert hips < HIPS_TOLERANCE
+
+
+def with_parent_transform(source, target):
+    """The rig under a new root that turns it a quarter about the vertical,
+    moves it and scales it by 0.01, its old root scaled up by 100 to match:
+    the same body, standing elsewhere, through transforms a converted FBX has."""
+    data = source.read_bytes()
+    length = struct.unpack_from("<I", data, 12)[0]
+    document = json.loads(data[20:20 + length])
+    binary = data[20 + length:]
+    scene = document["scenes"][document.get("scene", 0)]
+    for root in scene["nodes"]:
+        node = document["nodes"][root]
+        node["scale"] = [100.0 * s for s in node.get("scale", [1.0, 1.0, 1.0])]
+        node["translation"] = [100.0 * t for t in node.get("translation", [0.0, 0.0, 0.0])]
+    half = math.sqrt(0.5)
+    document["nodes"].append({"name": "fbx_root", "children": scene["nodes"], "rotation": [0.0, half, 0.0, half],
+                              "translation": [3.0, 0.0, -2.0], "scale": [0.01, 0.01, 0.01]})
+    scene["nodes"] = [len(document["nodes"]) - 1]
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    body = struct.pack("<I4s", len(text), b"JSON") + text + binary
+    target.write_bytes(struct.pack("<4sII", b"glTF", 2, 12 + len(body)) + body)
+
+
+def test_a_rig_under_a_parent_transform_puts_its_feet_on_the_plan(ff, cli, demo, tmp_path):
+    plan_path, _, _ = demo
+    rig = tmp_path / "turned.glb"
+    with_parent_transform(RIG, rig)
+    crowd = tmp_path / "crowd.glb"
+    summary = ff.animate_gltf(ff.load_plan(str(plan_path)), str(rig), str(crowd), fps=30,
+                              profile_path=str(PROFILE))
+    assert summary["frames"] > 1 and crowd.stat().st_size == summary["bytes"]
+    errors, report = validator_errors(crowd)
+    assert errors == 0, report[:2000]
+    plan = ff.load_plan(str(plan_path))
+    contact, hips, checked = measure(ff, plan, crowd, RigFeet(rig, json.loads(PROFILE.read_text())))
+    print(f"turned rig: worst contact {1000 * contact:.2f} mm over {checked} planted feet, hips {100 * hips:.2f} cm")
+    assert contact < CONTACT_TOLERANCE
+    assert hips < HIPS_TOLERANCE
+
+
+def run_animate(cli, *arguments):
+    return subprocess.run([cli, "animate", *map(str, arguments)], capture_output=True, text=True)
+
+
+def test_bad_input_is_refused_in_one_line_with_no_file(ff, cli, demo, tmp_path):
+    plan_path, _, _ = demo
+    out = tmp_path / "out.glb"
+    # A rig without a skin: its profile names bones it has as nodes, not joints.
+    document = {"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"name": "hips"}]}
+    unskinned = tmp_path / "unskinned.gltf"
+    unskinned.write_text(json.dumps(document))
+    profile = json.loads(PROFILE.read_text())
+    renamed = json.loads(PROFILE.read_text())
+    renamed["bones"]["left"]["foot"] = "Foot_L"
+    bad_profile = tmp_path / "renamed.json"
+    bad_profile.write_text(json.dumps(renamed))
+    # A plan for a character twice the rig's size.
+    giant = json.loads(plan_path.read_text())
+    giant["character"]["com_height"] = 2 * giant["character"]["com_height"]
+    giant_plan = tmp_path / "giant.json"
+    giant_plan.write_text(json.dumps(giant))
+    cases = [
+        ((plan_path, "--rig", unskinned, "--profile", PROFILE, "-o", out), "no skin has the bone 'hips'"),
+        ((plan_path, "--rig", RIG, "--profile", bad_profile, "-o", out), "bones.left.foot = 'Foot_L'"),
+        ((giant_plan, "--rig", RIG, "-o", out), "stands -51 % off"),
+        ((plan_path, "--rig", tmp_path / "none.glb", "-o", out), "no rig profile beside it"),
+        ((plan_path, "--rig", RIG, "--fps", "0", "-o", out), "--fps: expected a number from 1 to 240"),
+        ((plan_path, "--rig", RIG), "animate needs --rig RIG and -o CROWD"),
+    ]
+    for arguments, message in cases:
+        run = run_animate(cli, *arguments)
+        assert run.returncode == 2, (arguments, run.stderr)
+        assert message in run.stderr and run.stderr.count("\n") == 1, run.stderr
+        assert not out.exists() and not list(tmp_path.glob(".out.glb*")), arguments
+    assert profile["bones"]["left"]["foot"] == "foot.L"
+    with pytest.raises(ValueError, match="the rig has no such bone"):
+        ff.animate_gltf(ff.load_plan(str(plan_path)), str(RIG), str(out), profile_path=str(bad_profile))
+    assert not out.exists()
