@@ -1,0 +1,76 @@
+"""Blender background test: the same plan animated by the add-on (Apply) and
+by the core's headless writer (footfall._native.animate_gltf) puts the feet
+in the same places at every frame.
+
+Run: blender -b --factory-startup --python-exit-code 1 --python tests/blender/test_headless_gltf.py
+"""
+
+import os
+import pathlib
+import sys
+import tempfile
+
+import bpy  # first: as a Python module, bpy puts Blender's own modules on the path
+import addon_utils  # noqa: E402
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from harness import check, run  # noqa: E402
+import numpy  # noqa: E402
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+sys.path.insert(0, os.environ.get("FOOTFALL_ADDON_DIR", str(ROOT / "blender_addon")))
+sys.path.insert(0, str(ROOT / "tests" / "python"))
+from crowd_glb import CrowdGlb, z_up  # noqa: E402
+
+TMP = pathlib.Path(tempfile.mkdtemp(prefix="footfall-headless-"))
+RIG = ROOT / "rigs" / "footfall_humanoid.glb"
+PROFILE = ROOT / "rigs" / "footfall_humanoid.json"
+TOLERANCE = 0.005  # [m] between the two animations' feet
+BONES = ("foot.L", "foot.R", "toe.L", "toe.R")
+
+
+def test_blender_and_the_core_put_the_feet_in_the_same_places():
+    from footfall.core import native
+
+    ff = native.load()
+    bpy.ops.wm.read_homefile(use_empty=True)
+    addon_utils.enable("footfall", default_set=True, handle_error=None)
+    check(bpy.ops.footfall.import_rig(filepath=str(RIG)) == {"FINISHED"}, "rig import failed")
+    plan = ff.plan_scenario(ff.demo_scenario())
+    plan_path = TMP / "demo-plan.json"
+    ff.write_plan_file(plan, str(plan_path))
+    check(bpy.ops.footfall.apply(plan_filepath=str(plan_path)) == {"FINISHED"}, "apply failed")
+    scene = bpy.context.scene
+    fps = scene.render.fps / scene.render.fps_base
+    crowd_path = TMP / "crowd.glb"
+    ff.animate_gltf(plan, str(RIG), str(crowd_path), fps=fps, profile_path=str(PROFILE))
+    crowd = CrowdGlb(crowd_path)
+
+    frames = range(scene.frame_start, scene.frame_end + 1)
+    times = numpy.array([(f - scene.frame_start) / fps for f in frames])
+    core = {}
+    for agent in plan.agents:
+        nodes = crowd.subtree(crowd.agent_root(agent.name))
+        world = crowd.world_matrices(agent.name, times, [nodes[b] for b in BONES])
+        for bone in BONES:
+            core[agent.name, bone] = z_up(world[nodes[bone]][:, :3, 3])
+    worst = 0.0
+    compared = 0
+    for i, frame in enumerate(frames):
+        scene.frame_set(frame)
+        depsgraph = bpy.context.evaluated_depsgraph_get()
+        for agent in plan.agents:
+            if agent.leaves and times[i] > agent.end_time():
+                continue  # hidden in both
+            armature = bpy.data.objects[agent.name].evaluated_get(depsgraph)
+            for bone in BONES:
+                blender = numpy.array(armature.matrix_world @ armature.pose.bones[bone].head)
+                worst = max(worst, float(numpy.linalg.norm(blender - core[agent.name, bone][i])))
+                compared += 1
+    print(f"feet and toes: worst {1000 * worst:.2f} mm apart over {compared} bone positions")
+    check(compared > 1000, f"only {compared} positions compared")
+    check(worst < TOLERANCE, f"the add-on's and the core's feet are {1000 * worst:.1f} mm apart")
+
+
+if __name__ == "__main__":
+    run([test_blender_and_the_core_put_the_feet_in_the_same_places])
