@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <utility>
 #include <stdexcept>
 
 #include "animate/accessor_data.hpp"
@@ -275,6 +276,23 @@ Rig Rig::load(const std::string& path, const RigProfile& profile) {
     rig->upper_arms[side] = bone(*rig, joints, limb.upper_arm, field + "upper_arm");
     rig->forearms[side] = bone(*rig, joints, limb.forearm, field + "forearm");
     rig->hands[side] = bone(*rig, joints, limb.hand, field + "hand");
+  }
+  // The legs as chains below the hips, as the IK poses them.
+  for (int side = 0; side < 2; ++side) {
+    const animate::Leg& leg = rig->legs[side];
+    const RigProfile::Limb& limb = profile.sides[side];
+    const std::string field = std::string("bones.") + sides[side] + ".";
+    const std::pair<int, int> links[] = {{leg.shin, leg.thigh}, {leg.foot, leg.shin}, {leg.toe, leg.foot}};
+    const std::string names[] = {limb.shin, limb.foot, limb.toe};
+    const char* roles[] = {"shin", "foot", "toe"};
+    for (int k = 0; k < 3; ++k)
+      if (rig->parent[links[k].first] != links[k].second)
+        throw std::invalid_argument(path + ": " + field + roles[k] + " = " + user_text(names[k]) +
+                                    ": not a child of the " + (k == 0 ? "thigh" : k == 1 ? "shin" : "foot"));
+    bool below = false;
+    for (int up = rig->parent[leg.thigh]; up >= 0 && !below; up = rig->parent[up]) below = up == rig->hips;
+    if (!below)
+      throw std::invalid_argument(path + ": " + field + "thigh = " + user_text(limb.thigh) + ": not below the hips");
   }
   for (int joint : joints)
     if (!without_shear(rig->rest_world[joint]))

@@ -1,0 +1,87 @@
+// Reading rigs and their profiles: the project's rig measured, and every
+// refusal naming the file and what is wrong.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "animate/rig_data.hpp"
+#include "footfall/animate/rig.hpp"
+#include "io/json_reader.hpp"
+
+namespace footfall {
+namespace {
+
+const std::string kRig = std::string(FOOTFALL_RIGS_DIR) + "/footfall_humanoid.glb";
+const std::string kProfile = std::string(FOOTFALL_RIGS_DIR) + "/footfall_humanoid.json";
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_rig_profile(text, "p.json");
+  } catch (const std::invalid_argument& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(RigProfile, RefusalsNameTheField) {
+  EXPECT_EQ(error_of("[]"), "p.json: (top level): expected an object, got array");
+  EXPECT_EQ(error_of(R"({"format": "footfall-rig-profile", "version": 2})"),
+            "p.json: version: unsupported version 2 (this Footfall reads version 1)");
+  auto document = detail::parse_json(detail::read_file(kProfile), kProfile);
+  document["bones"]["left"].erase("toe");
+  EXPECT_EQ(error_of(document.dump()), "p.json: bones.left.toe: missing");
+  document = detail::parse_json(detail::read_file(kProfile), kProfile);
+  document["clips"]["run"] = "run";
+  EXPECT_EQ(error_of(document.dump()),
+            "p.json: clips.run: unknown behaviour (one of walk, arms_in, side_step, idle)");
+  document = detail::parse_json(detail::read_file(kProfile), kProfile);
+  document["dimensions"]["hip_height"] = -1;
+  EXPECT_EQ(error_of(document.dump()), "p.json: dimensions.hip_height: expected a positive number of metres");
+}
+
+TEST(Rig, TheProjectRigIsMeasuredFromItsBones) {
+  const Rig rig = Rig::load(kRig, load_rig_profile(kProfile));
+  const auto& data = rig.data();
+  const RigProfile profile = load_rig_profile(kProfile);
+  EXPECT_NEAR(rig.hip_height(), profile.dimensions.at("hip_height"), 1e-4);
+  const double leg = data.legs[0].upper + data.legs[0].lower;
+  EXPECT_NEAR(leg, profile.dimensions.at("leg_length"), 1e-4);
+  // It faces -Y (Blender's front view), as its profile says.
+  EXPECT_NEAR(data.forward_yaw, -M_PI / 2, 1e-6);
+  for (const auto& [behavior, source] : rig.clip_sources()) EXPECT_EQ(source, behavior);
+  // The heel is behind the ankle, the ball ahead of it.
+  EXPECT_GT(data.legs[1].shape.heel_back, 0.03);
+  EXPECT_GT(data.legs[1].shape.ball_ahead, 0.1);
+}
+
+std::string load_error(const RigProfile& profile, const std::string& path = kRig) {
+  try {
+    Rig::load(path, profile);
+  } catch (const std::invalid_argument& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(Rig, RefusesBonesAndClipsItLacksAndLegsThatAreNotChains) {
+  RigProfile profile = load_rig_profile(kProfile);
+  profile.sides[0].foot = "Foot_L";
+  EXPECT_EQ(load_error(profile), kRig + ": bones.left.foot = 'Foot_L': the rig has no such bone");
+  profile = load_rig_profile(kProfile);
+  profile.sides[1].shin = "thigh.L";
+  EXPECT_EQ(load_error(profile), kRig + ": bones.right.shin = 'thigh.L': not a child of the thigh");
+  profile = load_rig_profile(kProfile);
+  profile.clips["walk"] = "Walk_Cycle";
+  EXPECT_EQ(load_error(profile), kRig + ": clips.walk = 'Walk_Cycle': the rig has no such animation (it has: "
+                                        "'arms_in', 'idle', 'side_step', 'walk')");
+  profile = load_rig_profile(kProfile);
+  profile.hips = "Hips";
+  EXPECT_EQ(load_error(profile), kRig + ": no skin has the bone 'Hips' (bones.hips): the rig needs a skinned mesh "
+                                        "on a skeleton");
+  EXPECT_NE(load_error(load_rig_profile(kProfile), kProfile).find("not a glTF file this Footfall can read"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace footfall
