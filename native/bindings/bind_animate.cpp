@@ -1,12 +1,51 @@
-// The animated crowd as glTF: footfall._native.animate_gltf.
+// Rigs and the animated crowd as glTF: footfall._native.detect_bones,
+// split_side, animate_gltf.
 #include "bindings.hpp"
+#include "footfall/animate/bone_map.hpp"
 #include "footfall/animate/crowd_gltf.hpp"
+
+#include <array>
+#include <optional>
 
 namespace footfall::bindings {
 
 namespace py = pybind11;
 
+namespace {
+
+std::optional<Vec3> point_or_none(const py::handle& value) {
+  if (value.is_none()) return std::nullopt;
+  const auto xyz = value.cast<std::array<double, 3>>();
+  return Vec3{xyz[0], xyz[1], xyz[2]};
+}
+
+}  // namespace
+
 void bind_animate(py::module_& m) {
+  m.def(
+      "detect_bones",
+      [](const py::sequence& bones, const std::map<std::string, std::string>& given) {
+        std::vector<RigBone> rig;
+        for (const py::handle item : bones) {
+          const auto fields = item.cast<py::sequence>();
+          if (fields.size() != 4)
+            throw std::invalid_argument("a bone is (name, parent or None, head or None, tail or None)");
+          RigBone bone;
+          bone.name = fields[0].cast<std::string>();
+          if (!fields[1].is_none()) bone.parent = fields[1].cast<std::string>();
+          bone.head = point_or_none(fields[2]);
+          bone.tail = point_or_none(fields[3]);
+          rig.push_back(std::move(bone));
+        }
+        const BoneDetection found = detect_bones(rig, given);
+        return py::make_tuple(found.roles, found.missing);
+      },
+      py::arg("bones"), py::arg("given") = std::map<std::string, std::string>{},
+      "A humanoid's bones by role: `bones` are (name, parent or None, rest head (x, y, z) or "
+      "None, rest tail or None), Z up; `given` role -> bone for roles already chosen (\"hips\", "
+      "\"left.thigh\", ...). Returns (role -> bone, the roles not found).");
+  m.def("split_side", &split_side, py::arg("name"),
+        "(side, base name) of a bone name: side 'left', 'right' or '' for the trunk.");
   m.def(
       "animate_gltf",
       [](const Plan& plan, const std::string& rig_path, const std::string& out_path, double fps,

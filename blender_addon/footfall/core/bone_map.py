@@ -1,37 +1,21 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Finds a humanoid's bones by name and hierarchy, whatever the naming scheme.
 
-Limbs are found by name: a side marker (``.L``/``_l``/``-L``/`` L`` suffixes,
-``Left``/``L_`` prefixes, any ``namespace:`` such as ``mixamorig:`` dropped)
-and a base name from a list of synonyms (``upper_arm``, ``UpperArm``,
-``upperarm``, Mixamo's ``Arm``...). The trunk is found by hierarchy, which no
-naming scheme can fool: the hips are where both legs meet, the chest where both
-arms meet, the spine is the first bone from the hips toward the chest. The neck
-and head are found by name, or else as the bones above the chest.
+The detection itself is the core's (footfall._native.detect_bones, shared
+with the headless rig reader; docs/rig-profile.md): limbs by a side marker
+and a base name among synonyms, or from the skeleton's shape where names say
+nothing; the trunk where the limbs meet. Here: the bones as plain data, the
+mapping as nested dicts, and the error that lists what is missing.
 """
 
-import re
 from dataclasses import dataclass
-from typing import Dict, List, Optional, Sequence, Tuple
+from typing import Dict, Optional, Sequence, Tuple
 
-from . import bone_structure
+from . import native
 
 CENTER_ROLES = ("hips", "spine", "chest", "neck", "head")
 LIMB_ROLES = ("upper_arm", "forearm", "hand", "thigh", "shin", "foot", "toe")
 SIDES = ("left", "right")
-
-# Base names after normalisation (lower case, no separators).
-LIMB_SYNONYMS = {
-    "upper_arm": {"upperarm", "arm", "uparm", "armupper"},
-    "forearm": {"forearm", "lowerarm", "elbow", "armlower"},
-    "hand": {"hand", "wrist"},
-    "thigh": {"thigh", "upleg", "upperleg", "legupper", "thighbone"},
-    "shin": {"shin", "calf", "leg", "lowerleg", "knee", "leglower"},
-    "foot": {"foot", "ankle"},
-    "toe": {"toe", "toes", "toebase", "ball", "toe0", "toes0"},
-}
-NECK_NAMES = {"neck", "neck01", "neck1"}
-HEAD_NAMES = {"head"}
 
 
 @dataclass(frozen=True)
@@ -72,14 +56,6 @@ class BoneMapError(ValueError):
         super().__init__(" ".join(parts))
 
 
-def _normalise(text: str) -> str:
-    return re.sub(r"[^a-z0-9]", "", text.lower())
-
-
-_SIDE_SUFFIX = re.compile(r"^(?P<base>.+?)[._\- ](?P<side>l|r|left|right)$", re.IGNORECASE)
-_SIDE_PREFIX = re.compile(r"^(?P<side>left|right|l|r)(?P<sep>[._\- ]?)(?P<base>.+)$", re.IGNORECASE)
-
-
 def split_side(name: str):
     """(side, normalised base name) of a bone name; side is None for the trunk.
 
@@ -88,54 +64,8 @@ def split_side(name: str):
     >>> split_side("upper_arm.R")
     ('right', 'upperarm')
     """
-    name = name.rsplit(":", 1)[-1]
-    match = _SIDE_SUFFIX.match(name)
-    if match:
-        side = "left" if match.group("side").lower().startswith("l") else "right"
-        return side, _normalise(match.group("base"))
-    match = _SIDE_PREFIX.match(name)
-    if match:
-        word = match.group("side")
-        # "Left"/"Right" may run into the base ("LeftArm"); a bare "L"/"R" needs a
-        # separator ("L_Arm"), or "Leg" would read as the left "eg".
-        if word.lower() in ("left", "right") or match.group("sep"):
-            side = "left" if word.lower().startswith("l") else "right"
-            return side, _normalise(match.group("base"))
-    return None, _normalise(name)
-
-
-def _ancestors(name: str, parents: Dict[str, Optional[str]]) -> List[str]:
-    chain = []
-    while name is not None and name not in chain:
-        chain.append(name)
-        name = parents.get(name)
-    return chain
-
-
-def _meeting_point(a: str, b: str, parents: Dict[str, Optional[str]]) -> Optional[str]:
-    """The lowest common ancestor of two bones (proper ancestors only)."""
-    above_a = _ancestors(a, parents)[1:]
-    above_b = set(_ancestors(b, parents)[1:])
-    return next((bone for bone in above_a if bone in above_b), None)
-
-
-def _by_name(bones: Sequence[Bone], parents, side: Optional[str], names) -> Optional[str]:
-    """The bone of `side` whose base name is one of `names`; nearest the root wins."""
-    found = [bone.name for bone in bones if split_side(bone.name) in {(side, n) for n in names}]
-    return min(found, key=lambda b: (len(_ancestors(b, parents)), b), default=None)
-
-
-def _length(bone: Bone) -> float:
-    return sum((t - h) ** 2 for h, t in zip(bone.head, bone.tail)) ** 0.5
-
-
-def _continues(bone: Bone, child: Bone) -> bool:
-    """True if `child` starts nearer `bone`'s tail than half its length (or
-    the rest geometry is not known)."""
-    if bone.tail is None or child.head is None:
-        return True
-    gap = sum((c - t) ** 2 for c, t in zip(child.head, bone.tail)) ** 0.5
-    return gap < 0.5 * _length(bone)
+    side, base = native.load().split_side(name)
+    return side or None, base
 
 
 def detect(bones: Sequence[Bone], rig: str = "rig") -> Dict[str, object]:
@@ -155,64 +85,23 @@ def detect_partial(bones: Sequence[Bone], given: Optional[Dict[str, object]] = N
     Roles in `given` are taken as they are, and the trunk is found from the
     limbs given as well as from those found. Limbs whose names say nothing
     are found from the skeleton's shape when the bones carry their rest
-    geometry (bone_structure).
+    geometry.
     """
-    given = given or {}
-    parents = {bone.name: bone.parent for bone in bones}
+    flat = {}
+    for key, value in (given or {}).items():
+        if isinstance(value, dict):
+            flat.update({f"{key}.{role}": bone for role, bone in value.items() if bone})
+        elif value:
+            flat[key] = value
+    found, missing = native.load().detect_bones([(b.name, b.parent, b.head, b.tail) for b in bones], flat)
     mapping: Dict[str, object] = {side: {} for side in SIDES}
-    missing = []
-    shape: Optional[Dict[str, Dict[str, str]]] = None  # found when first wanted
-    for side in SIDES:
-        for role in LIMB_ROLES:
-            found = (given.get(side) or {}).get(role) or _by_name(bones, parents, side, LIMB_SYNONYMS[role])
-            if found is None:
-                shape = bone_structure.limbs(bones) if shape is None else shape
-                found = shape.get(side, {}).get(role)
-            if found is None:
-                missing.append(f"{side}.{role}")
-            else:
-                mapping[side][role] = found
-
-    def both(role):
-        return mapping["left"].get(role), mapping["right"].get(role)
-
-    thighs, arms = both("thigh"), both("upper_arm")
-    hips = _meeting_point(*thighs, parents) if None not in thighs else None
-    chest = _meeting_point(*arms, parents) if None not in arms else None
-    spine = None
-    if hips and chest and hips in _ancestors(chest, parents):
-        path = _ancestors(chest, parents)
-        below_chest = path[: path.index(hips)]  # chest ... first bone above the hips
-        spine = below_chest[-1] if len(below_chest) > 1 else None
-    head = _by_name(bones, parents, None, HEAD_NAMES)
-    neck = _by_name(bones, parents, None, NECK_NAMES)
-    if chest and head is None:
-        # The chain that rises from the chest, neither arm's: the neck its first
-        # bone, the head where it ends or branches (into a face's bones), as
-        # Rigify's spine.004 to spine.006 are.
-        arm_chains = set().union(*(_ancestors(a, parents) for a in arms if a))
-        above = [b for b in bones if b.parent == chest and b.name not in arm_chains]
-        if len(above) > 1 and all(b.head is not None and b.tail is not None for b in above):
-            above = [max(above, key=lambda b: (b.tail[2] - b.head[2]) / (_length(b) or 1.0))]
-        if len(above) == 1:
-            chain = [above[0]]
-            while True:
-                children = [b for b in bones if b.parent == chain[-1].name]
-                # Only a bone that goes on from the last one's tail (Rigify's
-                # face bone starts back at the head's root, inside it).
-                if len(children) != 1 or not _continues(chain[-1], children[0]):
-                    break
-                chain.append(children[0])
-            neck, head = (chain[0].name, chain[-1].name) if len(chain) > 1 else (None, chain[0].name)
-    if neck is None and head is not None and parents.get(head) not in (None, chest):
-        neck = parents[head]
-    for role, bone in zip(CENTER_ROLES, (hips, spine, chest, neck, head)):
-        bone = given.get(role) or bone
-        if bone is None:
-            missing.append(role)
+    for role, bone in found.items():
+        side, _, limb = role.partition(".")
+        if limb:
+            mapping[side][limb] = bone
         else:
             mapping[role] = bone
-    return mapping, missing
+    return mapping, list(missing)
 
 
 def validate_map(mapping: Dict[str, object], bone_names, rig: str = "rig") -> None:
