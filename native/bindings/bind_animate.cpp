@@ -53,8 +53,8 @@ void bind_animate(py::module_& m) {
         CrowdGltfSummary summary;
         {
           py::gil_scoped_release release;
-          const Rig rig = Rig::load(
-              rig_path, load_rig_profile(profile_path.empty() ? profile_beside(rig_path) : profile_path));
+          const Rig rig = Rig::load(rig_path, profile_path.empty() ? profile_beside(rig_path)
+                                                                   : load_rig_profile(profile_path));
           CrowdGltfOptions options;
           options.fps = fps;
           summary = write_crowd_gltf(plan, rig, out_path, options);
@@ -69,7 +69,7 @@ void bind_animate(py::module_& m) {
       py::arg("plan"), py::arg("rig_path"), py::arg("out_path"), py::arg("fps") = 24.0,
       py::arg("profile_path") = "",
       "Animates every agent of `plan` on the rig (.glb or .gltf; its profile beside it, "
-      "RIG.json, unless `profile_path` is given) and writes one animated .glb to `out_path`, "
+      "RIG.json, if any, unless `profile_path` is given; bones it does not name are detected) and writes one animated .glb to `out_path`, "
       "`fps` keys a second. Returns {agents, frames, bytes, clips}. ValueError names what is "
       "wrong (the rig, its profile, an agent planned for another size); no file is left then.");
 }

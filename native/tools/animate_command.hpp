@@ -11,7 +11,7 @@ namespace footfall::tools {
 
 struct AnimateArguments {
   std::string rig;      ///< .glb or .gltf
-  std::string profile;  ///< empty: the rig's name with .json, beside it
+  std::string profile;  ///< empty: the rig's name with .json beside it, if there is one
   double fps = 24;
 };
 

@@ -153,14 +153,34 @@ def test_demo_feet_stay_on_the_plan_and_hips_on_the_com_path(ff, demo):
     assert hips < HIPS_TOLERANCE
 
 
-def with_parent_transform(source, target):
-    """The rig under a new root that turns it a quarter about the vertical,
-    moves it and scales it by 0.01, its old root scaled up by 100 to match:
-    the same body, standing elsewhere, through transforms a converted FBX has."""
+def rewritten(source, target, change):
+    """A copy of the .glb `source` at `target`, its JSON changed by `change(document)`."""
     data = source.read_bytes()
     length = struct.unpack_from("<I", data, 12)[0]
     document = json.loads(data[20:20 + length])
-    binary = data[20 + length:]
+    change(document)
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    body = struct.pack("<I4s", len(text), b"JSON") + text + data[20 + length:]
+    target.write_bytes(struct.pack("<4sII", b"glTF", 2, 12 + len(body)) + body)
+
+
+def nameless_bones(document):
+    """Bones named as Blender names new ones: only the skeleton's shape shows their roles."""
+    for joint in document["skins"][0]["joints"]:
+        document["nodes"][joint]["name"] = f"Bone.{joint:03d}"
+
+
+def collapse_bones(document):
+    nameless_bones(document)
+    for joint in document["skins"][0]["joints"]:
+        document["nodes"][joint]["translation"] = [0.0, 0.0, 0.0]
+
+
+def with_parent_transform(document):
+    """The rig under a new root that turns it a quarter about the vertical,
+    moves it and scales it by 0.01, its old root scaled up by 100 to match:
+    the same body, standing elsewhere, through transforms a converted FBX has."""
     scene = document["scenes"][document.get("scene", 0)]
     for root in scene["nodes"]:
         node = document["nodes"][root]
@@ -170,16 +190,12 @@ def with_parent_transform(source, target):
     document["nodes"].append({"name": "fbx_root", "children": scene["nodes"], "rotation": [0.0, half, 0.0, half],
                               "translation": [3.0, 0.0, -2.0], "scale": [0.01, 0.01, 0.01]})
     scene["nodes"] = [len(document["nodes"]) - 1]
-    text = json.dumps(document).encode()
-    text += b" " * (-len(text) % 4)
-    body = struct.pack("<I4s", len(text), b"JSON") + text + binary
-    target.write_bytes(struct.pack("<4sII", b"glTF", 2, 12 + len(body)) + body)
 
 
 def test_a_rig_under_a_parent_transform_puts_its_feet_on_the_plan(ff, cli, demo, tmp_path):
     plan_path, _, _ = demo
     rig = tmp_path / "turned.glb"
-    with_parent_transform(RIG, rig)
+    rewritten(RIG, rig, with_parent_transform)
     crowd = tmp_path / "crowd.glb"
     summary = ff.animate_gltf(ff.load_plan(str(plan_path)), str(rig), str(crowd), fps=30,
                               profile_path=str(PROFILE))
@@ -191,6 +207,24 @@ def test_a_rig_under_a_parent_transform_puts_its_feet_on_the_plan(ff, cli, demo,
     print(f"turned rig: worst contact {1000 * contact:.2f} mm over {checked} planted feet, hips {100 * hips:.2f} cm")
     assert contact < CONTACT_TOLERANCE
     assert hips < HIPS_TOLERANCE
+
+
+def test_a_rig_without_a_profile_is_mapped_by_its_shape(ff, cli, demo, tmp_path):
+    """Nameless bones and no profile: the core detects the limbs from the
+    skeleton's shape, as Import Rig does, and the feet land on the plan."""
+    plan_path, _, _ = demo
+    rig, crowd = tmp_path / "nameless.glb", tmp_path / "crowd.glb"
+    rewritten(RIG, rig, nameless_bones)
+    run = run_animate(cli, plan_path, "--rig", rig, "-o", crowd)
+    assert run.returncode == 0, run.stderr
+    profile = json.loads(PROFILE.read_text())
+    names = {node["name"]: i for i, node in enumerate(CrowdGlb(RIG).document["nodes"])}
+    for side in ("left", "right"):
+        for role, bone in profile["bones"][side].items():
+            profile["bones"][side][role] = f"Bone.{names[bone]:03d}"
+    profile["bones"]["hips"] = f"Bone.{names[profile['bones']['hips']]:03d}"
+    contact, hips, checked = measure(ff, ff.load_plan(str(plan_path)), crowd, RigFeet(rig, profile))
+    assert checked > 500 and contact < CONTACT_TOLERANCE and hips < HIPS_TOLERANCE
 
 
 def run_animate(cli, *arguments):
@@ -209,6 +243,9 @@ def test_bad_input_is_refused_in_one_line_with_no_file(ff, cli, demo, tmp_path):
     renamed["bones"]["left"]["foot"] = "Foot_L"
     bad_profile = tmp_path / "renamed.json"
     bad_profile.write_text(json.dumps(renamed))
+    # Nameless bones all at one point: neither names nor shape show the roles.
+    shapeless = tmp_path / "shapeless.glb"
+    rewritten(RIG, shapeless, collapse_bones)
     # A plan for a character twice the rig's size.
     giant = json.loads(plan_path.read_text())
     giant["character"]["com_height"] = 2 * giant["character"]["com_height"]
@@ -218,7 +255,8 @@ def test_bad_input_is_refused_in_one_line_with_no_file(ff, cli, demo, tmp_path):
         ((plan_path, "--rig", unskinned, "--profile", PROFILE, "-o", out), "no skin has the bone 'hips'"),
         ((plan_path, "--rig", RIG, "--profile", bad_profile, "-o", out), "bones.left.foot = 'Foot_L'"),
         ((giant_plan, "--rig", RIG, "-o", out), "stands -51 % off"),
-        ((plan_path, "--rig", tmp_path / "none.glb", "-o", out), "no rig profile beside it"),
+        ((plan_path, "--rig", tmp_path / "none.glb", "-o", out), "none.glb': no such file"),
+        ((plan_path, "--rig", shapeless, "-o", out), "could not find these bones: left.upper_arm"),
         ((plan_path, "--rig", RIG, "--fps", "0", "-o", out), "--fps: expected a number from 1 to 240"),
         ((plan_path, "--rig", RIG), "animate needs --rig RIG and -o CROWD"),
     ]

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <utility>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 #include "animate/accessor_data.hpp"
 #include "animate/clips.hpp"
 #include "animate/rig_data.hpp"
+#include "footfall/animate/bone_map.hpp"
 #include "util/quoted.hpp"
 
 namespace footfall {
@@ -33,6 +35,9 @@ bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::stri
 }
 
 tinygltf::Model read_model(const std::string& path) {
+  std::error_code missing;
+  if (!std::filesystem::is_regular_file(path, missing))
+    throw std::invalid_argument(user_text(path) + ": no such file");
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keep_image_bytes, nullptr);
   tinygltf::Model model;
@@ -243,6 +248,83 @@ void read_clips(RigData& rig, const RigProfile& profile) {
   }
 }
 
+// The skin of the rig's body: the one holding the profile's hips, else the
+// one with the most joints; its joints must be nodes of the scene.
+int body_skin(const RigData& rig, const RigProfile& profile) {
+  const auto& skins = rig.model.skins;
+  const auto hips = profile.bones.find("hips");
+  int chosen = -1;
+  for (std::size_t s = 0; s < skins.size(); ++s) {
+    const bool has_hips = hips != profile.bones.end() &&
+        std::any_of(skins[s].joints.begin(), skins[s].joints.end(), [&](int joint) {
+          return joint >= 0 && joint < static_cast<int>(rig.model.nodes.size()) && rig.model.nodes[joint].name == hips->second;
+        });
+    if (hips != profile.bones.end() ? has_hips && chosen < 0
+                                    : chosen < 0 || skins[s].joints.size() > skins[chosen].joints.size())
+      chosen = static_cast<int>(s);
+  }
+  if (chosen < 0)
+    throw std::invalid_argument(rig.path + (hips != profile.bones.end()
+                                                ? ": no skin has the bone " + user_text(hips->second) + " (bones.hips)"
+                                                : std::string(": no skin")) +
+                                ": the rig needs a skinned mesh on a skeleton");
+  for (int joint : skins[chosen].joints)
+    if (joint < 0 || joint >= static_cast<int>(rig.model.nodes.size()) || !rig.in_scene[joint])
+      throw std::invalid_argument(rig.path + ": skins[" + std::to_string(chosen) +
+                                  "]: a joint that is not a node of the rig's scene");
+  return chosen;
+}
+
+// The joints as bones for detection: heads where the joints are at rest,
+// tails at their child joints' heads (their mean, for several), a leaf's
+// half its parent's length on along it, as Blender's importer guesses.
+std::vector<RigBone> skeleton(const RigData& rig, const std::vector<int>& joints) {
+  std::map<int, int> parent_joint;  // joint -> nearest ancestor joint
+  for (int joint : joints)
+    for (int up = rig.parent[joint]; up >= 0; up = rig.parent[up])
+      if (std::find(joints.begin(), joints.end(), up) != joints.end()) {
+        parent_joint[joint] = up;
+        break;
+      }
+  const auto head = [&](int joint) { return to_z_up(rig.rest_world[joint].translation()); };
+  std::vector<RigBone> bones;
+  for (int joint : joints) {
+    RigBone bone;
+    bone.name = rig.model.nodes[joint].name;
+    const auto parent = parent_joint.find(joint);
+    if (parent != parent_joint.end()) bone.parent = rig.model.nodes[parent->second].name;
+    bone.head = head(joint);
+    Vec3 sum{0, 0, 0};
+    int children = 0;
+    for (const auto& [child, above] : parent_joint)
+      if (above == joint) {
+        sum = sum + head(child);
+        ++children;
+      }
+    if (children > 0)
+      bone.tail = (1.0 / children) * sum;
+    else if (parent != parent_joint.end())
+      bone.tail = *bone.head + 0.5 * (*bone.head - head(parent->second));
+    else
+      bone.tail = *bone.head + Vec3{0, 0, 0.1};
+    bones.push_back(std::move(bone));
+  }
+  return bones;
+}
+
+// Every role's bone: the profile's, the others detected.
+std::map<std::string, std::string> bone_roles(const RigData& rig, const std::vector<int>& joints,
+                                              const RigProfile& profile) {
+  const std::vector<RigBone> bones = skeleton(rig, joints);
+  const BoneDetection found = detect_bones(bones, profile.bones);
+  if (found.missing.empty()) return found.roles;
+  std::string missing, names;
+  for (const std::string& role : found.missing) missing += (missing.empty() ? "" : ", ") + role;
+  for (std::size_t i = 0; i < bones.size() && i < 200; ++i) names += (i ? ", " : "") + user_text(bones[i].name);
+  throw std::invalid_argument(rig.path + ": could not find these bones: " + missing + " (its bones: " + names +
+                              "); name them in a rig profile (docs/rig-profile.md)");
+}
+
 }  // namespace
 
 Rig Rig::load(const std::string& path, const RigProfile& profile) {
@@ -250,49 +332,36 @@ Rig Rig::load(const std::string& path, const RigProfile& profile) {
   rig->path = path;
   rig->model = read_model(path);
   read_hierarchy(*rig);
-  const std::vector<tinygltf::Skin>& skins = rig->model.skins;
-  for (std::size_t s = 0; s < skins.size() && rig->skin < 0; ++s)
-    for (int joint : skins[s].joints)
-      if (joint >= 0 && joint < static_cast<int>(rig->model.nodes.size()) && rig->model.nodes[joint].name == profile.hips)
-        rig->skin = static_cast<int>(s);
-  if (rig->skin < 0)
-    throw std::invalid_argument(path + ": no skin has the bone " + user_text(profile.hips) +
-                                " (bones.hips): the rig needs a skinned mesh on a skeleton");
-  const std::vector<int>& joints = skins[rig->skin].joints;
-  for (int joint : joints)
-    if (joint < 0 || joint >= static_cast<int>(rig->model.nodes.size()) || !rig->in_scene[joint])
-      throw std::invalid_argument(path + ": skins[" + std::to_string(rig->skin) +
-                                  "]: a joint that is not a node of the rig's scene");
-  rig->hips = bone(*rig, joints, profile.hips, "bones.hips");
+  rig->skin = body_skin(*rig, profile);
+  const std::vector<int>& joints = rig->model.skins[rig->skin].joints;
+  const std::map<std::string, std::string> roles = bone_roles(*rig, joints, profile);
+  const auto node_of = [&](const std::string& role) { return bone(*rig, joints, roles.at(role), "bones." + role); };
+  rig->hips = node_of("hips");
   const char* sides[] = {"left", "right"};
   for (int side = 0; side < 2; ++side) {
-    const RigProfile::Limb& limb = profile.sides[side];
-    const std::string field = std::string("bones.") + sides[side] + ".";
+    const std::string prefix = std::string(sides[side]) + ".";
     animate::Leg& leg = rig->legs[side];
-    leg.thigh = bone(*rig, joints, limb.thigh, field + "thigh");
-    leg.shin = bone(*rig, joints, limb.shin, field + "shin");
-    leg.foot = bone(*rig, joints, limb.foot, field + "foot");
-    leg.toe = bone(*rig, joints, limb.toe, field + "toe");
-    rig->upper_arms[side] = bone(*rig, joints, limb.upper_arm, field + "upper_arm");
-    rig->forearms[side] = bone(*rig, joints, limb.forearm, field + "forearm");
-    rig->hands[side] = bone(*rig, joints, limb.hand, field + "hand");
-  }
-  // The legs as chains below the hips, as the IK poses them.
-  for (int side = 0; side < 2; ++side) {
-    const animate::Leg& leg = rig->legs[side];
-    const RigProfile::Limb& limb = profile.sides[side];
-    const std::string field = std::string("bones.") + sides[side] + ".";
+    leg.thigh = node_of(prefix + "thigh");
+    leg.shin = node_of(prefix + "shin");
+    leg.foot = node_of(prefix + "foot");
+    leg.toe = node_of(prefix + "toe");
+    rig->upper_arms[side] = node_of(prefix + "upper_arm");
+    rig->forearms[side] = node_of(prefix + "forearm");
+    rig->hands[side] = node_of(prefix + "hand");
+    // The leg as a chain below the hips, as the IK poses it.
     const std::pair<int, int> links[] = {{leg.shin, leg.thigh}, {leg.foot, leg.shin}, {leg.toe, leg.foot}};
-    const std::string names[] = {limb.shin, limb.foot, limb.toe};
-    const char* roles[] = {"shin", "foot", "toe"};
+    const char* roles_below[] = {"shin", "foot", "toe"};
+    const char* roles_above[] = {"thigh", "shin", "foot"};
     for (int k = 0; k < 3; ++k)
       if (rig->parent[links[k].first] != links[k].second)
-        throw std::invalid_argument(path + ": " + field + roles[k] + " = " + user_text(names[k]) +
-                                    ": not a child of the " + (k == 0 ? "thigh" : k == 1 ? "shin" : "foot"));
+        throw std::invalid_argument(path + ": bones." + prefix + roles_below[k] + " = " +
+                                    user_text(roles.at(prefix + roles_below[k])) + ": not a child of the " +
+                                    roles_above[k]);
     bool below = false;
     for (int up = rig->parent[leg.thigh]; up >= 0 && !below; up = rig->parent[up]) below = up == rig->hips;
     if (!below)
-      throw std::invalid_argument(path + ": " + field + "thigh = " + user_text(limb.thigh) + ": not below the hips");
+      throw std::invalid_argument(path + ": bones." + prefix + "thigh = " + user_text(roles.at(prefix + "thigh")) +
+                                  ": not below the hips");
   }
   for (int joint : joints)
     if (!without_shear(rig->rest_world[joint]))

@@ -1,11 +1,10 @@
 // Rig profiles, read field by field as the add-on's core/rig_profile.py reads
-// them (a complete profile: the core does not detect bones yet).
+// them (with partial=True: what a profile leaves out is detected).
 #include <filesystem>
 #include <stdexcept>
 
 #include "footfall/animate/rig.hpp"
 #include "io/json_reader.hpp"
-#include "util/quoted.hpp"
 
 namespace footfall {
 
@@ -18,38 +17,30 @@ using detail::Json;
 constexpr const char* kBehaviors[] = {"walk", "arms_in", "side_step", "idle"};
 constexpr const char* kDimensions[] = {"hip_height", "leg_length", "shoulder_width", "foot_length"};
 
-std::string bone_name(const Json& parent, const std::string& path, const char* role) {
-  const Json& value = detail::require(parent, path, role);
-  const std::string where = child(path, role);
-  if (!value.is_string() || value.get_ref<const std::string&>().empty())
-    fail(where, "expected a bone name (a non-empty string)");
-  return value.get<std::string>();
+void read_bone(const Json& parent, const std::string& path, const std::string& role, const std::string& key,
+               RigProfile& profile) {
+  const auto value = parent.find(key);
+  if (value == parent.end()) return;  // left to detection
+  if (!value->is_string() || value->get_ref<const std::string&>().empty())
+    fail(child(path, key), "expected a bone name (a non-empty string)");
+  profile.bones[role] = value->get<std::string>();
 }
 
 RigProfile read_profile(const Json& root) {
   detail::expect_header(root, "footfall-rig-profile", 1);
   detail::expect_object(root, "", {"format", "version", "rig", "facing", "bones", "clips", "dimensions"});
   RigProfile profile;
-  const Json& bones = detail::require(root, "", "bones");
-  detail::expect_object(bones, "bones", {"hips", "spine", "chest", "neck", "head", "left", "right"});
-  profile.hips = bone_name(bones, "bones", "hips");
-  profile.spine = bone_name(bones, "bones", "spine");
-  profile.chest = bone_name(bones, "bones", "chest");
-  profile.neck = bone_name(bones, "bones", "neck");
-  profile.head = bone_name(bones, "bones", "head");
-  const char* sides[] = {"left", "right"};
-  for (int s = 0; s < 2; ++s) {
-    const std::string path = child("bones", sides[s]);
-    const Json& limb = detail::require(bones, "bones", sides[s]);
-    detail::expect_object(limb, path, {"upper_arm", "forearm", "hand", "thigh", "shin", "foot", "toe"});
-    RigProfile::Limb& out = profile.sides[s];
-    out.upper_arm = bone_name(limb, path, "upper_arm");
-    out.forearm = bone_name(limb, path, "forearm");
-    out.hand = bone_name(limb, path, "hand");
-    out.thigh = bone_name(limb, path, "thigh");
-    out.shin = bone_name(limb, path, "shin");
-    out.foot = bone_name(limb, path, "foot");
-    out.toe = bone_name(limb, path, "toe");
+  if (const auto bones = root.find("bones"); bones != root.end()) {
+    detail::expect_object(*bones, "bones", {"hips", "spine", "chest", "neck", "head", "left", "right"});
+    for (const char* role : {"hips", "spine", "chest", "neck", "head"}) read_bone(*bones, "bones", role, role, profile);
+    for (const char* side : {"left", "right"}) {
+      const auto limb = bones->find(side);
+      if (limb == bones->end()) continue;
+      const std::string path = child("bones", side);
+      detail::expect_object(*limb, path, {"upper_arm", "forearm", "hand", "thigh", "shin", "foot", "toe"});
+      for (const char* role : {"upper_arm", "forearm", "hand", "thigh", "shin", "foot", "toe"})
+        read_bone(*limb, path, std::string(side) + "." + role, role, profile);
+    }
   }
   if (const auto clips = root.find("clips"); clips != root.end()) {
     if (!clips->is_object()) fail("clips", "expected an object, got " + detail::type_name(*clips));
@@ -92,15 +83,11 @@ RigProfile load_rig_profile(const std::string& path) {
   return parse_rig_profile(detail::read_file(path), path);
 }
 
-std::string profile_beside(const std::string& rig_path) {
+RigProfile profile_beside(const std::string& rig_path) {
   std::filesystem::path beside(rig_path);
   beside.replace_extension(".json");
   std::error_code error;
-  if (!std::filesystem::is_regular_file(beside, error))
-    throw std::invalid_argument(detail::user_text(rig_path) + ": no rig profile beside it (" +
-                                detail::user_text(beside.string()) +
-                                "); give one (docs/rig-profile.md)");
-  return beside.string();
+  return std::filesystem::is_regular_file(beside, error) ? load_rig_profile(beside.string()) : RigProfile{};
 }
 
 }  // namespace footfall

@@ -29,8 +29,11 @@ TEST(RigProfile, RefusalsNameTheField) {
   EXPECT_EQ(error_of(R"({"format": "footfall-rig-profile", "version": 2})"),
             "p.json: version: unsupported version 2 (this Footfall reads version 1)");
   auto document = detail::parse_json(detail::read_file(kProfile), kProfile);
-  document["bones"]["left"].erase("toe");
-  EXPECT_EQ(error_of(document.dump()), "p.json: bones.left.toe: missing");
+  document["bones"]["left"]["toes"] = "toe.L";
+  EXPECT_EQ(error_of(document.dump()), "p.json: bones.left.toes: unknown field");
+  document = detail::parse_json(detail::read_file(kProfile), kProfile);
+  document["bones"]["left"]["toe"] = 3;
+  EXPECT_EQ(error_of(document.dump()), "p.json: bones.left.toe: expected a bone name (a non-empty string)");
   document = detail::parse_json(detail::read_file(kProfile), kProfile);
   document["clips"]["run"] = "run";
   EXPECT_EQ(error_of(document.dump()),
@@ -64,19 +67,32 @@ std::string load_error(const RigProfile& profile, const std::string& path = kRig
   return "";
 }
 
+TEST(Rig, WithoutAProfileItsBonesAreDetected) {
+  RigProfile none;
+  const Rig detected = Rig::load(kRig, none);
+  const Rig profiled = Rig::load(kRig, load_rig_profile(kProfile));
+  EXPECT_EQ(detected.data().hips, profiled.data().hips);
+  for (int side = 0; side < 2; ++side) {
+    EXPECT_EQ(detected.data().legs[side].thigh, profiled.data().legs[side].thigh);
+    EXPECT_EQ(detected.data().legs[side].toe, profiled.data().legs[side].toe);
+    EXPECT_EQ(detected.data().hands[side], profiled.data().hands[side]);
+  }
+  EXPECT_EQ(detected.clip_sources(), profiled.clip_sources());  // named as the behaviours
+}
+
 TEST(Rig, RefusesBonesAndClipsItLacksAndLegsThatAreNotChains) {
   RigProfile profile = load_rig_profile(kProfile);
-  profile.sides[0].foot = "Foot_L";
+  profile.bones["left.foot"] = "Foot_L";
   EXPECT_EQ(load_error(profile), kRig + ": bones.left.foot = 'Foot_L': the rig has no such bone");
   profile = load_rig_profile(kProfile);
-  profile.sides[1].shin = "thigh.L";
+  profile.bones["right.shin"] = "thigh.L";
   EXPECT_EQ(load_error(profile), kRig + ": bones.right.shin = 'thigh.L': not a child of the thigh");
   profile = load_rig_profile(kProfile);
   profile.clips["walk"] = "Walk_Cycle";
   EXPECT_EQ(load_error(profile), kRig + ": clips.walk = 'Walk_Cycle': the rig has no such animation (it has: "
                                         "'arms_in', 'idle', 'side_step', 'walk')");
   profile = load_rig_profile(kProfile);
-  profile.hips = "Hips";
+  profile.bones["hips"] = "Hips";
   EXPECT_EQ(load_error(profile), kRig + ": no skin has the bone 'Hips' (bones.hips): the rig needs a skinned mesh "
                                         "on a skeleton");
   EXPECT_NE(load_error(load_rig_profile(kProfile), kProfile).find("not a glTF file this Footfall can read"),

@@ -3,7 +3,6 @@
 // a crowd (crowd_gltf.hpp). The profile format is docs/rig-profile.md.
 #pragma once
 
-#include <array>
 #include <map>
 #include <memory>
 #include <string>
@@ -11,12 +10,13 @@
 namespace footfall {
 
 /// A rig profile: bone roles, clips and dimensions (docs/rig-profile.md).
+/// Any part may be left out: detection (bone_map.hpp) finds the bones it
+/// does not name.
 struct RigProfile {
-  struct Limb {
-    std::string upper_arm, forearm, hand, thigh, shin, foot, toe;
-  };
-  std::string hips, spine, chest, neck, head;
-  std::array<Limb, 2> sides;  ///< left, right
+  /// Role -> bone: "hips", "spine", "chest", "neck", "head", and per side
+  /// "left.thigh", "right.upper_arm"... (upper_arm, forearm, hand, thigh,
+  /// shin, foot, toe).
+  std::map<std::string, std::string> bones;
   /// Behaviour ("walk", "arms_in", "side_step", "idle") -> animation name;
   /// a behaviour left out or null has none.
   std::map<std::string, std::string> clips;
@@ -30,8 +30,9 @@ RigProfile parse_rig_profile(const std::string& text, const std::string& source 
 /// Reads a profile file (errors as parse_rig_profile).
 RigProfile load_rig_profile(const std::string& path);
 /// The profile beside a rig, as the add-on finds it ("robot.glb" ->
-/// "robot.json"); std::invalid_argument if there is none.
-std::string profile_beside(const std::string& rig_path);
+/// "robot.json"), read; an empty profile (everything detected) if there is
+/// none.
+RigProfile profile_beside(const std::string& rig_path);
 
 namespace animate {
 struct RigData;
@@ -41,10 +42,11 @@ struct RigData;
 /// the roles of its bones, its rest geometry. Cheap to copy (shared, const).
 class Rig {
  public:
-  /// Reads the rig and maps its bones by `profile`. Errors are
-  /// std::invalid_argument naming the file and what is wrong (no skin, a
-  /// bone or clip the profile names that the rig lacks, a mirrored or sheared
-  /// transform).
+  /// Reads the rig and maps its bones: the profile's, the others detected
+  /// among the joints of its skin. Errors are std::invalid_argument naming
+  /// the file and what is wrong (no skin, roles not found with the rig's
+  /// bones listed, a bone or clip the profile names that the rig lacks, a
+  /// mirrored or sheared transform).
   static Rig load(const std::string& path, const RigProfile& profile);
 
   /// The hip joints' height above the ground in the rest pose. [m]
