@@ -11,6 +11,7 @@
 
 #include "animate/accessor_data.hpp"
 #include "animate/clips.hpp"
+#include "animate/gltf_checks.hpp"
 #include "animate/rig_data.hpp"
 #include "footfall/animate/bone_map.hpp"
 #include "util/quoted.hpp"
@@ -331,6 +332,7 @@ Rig Rig::load(const std::string& path, const RigProfile& profile) {
   auto rig = std::make_shared<RigData>();
   rig->path = path;
   rig->model = read_model(path);
+  animate::check_references(rig->model, path);
   read_hierarchy(*rig);
   rig->skin = body_skin(*rig, profile);
   const std::vector<int>& joints = rig->model.skins[rig->skin].joints;
