@@ -35,6 +35,20 @@ bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::stri
   return true;
 }
 
+// A model tinygltf read (`ok`), or the reason it could not, naming `name`.
+tinygltf::Model checked(bool ok, tinygltf::Model model, const std::string& error, const std::string& name) {
+  if (!ok) {
+    const std::string first = error.substr(0, error.find('\n'));
+    throw std::invalid_argument(name + ": not a glTF file this Footfall can read: " +
+                                user_text(first.empty() ? "no reason given" : first));
+  }
+  for (const std::string& extension : model.extensionsRequired) {
+    throw std::invalid_argument(name + ": needs the glTF extension " + user_text(extension) +
+                                ", which Footfall cannot carry into a crowd");
+  }
+  return model;
+}
+
 tinygltf::Model read_model(const std::string& path) {
   std::error_code missing;
   if (!std::filesystem::is_regular_file(path, missing))
@@ -46,16 +60,20 @@ tinygltf::Model read_model(const std::string& path) {
   const bool binary = path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
   const bool ok = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
                          : loader.LoadASCIIFromFile(&model, &error, &warning, path);
-  if (!ok) {
-    std::string first = error.substr(0, error.find('\n'));
-    throw std::invalid_argument(path + ": not a glTF file this Footfall can read: " +
-                                user_text(first.empty() ? "no reason given" : first));
-  }
-  for (const std::string& extension : model.extensionsRequired) {
-    throw std::invalid_argument(path + ": needs the glTF extension " + user_text(extension) +
-                                ", which Footfall cannot carry into a crowd");
-  }
-  return model;
+  return checked(ok, std::move(model), error, path);
+}
+
+tinygltf::Model parse_model(const std::string& bytes, const std::string& name) {
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(keep_image_bytes, nullptr);
+  tinygltf::Model model;
+  std::string error, warning;
+  const bool ok =
+      bytes.compare(0, 4, "glTF") == 0
+          ? loader.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                        static_cast<unsigned int>(bytes.size()))
+          : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), static_cast<unsigned int>(bytes.size()), "");
+  return checked(ok, std::move(model), error, name);
 }
 
 Mat4 local_matrix(const tinygltf::Node& node) {
@@ -329,9 +347,17 @@ std::map<std::string, std::string> bone_roles(const RigData& rig, const std::vec
 }  // namespace
 
 Rig Rig::load(const std::string& path, const RigProfile& profile) {
+  return from_model(read_model(path), path, profile);
+}
+
+Rig Rig::parse(const std::string& bytes, const std::string& name, const RigProfile& profile) {
+  return from_model(parse_model(bytes, name), name, profile);
+}
+
+Rig Rig::from_model(tinygltf::Model model, const std::string& path, const RigProfile& profile) {
   auto rig = std::make_shared<RigData>();
   rig->path = path;
-  rig->model = read_model(path);
+  rig->model = std::move(model);
   animate::check_references(rig->model, path);
   read_hierarchy(*rig);
   rig->skin = body_skin(*rig, profile);

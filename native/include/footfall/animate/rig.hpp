@@ -37,6 +37,13 @@ RigProfile profile_beside(const std::string& rig_path);
 namespace animate {
 struct RigData;
 }
+}  // namespace footfall
+
+namespace tinygltf {
+class Model;
+}
+
+namespace footfall {
 
 /// A rig read from a .glb or .gltf file: its skeleton, meshes and clips,
 /// the roles of its bones, its rest geometry. Cheap to copy (shared, const).
@@ -48,6 +55,9 @@ class Rig {
   /// bones listed, a bone or clip the profile names that the rig lacks, a
   /// mirrored or sheared transform).
   static Rig load(const std::string& path, const RigProfile& profile);
+  /// The same from the bytes of a .glb or a .gltf whose buffers are data
+  /// URIs; errors name the rig `name`.
+  static Rig parse(const std::string& bytes, const std::string& name, const RigProfile& profile);
 
   /// The hip joints' height above the ground in the rest pose. [m]
   double hip_height() const;
@@ -60,6 +70,7 @@ class Rig {
   const animate::RigData& data() const { return *data_; }
 
  private:
+  static Rig from_model(tinygltf::Model model, const std::string& path, const RigProfile& profile);
   std::shared_ptr<const animate::RigData> data_;
 };
 
