@@ -144,6 +144,7 @@ void find_cycle(const RigData& rig, Clip& clip, double duration) {
     if (h.amplitude >= kMinSwing * leg) {
       clip.cycle = duration / h.cycles;
       clip.strike = h.peak;
+      clip.feet_step = signal == &feet;
       return;
     }
   }
@@ -156,7 +157,7 @@ void find_cycle(const RigData& rig, Clip& clip, double duration) {
 Clip clip_from_animation(const RigData& rig, int index) {
   const tinygltf::Animation& animation = rig.model.animations[index];
   Clip clip;
-  clip.source = animation.name;
+  clip.source = animation.name.empty() ? "animations[" + std::to_string(index) + "]" : animation.name;
   double first = 1e300, last = -1e300;
   for (const tinygltf::AnimationChannel& channel : animation.channels) {
     Track track;

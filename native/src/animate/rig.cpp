@@ -141,15 +141,28 @@ void read_hierarchy(RigData& rig) {
   rig.in_scene = placed;
 }
 
+// What each joint goes by: its name, or nodes[N] where it has none or shares it.
+std::vector<std::string> bone_names(const tinygltf::Model& model, const std::vector<int>& joints) {
+  std::map<std::string, int> count;
+  for (int joint : joints) ++count[model.nodes[joint].name];
+  std::vector<std::string> names(model.nodes.size());
+  for (int joint : joints) {
+    const std::string& name = model.nodes[joint].name;
+    names[joint] = name.empty() || count[name] > 1 ? "nodes[" + std::to_string(joint) + "]" : name;
+  }
+  return names;
+}
+
 // The node of a bone the profile names: one of the skin's joints.
 int bone(const RigData& rig, const std::vector<int>& joints, const std::string& name, const std::string& field) {
-  int found = -1;
+  int found = -1, same = 0;
   for (int joint : joints) {
-    if (rig.model.nodes[joint].name != name) continue;
-    if (found >= 0)
-      throw std::invalid_argument(rig.path + ": " + field + " = " + user_text(name) + ": two bones have that name");
-    found = joint;
+    same += rig.model.nodes[joint].name == name ? 1 : 0;
+    if (rig.bone_names[joint] == name) found = joint;
   }
+  if (same > 1)
+    throw std::invalid_argument(rig.path + ": " + field + " = " + user_text(name) +
+                                ": two bones have that name (name them nodes[N], by their index)");
   if (found < 0)
     throw std::invalid_argument(rig.path + ": " + field + " = " + user_text(name) + ": the rig has no such bone");
   return found;
@@ -236,6 +249,18 @@ void read_legs(RigData& rig, const RigProfile& profile) {
     throw std::invalid_argument(rig.path + ": the hip joints are not above the ground (z = 0) at rest: a rig lying down or below the floor");
 }
 
+// A rig with no walk so named walks with the one animation whose feet step
+// (Mixamo's "mixamo.com", a glTF's only animation), as Import Rig takes it;
+// else a procedural walk.
+animate::Clip only_stepping_clip(const RigData& rig) {
+  std::vector<animate::Clip> stepping;
+  for (std::size_t i = 0; i < rig.model.animations.size(); ++i) {
+    animate::Clip clip = animate::clip_from_animation(rig, static_cast<int>(i));
+    if (clip.feet_step) stepping.push_back(std::move(clip));
+  }
+  return stepping.size() == 1 ? std::move(stepping[0]) : animate::procedural_clip(rig, "walk");
+}
+
 void read_clips(RigData& rig, const RigProfile& profile) {
   const auto& animations = rig.model.animations;
   const auto find = [&](const std::string& name, bool exact) {
@@ -263,7 +288,12 @@ void read_clips(RigData& rig, const RigProfile& profile) {
     } else {
       index = find(behavior, false);
     }
-    rig.clips[behavior] = index >= 0 ? animate::clip_from_animation(rig, index) : animate::procedural_clip(rig, behavior);
+    if (index >= 0) {
+      rig.clips[behavior] = animate::clip_from_animation(rig, index);
+      continue;
+    }
+    rig.clips[behavior] =
+        behavior == std::string("walk") ? only_stepping_clip(rig) : animate::procedural_clip(rig, behavior);
   }
 }
 
@@ -309,9 +339,9 @@ std::vector<RigBone> skeleton(const RigData& rig, const std::vector<int>& joints
   std::vector<RigBone> bones;
   for (int joint : joints) {
     RigBone bone;
-    bone.name = rig.model.nodes[joint].name;
+    bone.name = rig.bone_names[joint];
     const auto parent = parent_joint.find(joint);
-    if (parent != parent_joint.end()) bone.parent = rig.model.nodes[parent->second].name;
+    if (parent != parent_joint.end()) bone.parent = rig.bone_names[parent->second];
     bone.head = head(joint);
     Vec3 sum{0, 0, 0};
     int children = 0;
@@ -362,6 +392,7 @@ Rig Rig::from_model(tinygltf::Model model, const std::string& path, const RigPro
   read_hierarchy(*rig);
   rig->skin = body_skin(*rig, profile);
   const std::vector<int>& joints = rig->model.skins[rig->skin].joints;
+  rig->bone_names = bone_names(rig->model, joints);
   const std::map<std::string, std::string> roles = bone_roles(*rig, joints, profile);
   const auto node_of = [&](const std::string& role) { return bone(*rig, joints, roles.at(role), "bones." + role); };
   rig->hips = node_of("hips");
@@ -393,7 +424,7 @@ Rig Rig::from_model(tinygltf::Model model, const std::string& path, const RigPro
   }
   for (int joint : joints)
     if (!without_shear(rig->rest_world[joint]))
-      throw std::invalid_argument(path + ": bone " + user_text(rig->model.nodes[joint].name) +
+      throw std::invalid_argument(path + ": bone " + user_text(rig->bone_names[joint]) +
                                   ": its rest transform mirrors or shears it (apply the scale in the modelling tool first)");
   read_legs(*rig, profile);
   // The bones a clip poses: below the hips, the legs left out.

@@ -33,7 +33,8 @@ struct Track {
 
 /// An upper-body clip: a rig's animation, or a procedural one.
 struct Clip {
-  std::string source;  ///< the animation's name, or "procedural"
+  std::string source;  ///< the animation's name (animations[N] if it has none), or "procedural"
+  bool feet_step = false;  ///< its feet show a gait cycle (a walk, not an upper-body clip)
   double start = 0;    ///< [s] of the animation
   double cycle = 1;    ///< [s] of one gait cycle
   double strike = 0.25;  ///< the right heel strike, a fraction of the cycle
@@ -61,6 +62,9 @@ struct RigData {
   std::vector<int> scene_roots;    ///< the default scene's root nodes
   std::vector<char> in_scene;      ///< per node: below one of them
   int skin = -1;                   ///< the skin of the rig's body
+  /// Per node, the name its bone goes by: the node's, or nodes[N] for a
+  /// joint with no name or a name another joint has too.
+  std::vector<std::string> bone_names;
   int hips = -1;
   std::array<Leg, 2> legs;         ///< left, right
   std::array<int, 2> upper_arms{}, forearms{}, hands{};  ///< left, right

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <string>
 
 #include "animate/rig_data.hpp"
@@ -78,6 +80,42 @@ TEST(Rig, WithoutAProfileItsBonesAreDetected) {
     EXPECT_EQ(detected.data().hands[side], profiled.data().hands[side]);
   }
   EXPECT_EQ(detected.clip_sources(), profiled.clip_sources());  // named as the behaviours
+}
+
+// The project rig as a .glb with its JSON changed by `change`.
+template <typename Change>
+std::string changed_rig(Change change) {
+  const std::string bytes = detail::read_file(kRig);
+  std::uint32_t length;
+  std::memcpy(&length, bytes.data() + 12, 4);
+  auto document = detail::parse_json(bytes.substr(20, length), kRig);
+  change(document);
+  std::string text = document.dump();
+  text.append((4 - text.size() % 4) % 4, ' ');
+  const std::string binary = bytes.substr(20 + length);
+  const auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  const std::string body = u32(static_cast<std::uint32_t>(text.size())) + "JSON" + text + binary;
+  return "glTF" + u32(2) + u32(static_cast<std::uint32_t>(12 + body.size())) + body;
+}
+
+TEST(Rig, BonesWithoutNamesGoByTheirIndexAndAreFoundByShape) {
+  // As Khronos' CesiumMan has them: joints without names, one unnamed clip.
+  const std::string bytes = changed_rig([](detail::Json& document) {
+    for (auto& node : document["nodes"]) node.erase("name");
+    auto& animations = document["animations"];
+    animations.erase(animations.begin(), animations.begin() + 3);  // the walk is the last
+    animations[0].erase("name");
+  });
+  const Rig rig = Rig::parse(bytes, "unnamed.glb", {});
+  const Rig profiled = Rig::load(kRig, load_rig_profile(kProfile));
+  EXPECT_EQ(rig.data().hips, profiled.data().hips);
+  for (int side = 0; side < 2; ++side) {
+    EXPECT_EQ(rig.data().legs[side].toe, profiled.data().legs[side].toe);
+    EXPECT_EQ(rig.data().hands[side], profiled.data().hands[side]);
+  }
+  EXPECT_EQ(rig.data().bone_names[rig.data().hips], "nodes[" + std::to_string(rig.data().hips) + "]");
+  // Its only animation is an upper-body clip (its feet keep still): not taken as the walk.
+  EXPECT_EQ(rig.clip_sources().at("walk"), "procedural");
 }
 
 TEST(Rig, RefusesBonesAndClipsItLacksAndLegsThatAreNotChains) {
