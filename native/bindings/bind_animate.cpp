@@ -1,8 +1,11 @@
 // Rigs and the animated crowd as glTF: footfall._native.detect_bones,
-// split_side, animate_gltf.
+// split_side, foot_roll, animate_gltf.
+#include <pybind11/numpy.h>
+
 #include "bindings.hpp"
 #include "footfall/animate/bone_map.hpp"
 #include "footfall/animate/crowd_gltf.hpp"
+#include "footfall/animate/foot_roll.hpp"
 
 #include <array>
 #include <optional>
@@ -22,6 +25,11 @@ std::optional<Vec3> point_or_none(const py::handle& value) {
 }  // namespace
 
 void bind_animate(py::module_& m) {
+  py::dict amplitudes;
+  amplitudes["heel_strike"] = animate::kHeelStrike;
+  amplitudes["toe_off"] = animate::kToeOff;
+  amplitudes["heel_share"] = animate::kHeelShare;
+  m.attr("FOOT_ROLL") = amplitudes;
   m.def(
       "detect_bones",
       [](const py::sequence& bones, const std::map<std::string, std::string>& given) {
@@ -44,6 +52,37 @@ void bind_animate(py::module_& m) {
       "A humanoid's bones by role: `bones` are (name, parent or None, rest head (x, y, z) or "
       "None, rest tail or None), Z up; `given` role -> bone for roles already chosen (\"hips\", "
       "\"left.thigh\", ...). Returns (role -> bone, the roles not found).");
+  m.def(
+      "foot_roll",
+      [](const py::array_t<double>& times, const py::array_t<bool>& planted, int side,
+         const py::array_t<double>& start, const py::array_t<double>& end, const py::array_t<int>& foot,
+         const py::array_t<bool>& forward, const py::array_t<double>& speed, std::array<double, 4> shape,
+         double full_speed, bool leaves) {
+        const auto n = static_cast<std::size_t>(start.size());
+        if (static_cast<std::size_t>(end.size()) != n || static_cast<std::size_t>(foot.size()) != n ||
+            static_cast<std::size_t>(forward.size()) != n || static_cast<std::size_t>(speed.size()) != n)
+          throw std::invalid_argument("the steps' arrays differ in length");
+        if (planted.size() != times.size()) throw std::invalid_argument("times and planted differ in length");
+        std::vector<animate::RollStep> steps(n);
+        for (std::size_t i = 0; i < n; ++i)
+          steps[i] = {start.at(i), end.at(i), foot.at(i), forward.at(i), speed.at(i)};
+        const animate::FootRoller roller(std::move(steps), full_speed, leaves);
+        const animate::FootShape foot_shape{shape[0], shape[1], shape[2], shape[3]};
+        const auto count = times.size();
+        py::array_t<double> pitch(count), ahead(count), up(count);
+        for (py::ssize_t i = 0; i < count; ++i) {
+          const animate::FootRoll r = roller.at(times.at(i), side, planted.at(i), foot_shape);
+          pitch.mutable_at(i) = r.pitch;
+          ahead.mutable_at(i) = r.forward;
+          up.mutable_at(i) = r.up;
+        }
+        return py::make_tuple(pitch, ahead, up);
+      },
+      py::arg("times"), py::arg("planted"), py::arg("side"), py::arg("start"), py::arg("end"), py::arg("foot"),
+      py::arg("forward"), py::arg("speed"), py::arg("shape"), py::arg("full_speed"), py::arg("leaves") = false,
+      "Heel-toe roll of foot `side` (0 left) at `times`, planted or not: (pitch, forward, up) arrays. "
+      "Steps as arrays (start, end, foot, forward, speed); shape (ankle_height, heel_back, ball_ahead, "
+      "ball_height).");
   m.def("split_side", &split_side, py::arg("name"),
         "(side, base name) of a bone name: side 'left', 'right' or '' for the trunk.");
   m.def(

@@ -17,15 +17,18 @@ def turned(point, pitch):
     return numpy.array([c * point[0] - s * point[1], s * point[0] + c * point[1]])
 
 
-@pytest.mark.parametrize("pitch", [math.radians(15), math.radians(4), math.radians(-30), math.radians(-9)])
-def test_the_foot_turns_on_its_heel_or_its_ball(pitch):
-    forward, up = SHAPE.offset(numpy.array([pitch]))
+@pytest.mark.parametrize("heel_rising", [False, True])
+def test_the_foot_turns_on_its_heel_or_its_ball(heel_rising):
+    steps = walk(3)
+    t = numpy.array([0.5 + (0.95 if heel_rising else 0.05) * 0.5])  # the second stance: toe-off, or heel strike
+    pitch, forward, up = foot_roll.roll(t, numpy.array([True]), 1, steps, SHAPE, 1.3)
+    assert (pitch[0] < 0) == heel_rising and pitch[0] != 0
     ankle = numpy.array([0.0, SHAPE.ankle_height])
     moved = ankle + [forward[0], up[0]]
     heel, ball = numpy.array([-SHAPE.heel_back, 0.0]), numpy.array([SHAPE.ball_ahead, SHAPE.ball_height])
-    pivot = heel if pitch > 0 else ball
+    pivot = ball if heel_rising else heel
     # The foot turned by the pitch about its ankle's new place leaves the pivot where it was.
-    assert moved + turned(pivot - ankle, pitch) == pytest.approx(pivot, abs=1e-12)
+    assert moved + turned(pivot - ankle, pitch[0]) == pytest.approx(pivot, abs=1e-12)
 
 
 def walk(count, duration=0.5, speed=1.3, waits=()):

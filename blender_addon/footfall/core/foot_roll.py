@@ -2,30 +2,28 @@
 """Heel-toe roll: the foot's pitch through each stance and swing, and where
 the ankle goes so that the point the foot rolls on stays put.
 
-A walking foot strikes with its toes up, pivoting on the heel until it is
-flat (the first FLAT_AT of the stance); it stays flat while the body passes
-over it; from HEEL_OFF_AT of the stance on its heel rises, pivoting on the
-ball (the toe joint), up to toe-off at the stance's end. In the swing the
-pitch and the ankle's offset go smoothly from toe-off to the next heel
-strike. Amplitudes grow with the step's speed up to the preferred speed.
-A foot rolls in only from a moving step by the other foot and rolls off
-only into one (a walk, or a stop that still carries the body forward), so
-that starts, waits and side steps stay flat.
+The model (docs/animation.md) is the core's, shared with the headless glTF
+writer: footfall._native.foot_roll. A walking foot strikes with its toes up,
+pivoting on the heel, is flat while the body passes over it, and rises on
+its ball up to toe-off; amplitudes grow with the step's speed; starts, waits
+and side steps stay flat. Here: the foot's shape from the rig, and the plan's
+steps as arrays for the core.
 
 Pitch is positive with the toes up. Offsets are the ankle's displacement
 from where it stands with the foot flat, along the foot's forward direction
-and up [m]. Pure numpy: the caller gives the plan's steps as arrays.
+and up [m].
 """
 
-import math
-from dataclasses import dataclass
+from dataclasses import astuple, dataclass
 
 import numpy
 
-HEEL_STRIKE = math.radians(15)  # toes up at heel strike, at full speed
-TOE_OFF = math.radians(30)  # heel up at toe-off, at full speed
-FLAT_AT = 0.15  # of the stance: the foot is flat from here
-HEEL_OFF_AT = 0.6  # of the stance: the heel rises from here
+from . import native
+
+_AMPLITUDES = native.load().FOOT_ROLL
+HEEL_STRIKE = _AMPLITUDES["heel_strike"]  # toes up at heel strike, at full speed [rad]
+TOE_OFF = _AMPLITUDES["toe_off"]  # heel up at toe-off, at full speed [rad]
+HEEL_SHARE = _AMPLITUDES["heel_share"]  # of the foot's length behind the ankle, for a foot without a mesh
 
 
 @dataclass(frozen=True)
@@ -38,19 +36,6 @@ class FootShape:
     heel_back: float
     ball_ahead: float
     ball_height: float
-
-    def offset(self, pitch: numpy.ndarray):
-        """The ankle's (forward, up) displacement at `pitch`: turning on the
-        heel for the toes up, on the ball for the heel up."""
-        toes_up = pitch > 0.0
-        # The ankle seen from the pivot.
-        vx = numpy.where(toes_up, self.heel_back, -self.ball_ahead)
-        vz = numpy.where(toes_up, self.ankle_height, self.ankle_height - self.ball_height)
-        c, s = numpy.cos(pitch), numpy.sin(pitch)
-        return c * vx - s * vz - vx, s * vx + c * vz - vz
-
-
-HEEL_SHARE = 0.25  # of the foot's length behind the ankle, for a foot without a mesh
 
 
 def foot_shape(ankle, ball, forward, foot_length: float, points=()) -> FootShape:
@@ -78,52 +63,14 @@ class Steps:
     speed: numpy.ndarray
 
 
-def _smooth(w):
-    w = numpy.clip(w, 0.0, 1.0)
-    return w * w * (3.0 - 2.0 * w)
-
-
 def roll(times: numpy.ndarray, planted: numpy.ndarray, side: int, steps: Steps, shape: FootShape,
          full_speed: float, leaves: bool = False):
     """(pitch [rad], forward offset [m], up offset [m]) of foot `side` at
     `times`, where `planted` says whether the plan has it planted. An agent
     that `leaves` walks on past its last step: its feet roll as if another
     step followed."""
-    count = len(steps.start)
-    pitch = numpy.zeros(len(times))
-    if count == 0:
-        return pitch, pitch.copy(), pitch.copy()
-    amplitude = numpy.where(steps.forward, numpy.clip(steps.speed / full_speed, 0.0, 1.0), 0.0)
-    rolling = amplitude > 0.0
-    after = numpy.zeros(count, dtype=bool)  # swung in during the step before
-    after[1:] = rolling[1:] & rolling[:-1] & (steps.foot[1:] != steps.foot[:-1])
-    before = numpy.zeros(count, dtype=bool)  # swings during the step after
-    before[:-1] = rolling[:-1] & rolling[1:] & (steps.foot[1:] != steps.foot[:-1])
-    before[-1] = leaves and rolling[-1]
-    strike = numpy.where(after, HEEL_STRIKE * amplitude, 0.0)
-    toe_off = numpy.where(before, -TOE_OFF * amplitude, 0.0)
-
-    k = numpy.clip(numpy.searchsorted(steps.start, times, side="right") - 1, 0, count - 1)
-    started = times >= steps.start[k]
-    u = numpy.clip((times - steps.start[k]) / numpy.maximum(steps.end[k] - steps.start[k], 1e-9), 0.0, 1.0)
-    own = steps.foot[k] == side
-
-    stance = own & planted & started
-    in_strike = numpy.clip(1.0 - u / FLAT_AT, 0.0, 1.0) * strike[k]
-    in_off = numpy.clip((u - HEEL_OFF_AT) / (1.0 - HEEL_OFF_AT), 0.0, 1.0) * toe_off[k]
-    pitch = numpy.where(stance, in_strike + in_off, 0.0)
-    forward, up = shape.offset(pitch)
-
-    # In a walking step by the other foot this one swings from its toe-off
-    # (the step before) to its heel strike (the step after).
-    swing = ~own & ~planted & started & rolling[k]
-    previous = numpy.where(k > 0, toe_off[numpy.maximum(k - 1, 0)], 0.0)
-    walk_on = HEEL_STRIKE * amplitude[-1] if leaves else 0.0  # the step it would take next
-    following = numpy.where(k + 1 < count, strike[numpy.minimum(k + 1, count - 1)], walk_on)
-    w = _smooth(u)
-    from_forward, from_up = shape.offset(previous)
-    to_forward, to_up = shape.offset(following)
-    pitch = numpy.where(swing, (1 - w) * previous + w * following, pitch)
-    forward = numpy.where(swing, (1 - w) * from_forward + w * to_forward, forward)
-    up = numpy.where(swing, (1 - w) * from_up + w * to_up, up)
-    return pitch, forward, up
+    return native.load().foot_roll(
+        numpy.asarray(times, dtype=float), numpy.asarray(planted, dtype=bool), side,
+        numpy.asarray(steps.start, dtype=float), numpy.asarray(steps.end, dtype=float),
+        numpy.asarray(steps.foot, dtype=numpy.int32), numpy.asarray(steps.forward, dtype=bool),
+        numpy.asarray(steps.speed, dtype=float), astuple(shape), full_speed, leaves)

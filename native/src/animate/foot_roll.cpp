@@ -1,7 +1,8 @@
-#include "animate/foot_roll.hpp"
+#include "footfall/animate/foot_roll.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace footfall::animate {
 
@@ -14,25 +15,37 @@ FootRoll roll_at_pitch(const FootShape& shape, double pitch) {
   return {pitch, c * vx - s * vz - vx, s * vx + c * vz - vz};
 }
 
+namespace {
+
+std::vector<RollStep> roll_steps(const AgentPlan& plan) {
+  std::vector<RollStep> steps;
+  for (const Footstep& s : plan.footsteps)
+    steps.push_back({s.start_time, s.end_time, static_cast<int>(s.foot),
+                     s.kind == StepKind::kWalk || s.kind == StepKind::kStop,
+                     length(s.com_end - s.com_start) / std::max(s.end_time - s.start_time, 1e-9)});
+  return steps;
+}
+
+}  // namespace
+
 FootRoller::FootRoller(const AgentPlan& plan, double full_speed)
-    : plan_(&plan), leaves_(plan.leaves) {
-  const auto& steps = plan.footsteps;
-  const std::size_t n = steps.size();
+    : FootRoller(roll_steps(plan), full_speed, plan.leaves) {}
+
+FootRoller::FootRoller(std::vector<RollStep> steps, double full_speed, bool leaves)
+    : steps_(std::move(steps)), leaves_(leaves) {
+  const std::size_t n = steps_.size();
   std::vector<double> amplitude(n, 0.0);
   rolling_.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    const Footstep& s = steps[i];
-    const bool forward = s.kind == StepKind::kWalk || s.kind == StepKind::kStop;
-    const double speed = length(s.com_end - s.com_start) / std::max(s.end_time - s.start_time, 1e-9);
-    amplitude[i] = forward ? std::clamp(speed / full_speed, 0.0, 1.0) : 0.0;
+    amplitude[i] = steps_[i].forward ? std::clamp(steps_[i].speed / full_speed, 0.0, 1.0) : 0.0;
     rolling_[i] = amplitude[i] > 0.0;
   }
   strike_.assign(n, 0.0);
   toe_off_.assign(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     // A foot rolls in only from a moving step by the other foot, and off only into one.
-    const bool after = i > 0 && rolling_[i] && rolling_[i - 1] && steps[i].foot != steps[i - 1].foot;
-    const bool before = i + 1 < n ? rolling_[i] && rolling_[i + 1] && steps[i].foot != steps[i + 1].foot
+    const bool after = i > 0 && rolling_[i] && rolling_[i - 1] && steps_[i].foot != steps_[i - 1].foot;
+    const bool before = i + 1 < n ? rolling_[i] && rolling_[i + 1] && steps_[i].foot != steps_[i + 1].foot
                                   : leaves_ && rolling_[i];
     if (after) strike_[i] = kHeelStrike * amplitude[i];
     if (before) toe_off_[i] = -kToeOff * amplitude[i];
@@ -48,16 +61,15 @@ double smooth(double w) {
 }  // namespace
 
 FootRoll FootRoller::at(double t, int side, bool planted, const FootShape& shape) const {
-  const auto& steps = plan_->footsteps;
-  const std::size_t n = steps.size();
+  const std::size_t n = steps_.size();
   if (n == 0) return {};
-  const auto later = std::upper_bound(steps.begin(), steps.end(), t,
-                                      [](double time, const Footstep& s) { return time < s.start_time; });
-  const std::size_t k = later == steps.begin() ? 0 : static_cast<std::size_t>(later - steps.begin()) - 1;
-  const Footstep& step = steps[k];
-  if (t < step.start_time) return {};
-  const double u = std::clamp((t - step.start_time) / std::max(step.end_time - step.start_time, 1e-9), 0.0, 1.0);
-  const bool own = static_cast<int>(step.foot) == side;
+  const auto later = std::upper_bound(steps_.begin(), steps_.end(), t,
+                                      [](double time, const RollStep& s) { return time < s.start; });
+  const std::size_t k = later == steps_.begin() ? 0 : static_cast<std::size_t>(later - steps_.begin()) - 1;
+  const RollStep& step = steps_[k];
+  if (t < step.start) return {};
+  const double u = std::clamp((t - step.start) / std::max(step.end - step.start, 1e-9), 0.0, 1.0);
+  const bool own = step.foot == side;
   if (own && planted) {
     const double in_strike = std::clamp(1.0 - u / kFlatAt, 0.0, 1.0) * strike_[k];
     const double in_off = std::clamp((u - kHeelOffAt) / (1.0 - kHeelOffAt), 0.0, 1.0) * toe_off_[k];

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "animate/foot_roll.hpp"
+#include "footfall/animate/foot_roll.hpp"
 #include "animate/transform.hpp"
 
 namespace footfall::animate {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "animate/foot_roll.hpp"
+#include "footfall/animate/foot_roll.hpp"
 #include "footfall/plan/plan.hpp"
 
 namespace footfall::animate {

@@ -1,7 +1,7 @@
 // Footfall — heel-toe roll: the foot's pitch through each stance and swing,
 // and where the ankle goes so that the point the foot rolls on stays put.
-// The model is documented once, in docs/animation.md; the add-on's
-// core/foot_roll.py computes the same.
+// The model is documented in docs/animation.md; the add-on's Apply and the
+// headless writer both use this one (core/foot_roll.py calls it).
 #pragma once
 
 #include <vector>
@@ -37,18 +37,28 @@ struct FootRoll {
 /// The ankle's offset at `pitch`: turning on the heel (toes up) or the ball.
 FootRoll roll_at_pitch(const FootShape& shape, double pitch);
 
+/// A plan's footsteps as the roll needs them.
+struct RollStep {
+  double start = 0, end = 0;  ///< [s]
+  int foot = 0;               ///< 0 left, 1 right
+  bool forward = true;        ///< the body goes over the feet (a walk or a stop; not a side step)
+  double speed = 0;           ///< the COM's speed over the step [m/s]
+};
+
 /// The roll of both feet of one agent's plan, step by step.
 class FootRoller {
  public:
   /// `full_speed`: the speed at which the amplitudes are full (the
-  /// character's preferred speed). [m/s]
+  /// character's preferred speed) [m/s]; an agent that `leaves` walks on
+  /// past its last step: its feet roll as if another step followed.
+  FootRoller(std::vector<RollStep> steps, double full_speed, bool leaves);
   FootRoller(const AgentPlan& plan, double full_speed);
   /// Foot `side` (0 left, 1 right) at time `t`, where the plan has it
   /// `planted` or not.
   FootRoll at(double t, int side, bool planted, const FootShape& shape) const;
 
  private:
-  const AgentPlan* plan_;
+  std::vector<RollStep> steps_;
   bool leaves_;
   std::vector<double> strike_;   ///< per step: pitch at its heel strike
   std::vector<double> toe_off_;  ///< per step: pitch at its toe-off
