@@ -1,11 +1,12 @@
 // Rigs and the animated crowd as glTF: footfall._native.detect_bones,
-// split_side, foot_roll, animate_gltf.
+// split_side, foot_roll, find_gait_cycle, animate_gltf.
 #include <pybind11/numpy.h>
 
 #include "bindings.hpp"
 #include "footfall/animate/bone_map.hpp"
 #include "footfall/animate/crowd_gltf.hpp"
 #include "footfall/animate/foot_roll.hpp"
+#include "footfall/animate/gait_cycle.hpp"
 
 #include <array>
 #include <optional>
@@ -83,6 +84,15 @@ void bind_animate(py::module_& m) {
       "Heel-toe roll of foot `side` (0 left) at `times`, planted or not: (pitch, forward, up) arrays. "
       "Steps as arrays (start, end, foot, forward, speed); shape (ankle_height, heel_back, ball_ahead, "
       "ball_height).");
+  m.def(
+      "find_gait_cycle",
+      [](const std::vector<double>& feet, const std::vector<double>& hands, double leg_length) {
+        const animate::GaitCycle found = animate::find_gait_cycle(feet, hands, leg_length);
+        return py::make_tuple(found.cycles, found.strike, found.source);
+      },
+      py::arg("feet"), py::arg("hands"), py::arg("leg_length"),
+      "(cycles, strike, source) of a clip sampled evenly over its range (its end left out): `feet` "
+      "the right foot's lead over the left along the facing, `hands` the left hand's over the right.");
   m.def("split_side", &split_side, py::arg("name"),
         "(side, base name) of a bone name: side 'left', 'right' or '' for the trunk.");
   m.def(

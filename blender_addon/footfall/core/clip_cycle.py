@@ -3,8 +3,9 @@
 the cycle the right heel strikes, found from the motion of its feet (or,
 for an upper-body clip, of its hands).
 
-Pure numpy: the caller samples the clip's channels per bone (Blender's
-F-curves, or a glTF animation) and gives the bones' rest matrices in
+The poses in numpy, the cycle from them by the core (find_gait_cycle, which
+the headless rig reader uses too): the caller samples the clip's channels
+per bone (Blender's F-curves) and gives the bones' rest matrices in
 armature space. The poses are computed as Blender does for bones that
 inherit their parent's rotation and scale: pose = parent pose @ (parent
 rest^-1 @ rest) @ basis, basis = T(location) R(rotation) S(scale).
@@ -15,9 +16,9 @@ from typing import Dict, Optional, Sequence
 
 import numpy
 
-MAX_CYCLES = 4  # a clip is taken to hold at most this many gait cycles
-MIN_SWING = 0.05  # feet (or hands) must part by this share of the leg's length to show a cycle
-CONVENTION = 0.25  # where the procedural clips put the right heel strike (left arm forward)
+from . import native
+
+CONVENTION = 0.25  # where the procedural clips put the right heel strike (left arm forward), as the core's GaitCycle
 
 
 @dataclass(frozen=True)
@@ -95,18 +96,6 @@ def pose_heads(rests: Dict[str, BoneRest], bases: Dict[str, numpy.ndarray], name
     return {name: pose(name)[:, :3, 3] for name in names}
 
 
-def _dominant(signal: numpy.ndarray):
-    """The strongest of the first MAX_CYCLES harmonics of a signal sampled
-    evenly over one period: (cycles, amplitude, fraction of a cycle at which
-    that harmonic peaks)."""
-    spectrum = numpy.fft.rfft(signal - signal.mean())
-    harmonics = spectrum[1:MAX_CYCLES + 1]
-    k = int(numpy.argmax(numpy.abs(harmonics)))
-    amplitude = 2.0 * abs(harmonics[k]) / len(signal)
-    # signal ~ A cos(2 pi n t - theta): its peaks at t = theta / (2 pi n) + m / n.
-    return k + 1, amplitude, (-numpy.angle(harmonics[k]) / (2 * numpy.pi)) % 1.0
-
-
 def find_cycle(forward: numpy.ndarray, leg_length: float, left_foot: numpy.ndarray, right_foot: numpy.ndarray,
                left_hand: numpy.ndarray, right_hand: numpy.ndarray) -> ClipCycle:
     """The cycle of a clip sampled evenly over its frame range (end left out):
@@ -114,8 +103,6 @@ def find_cycle(forward: numpy.ndarray, leg_length: float, left_foot: numpy.ndarr
     left (along `forward`, the rig's facing); a clip whose feet keep still is
     timed by its hands, the left hand furthest ahead at the right heel strike
     (arms swing against the legs). `leg_length` in the same units."""
-    for source, sign, first, second in (("feet", 1.0, right_foot, left_foot), ("hands", -1.0, right_hand, left_hand)):
-        cycles, amplitude, peak = _dominant(sign * ((first - second) @ forward))
-        if amplitude >= MIN_SWING * leg_length:
-            return ClipCycle(cycles, peak, source)
-    return ClipCycle(1, CONVENTION, "convention")
+    cycles, strike, source = native.load().find_gait_cycle(
+        (right_foot - left_foot) @ forward, (left_hand - right_hand) @ forward, leg_length)
+    return ClipCycle(cycles, strike, source)

@@ -1,18 +1,16 @@
 #include "animate/clips.hpp"
 
 #include <algorithm>
-#include <complex>
 #include <stdexcept>
 
 #include "animate/accessor_data.hpp"
+#include "footfall/animate/gait_cycle.hpp"
 
 namespace footfall::animate {
 
 namespace {
 
-constexpr int kMaxCycles = 4;         // a clip holds at most this many gait cycles
-constexpr double kMinSwing = 0.05;    // of the leg's length: feet (or hands) parting by less show no cycle
-constexpr double kConvention = 0.25;  // the right heel strike of a procedural clip (left arm forward)
+const double kConvention = GaitCycle{}.strike;  // the right heel strike of a procedural clip
 constexpr int kCycleSamples = 64;     // poses sampled over a clip to find its cycle
 constexpr double kSwing = 0.3490658503988659;  // 20 deg: the procedural arm swing each way
 constexpr int kProceduralKeys = 8;    // keys per procedural cycle
@@ -97,35 +95,6 @@ std::vector<Vec3> pose_positions(const RigData& rig, const Clip& clip, double t,
   return out;
 }
 
-// The strongest of the first kMaxCycles harmonics of a signal sampled evenly
-// over one period: its number, amplitude, and the fraction of a cycle at
-// which it peaks.
-struct Harmonic {
-  int cycles = 1;
-  double amplitude = 0;
-  double peak = 0;
-};
-
-Harmonic dominant(const std::vector<double>& signal) {
-  const std::size_t n = signal.size();
-  double mean = 0;
-  for (double v : signal) mean += v / static_cast<double>(n);
-  Harmonic best;
-  for (int k = 1; k <= kMaxCycles; ++k) {
-    std::complex<double> sum = 0;
-    for (std::size_t i = 0; i < n; ++i)
-      sum += (signal[i] - mean) * std::polar(1.0, -2 * kPi * k * static_cast<double>(i) / static_cast<double>(n));
-    const double amplitude = 2.0 * std::abs(sum) / static_cast<double>(n);
-    if (amplitude > best.amplitude) {
-      // signal ~ A cos(2 pi k t - theta): peaks at t = theta / (2 pi k).
-      double peak = std::fmod(-std::arg(sum) / (2 * kPi), 1.0);
-      if (peak < 0) peak += 1.0;
-      best = {k, amplitude, peak};
-    }
-  }
-  return best;
-}
-
 // The clip's cycle and right heel strike: where the right foot is furthest
 // ahead of the left; for a clip whose feet keep still, where the left hand
 // is furthest ahead of the right (arms swing against the legs).
@@ -139,17 +108,10 @@ void find_cycle(const RigData& rig, Clip& clip, double duration) {
     hands[i] = dot(p[2] - p[3], forward);
   }
   const double leg = 0.5 * (rig.legs[0].upper + rig.legs[0].lower + rig.legs[1].upper + rig.legs[1].lower);
-  for (const auto* signal : {&feet, &hands}) {
-    const Harmonic h = dominant(*signal);
-    if (h.amplitude >= kMinSwing * leg) {
-      clip.cycle = duration / h.cycles;
-      clip.strike = h.peak;
-      clip.feet_step = signal == &feet;
-      return;
-    }
-  }
-  clip.cycle = duration;
-  clip.strike = kConvention;
+  const GaitCycle found = find_gait_cycle(feet, hands, leg);
+  clip.cycle = duration / found.cycles;
+  clip.strike = found.strike;
+  clip.feet_step = found.source == "feet";
 }
 
 }  // namespace
