@@ -1,6 +1,7 @@
-"""Blender background test: the same plan animated by the add-on (Apply) and
-by the core's headless writer (footfall._native.animate_gltf) puts the feet
-in the same places at every frame.
+"""Blender background test: the same plan animated by the add-on (Apply, and
+its Export glTF) and by the core's headless writer
+(footfall._native.animate_gltf) puts the feet in the same places at every
+frame.
 
 Run: blender -b --factory-startup --python-exit-code 1 --python tests/blender/test_headless_gltf.py
 """
@@ -70,6 +71,21 @@ def test_blender_and_the_core_put_the_feet_in_the_same_places():
     print(f"feet and toes: worst {1000 * worst:.2f} mm apart over {compared} bone positions")
     check(compared > 1000, f"only {compared} positions compared")
     check(worst < TOLERANCE, f"the add-on's and the core's feet are {1000 * worst:.1f} mm apart")
+
+    # The two files, read alike: Blender's keys at frame / fps, from the scene's first frame.
+    blender_path = TMP / "blender.glb"
+    check(bpy.ops.footfall.export_gltf(filepath=str(blender_path)) == {"FINISHED"}, "export failed")
+    exported = CrowdGlb(blender_path)
+    worst = 0.0
+    for agent in plan.agents:
+        shown = times <= agent.end_time() if agent.leaves else numpy.ones(len(times), dtype=bool)
+        nodes = exported.subtree(exported.agent_root(agent.name))
+        world = exported.world_matrices(agent.name, times + scene.frame_start / fps, [nodes[b] for b in BONES])
+        for bone in BONES:
+            apart = numpy.linalg.norm(z_up(world[nodes[bone]][:, :3, 3]) - core[agent.name, bone], axis=1)
+            worst = max(worst, float(apart[shown].max()))
+    print(f"the two files' feet and toes: worst {1000 * worst:.2f} mm apart")
+    check(worst < TOLERANCE, f"Blender's file and the core's put the feet {1000 * worst:.1f} mm apart")
 
 
 if __name__ == "__main__":
