@@ -180,6 +180,14 @@ def collapse_bones(document):
         document["nodes"][joint]["translation"] = [0.0, 0.0, 0.0]
 
 
+def lying_down(document):
+    """Turned a quarter about X under a new root, as a Z-up model exported without its turn to Y up."""
+    scene = document["scenes"][document.get("scene", 0)]
+    half = math.sqrt(0.5)
+    document["nodes"].append({"name": "z_up", "children": scene["nodes"], "rotation": [-half, 0.0, 0.0, half]})
+    scene["nodes"] = [len(document["nodes"]) - 1]
+
+
 def with_parent_transform(document):
     """The rig under a new root that turns it a quarter about the vertical,
     moves it and scales it by 0.01, its old root scaled up by 100 to match:
@@ -249,6 +257,8 @@ def test_bad_input_is_refused_in_one_line_with_no_file(ff, cli, demo, tmp_path):
     # Nameless bones all at one point: neither names nor shape show the roles.
     shapeless = tmp_path / "shapeless.glb"
     rewritten(RIG, shapeless, collapse_bones)
+    lying = tmp_path / "lying.glb"
+    rewritten(RIG, lying, lying_down)
     # A plan for a character twice the rig's size.
     giant = json.loads(plan_path.read_text())
     giant["character"]["com_height"] = 2 * giant["character"]["com_height"]
@@ -260,6 +270,7 @@ def test_bad_input_is_refused_in_one_line_with_no_file(ff, cli, demo, tmp_path):
         ((giant_plan, "--rig", RIG, "-o", out), "stands -51 % off"),
         ((plan_path, "--rig", tmp_path / "none.glb", "-o", out), "none.glb': no such file"),
         ((plan_path, "--rig", shapeless, "-o", out), "could not find these bones: left.upper_arm"),
+        ((plan_path, "--rig", lying, "--profile", PROFILE, "-o", out), "the rig does not stand upright at rest"),
         ((plan_path, "--rig", RIG, "--fps", "0", "-o", out), "--fps: expected a number from 1 to 240"),
         ((plan_path, "--rig", RIG), "animate needs --rig RIG and -o CROWD"),
     ]

@@ -25,6 +25,7 @@ using animate::RigData;
 using animate::to_z_up;
 using detail::user_text;
 
+constexpr double kStandingDrop = 0.5;  // of the leg's length at least, from the hip joints down to the ankles
 constexpr double kPoleAhead = 0.5;  // [m] knee poles in front of the knees, as the add-on's
 constexpr const char* kBehaviors[] = {"walk", "arms_in", "side_step", "idle"};
 
@@ -243,6 +244,11 @@ void read_legs(RigData& rig, const RigProfile& profile) {
     for (const Vec3& p : skinned_points(rig, {leg.foot, leg.toe})) heel = std::max(heel, -dot(p - leg.ankle, forward));
     leg.shape = {leg.ankle.z, heel > 0 ? heel : animate::kHeelShare * foot_length, dot(ball - leg.ankle, forward), ball.z};
     hips += 0.5 * leg.hip.z;
+    // Standing legs hang nearly straight down; a rig lying down (modelled Z
+    // up and exported without turning it) would walk on its side.
+    if (leg.hip.z - leg.ankle.z < kStandingDrop * (leg.upper + leg.lower))
+      throw std::invalid_argument(rig.path + ": the rig does not stand upright at rest (the ankles are not below the "
+                                  "hips): lying down, or turned as if glTF were Z up");
   }
   rig.hip_height = hips;
   if (!(rig.hip_height > 0))
