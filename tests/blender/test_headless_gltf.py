@@ -1,7 +1,7 @@
 """Blender background test: the same plan animated by the add-on (Apply, and
 its Export glTF) and by the core's headless writer
 (footfall._native.animate_gltf) puts the feet in the same places at every
-frame.
+frame, the hands and head too.
 
 Run: blender -b --factory-startup --python-exit-code 1 --python tests/blender/test_headless_gltf.py
 """
@@ -26,11 +26,11 @@ from crowd_glb import CrowdGlb, z_up  # noqa: E402
 TMP = pathlib.Path(tempfile.mkdtemp(prefix="footfall-headless-"))
 RIG = ROOT / "rigs" / "footfall_humanoid.glb"
 PROFILE = ROOT / "rigs" / "footfall_humanoid.json"
-TOLERANCE = 0.005  # [m] between the two animations' feet
-BONES = ("foot.L", "foot.R", "toe.L", "toe.R")
+TOLERANCE = 0.005  # [m] between the two animations' bones
+BONES = ("foot.L", "foot.R", "toe.L", "toe.R", "hand.L", "hand.R", "head")
 
 
-def test_blender_and_the_core_put_the_feet_in_the_same_places():
+def test_blender_and_the_core_put_the_bones_in_the_same_places():
     from footfall.core import native
 
     ff = native.load()
@@ -68,9 +68,9 @@ def test_blender_and_the_core_put_the_feet_in_the_same_places():
                 blender = numpy.array(armature.matrix_world @ armature.pose.bones[bone].head)
                 worst = max(worst, float(numpy.linalg.norm(blender - core[agent.name, bone][i])))
                 compared += 1
-    print(f"feet and toes: worst {1000 * worst:.2f} mm apart over {compared} bone positions")
+    print(f"feet, toes, hands and head: worst {1000 * worst:.2f} mm apart over {compared} bone positions")
     check(compared > 1000, f"only {compared} positions compared")
-    check(worst < TOLERANCE, f"the add-on's and the core's feet are {1000 * worst:.1f} mm apart")
+    check(worst < TOLERANCE, f"the add-on's and the core's bones are {1000 * worst:.1f} mm apart")
 
     # The two files, read alike: Blender's keys at frame / fps, from the scene's first frame.
     blender_path = TMP / "blender.glb"
@@ -84,9 +84,9 @@ def test_blender_and_the_core_put_the_feet_in_the_same_places():
         for bone in BONES:
             apart = numpy.linalg.norm(z_up(world[nodes[bone]][:, :3, 3]) - core[agent.name, bone], axis=1)
             worst = max(worst, float(apart[shown].max()))
-    print(f"the two files' feet and toes: worst {1000 * worst:.2f} mm apart")
-    check(worst < TOLERANCE, f"Blender's file and the core's put the feet {1000 * worst:.1f} mm apart")
+    print(f"the two files' bones: worst {1000 * worst:.2f} mm apart")
+    check(worst < TOLERANCE, f"Blender's file and the core's put the bones {1000 * worst:.1f} mm apart")
 
 
 if __name__ == "__main__":
-    run([test_blender_and_the_core_put_the_feet_in_the_same_places])
+    run([test_blender_and_the_core_put_the_bones_in_the_same_places])

@@ -35,11 +35,11 @@ footfall::AgentPlan four_steps() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const footfall::AgentPlan plan = four_steps();
   static const footfall::CharacterParams character;
-  static const std::vector<double> times{0.0, 0.3, 0.7, 1.1, 1.6, 2.1};
+  static const std::vector<double> times{0.0, 0.25, 0.75, 1.125, 1.625, 2.125};
   try {
     const footfall::Rig rig =
         footfall::Rig::parse(std::string(reinterpret_cast<const char*>(data), size), "fuzz.gltf", {});
-    footfall::animate::agent_motion(rig.data(), plan, character, times);
+    footfall::animate::agent_motion(rig.data(), plan, character, times, 24.0);
   } catch (const std::invalid_argument&) {
   }
   return 0;

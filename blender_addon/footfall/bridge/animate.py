@@ -399,10 +399,13 @@ def _upper_body(armature, agent, clips: Dict[str, rig_clips.Clip], fps: float, f
         strip.action_frame_start, strip.action_frame_end = timing.action_frame_start, timing.action_frame_end
         strip.scale, strip.repeat = timing.scale, timing.repeat
         strip.extrapolation = "NOTHING" if i < len(sections) - 1 else "HOLD_FORWARD"
-        # Strips above the lowest track fade in and out over what is below.
+        # Strips above the lowest track fade in and out over what is below; the
+        # last one holds to the scene's end, faded in only (faded out, the
+        # arms would drop to their rest at the last frame).
         if k > 0:
             strip.use_auto_blend = False
-            strip.blend_in = strip.blend_out = min(BLEND_SECONDS * fps, 0.5 * (strip.frame_end - strip.frame_start))
+            strip.blend_in = min(BLEND_SECONDS * fps, 0.5 * (strip.frame_end - strip.frame_start))
+            strip.blend_out = strip.blend_in if i < len(sections) - 1 else 0.0
 
 
 def clips_of(rig, profile) -> Dict[str, rig_clips.Clip]:

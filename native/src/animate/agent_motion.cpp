@@ -67,9 +67,27 @@ double unwrapped(double angle, double previous) {
   return angle + 2 * kPi * std::round((previous - angle) / (2 * kPi));
 }
 
-Trs blend(const Trs& a, const Trs& b, double w) {
-  return {(1 - w) * a.translation + w * b.translation, nlerp(a.rotation, b.rotation, w),
-          (1 - w) * a.scale + w * b.scale};
+// A node's pose from the clips playing over its rest, bottom up, as Blender's
+// NLA mixes them: each channel a clip keys, value by value (quaternion
+// components too) by the clip's influence; a channel it does not key is left
+// as the tracks below give it.
+Trs layered(const std::vector<ClipLayer>& layers, int node, const Trs& rest) {
+  Trs pose = rest;
+  for (const ClipLayer& layer : layers) {
+    const Trs clip = sample(*layer.clip, node, rest, layer.time);
+    const auto& keyed = layer.clip->track_of[node];
+    const double w = layer.influence;
+    if (keyed[Track::kTranslation] >= 0) pose.translation = (1 - w) * pose.translation + w * clip.translation;
+    if (keyed[Track::kRotation] >= 0) {
+      const Quat& p = pose.rotation;
+      const Quat& q = clip.rotation;
+      pose.rotation = {(1 - w) * p.w + w * q.w, (1 - w) * p.x + w * q.x, (1 - w) * p.y + w * q.y,
+                       (1 - w) * p.z + w * q.z};
+    }
+    if (keyed[Track::kScale] >= 0) pose.scale = (1 - w) * pose.scale + w * clip.scale;
+  }
+  pose.rotation = normalized(pose.rotation);
+  return pose;
 }
 
 // Keeps a node's rest translation and scale, with the rotation of `local`:
@@ -83,7 +101,7 @@ Trs rotated_rest(const Trs& rest, const Mat4& local) {
 }  // namespace
 
 AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const CharacterParams& character,
-                         const std::vector<double>& times) {
+                         const std::vector<double>& times, double fps) {
   AgentMotion motion;
   const std::size_t frames = times.size();
   const auto add = [&](int node) {
@@ -105,7 +123,7 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
   const Vec3 forward{std::cos(rig.forward_yaw), std::sin(rig.forward_yaw), 0.0};
   const Vec3 lateral = cross(forward, {0, 0, 1});  // the feet pitch about it
   const FootRoller roller(plan, character.preferred_speed);
-  const SectionTiming timing(plan, rig.clips);
+  const SectionTiming timing(plan, rig.clips, times.empty() ? 0.0 : times.back(), fps);
   double body_yaw = 0, previous_yaw = 0;
   std::array<double, 2> foot_yaw{0, 0}, previous_foot{0, 0};
 
@@ -189,14 +207,9 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
       motion.frames[leg_slots[side][3]][f] = toe;
     }
 
-    const ClipPhase phase = timing.at(times[f]);
-    for (std::size_t i = 0; i < upper_slots.size(); ++i) {
-      const int node = rig.upper_body[i];
-      Trs pose = sample(*phase.clip, node, rig.rest_trs[node], phase.time);
-      if (phase.next_weight > 0)
-        pose = blend(pose, sample(*phase.next, node, rig.rest_trs[node], phase.next_time), phase.next_weight);
-      motion.frames[upper_slots[i]][f] = pose;
-    }
+    const std::vector<ClipLayer> layers = timing.at(times[f]);
+    for (std::size_t i = 0; i < upper_slots.size(); ++i)
+      motion.frames[upper_slots[i]][f] = layered(layers, rig.upper_body[i], rig.rest_trs[rig.upper_body[i]]);
   }
   return motion;
 }

@@ -17,9 +17,9 @@ struct AgentMotion {
   std::vector<std::vector<Trs>> frames;  ///< [node][frame]
 };
 
-/// The motion of `plan`'s agent at `times` [s], with `character` (the
-/// agent's): after its last step it holds its last pose.
+/// The motion of `plan`'s agent at `times` [s] (frames at `fps`, from 0),
+/// with `character` (the agent's): after its last step it holds its last pose.
 AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const CharacterParams& character,
-                         const std::vector<double>& times);
+                         const std::vector<double>& times, double fps);
 
 }  // namespace footfall::animate

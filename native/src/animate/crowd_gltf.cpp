@@ -282,7 +282,7 @@ CrowdGltfSummary write_crowd_gltf(const Plan& plan, const Rig& rig, const std::s
   const int input = crowd.add_floats(key_times, 1);
   for (const AgentPlan& agent : plan.agents) {
     const std::vector<int> copy = crowd.add_agent_nodes(agent.name);
-    const animate::AgentMotion motion = animate::agent_motion(data, agent, character_of(agent, plan.character), times);
+    const animate::AgentMotion motion = animate::agent_motion(data, agent, character_of(agent, plan.character), times, options.fps);
     tinygltf::Animation animation;
     animation.name = agent.name;
     for (std::size_t i = 0; i < motion.nodes.size(); ++i) {

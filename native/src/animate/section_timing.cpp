@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace footfall::animate {
 
@@ -18,70 +19,98 @@ const char* behavior_of(const Footstep& step) {
 
 }  // namespace
 
-SectionTiming::SectionTiming(const AgentPlan& plan, const std::map<std::string, Clip>& clips) {
+SectionTiming::SectionTiming(const AgentPlan& plan, const std::map<std::string, Clip>& clips, double scene_end,
+                             double fps) {
+  struct Section {
+    std::string behavior;
+    std::size_t first, last;  // steps
+  };
+  std::vector<Section> sections;
   const auto& steps = plan.footsteps;
-  std::size_t first = 0;
-  while (first < steps.size()) {
-    const std::string behavior = behavior_of(steps[first]);
+  for (std::size_t first = 0; first < steps.size();) {
     std::size_t last = first;
-    while (last + 1 < steps.size() && behavior_of(steps[last + 1]) == behavior) ++last;
-    Section section;
-    section.clip = &clips.at(behavior);
-    section.start = steps[first].start_time;
-    section.end = steps[last].end_time;
-    section.anchor = section.start;
-    double walking_time = 0;
-    int walking = 0;
-    double right_strike = -1;
-    for (std::size_t i = first; i <= last; ++i) {
-      if (steps[i].kind != StepKind::kWalk) continue;
-      walking_time += steps[i].duration();
-      ++walking;
-      if (right_strike < 0 && steps[i].foot == Foot::kRight) right_strike = steps[i].start_time;
-    }
-    if (behavior != "idle" && walking > 0) {
-      // A cycle spans two steps; the clip's right heel strike on the plan's.
-      const double step_time = walking_time / walking;
-      section.scale = 2.0 * step_time / section.clip->cycle;
-      section.anchor = right_strike >= 0 ? right_strike : section.start + step_time;
-      section.anchor_phase = section.clip->strike * section.clip->cycle;
-    }
-    sections_.push_back(section);
+    while (last + 1 < steps.size() && std::string(behavior_of(steps[last + 1])) == behavior_of(steps[first])) ++last;
+    sections.push_back({behavior_of(steps[first]), first, last});
     first = last + 1;
   }
-  if (sections_.empty()) {  // standing still throughout
-    Section idle;
-    idle.clip = &clips.at("idle");
-    sections_.push_back(idle);
-  }
-}
-
-double SectionTiming::clip_time(const Section& section, double t) const {
-  const double cycle = section.clip->cycle;
-  double phase = std::fmod(section.anchor_phase + (t - section.anchor) / section.scale, cycle);
-  if (phase < 0) phase += cycle;
-  return section.clip->start + phase;
-}
-
-ClipPhase SectionTiming::at(double t) const {
-  const auto later = std::upper_bound(sections_.begin(), sections_.end(), t,
-                                      [](double time, const Section& s) { return time < s.start; });
-  std::size_t k = later == sections_.begin() ? 0 : static_cast<std::size_t>(later - sections_.begin()) - 1;
-  // Within half a blend of a boundary, the section before it fades into the one after.
-  if (k > 0 && t < sections_[k].start + 0.5 * kBlendSeconds) --k;
-  ClipPhase phase;
-  phase.clip = sections_[k].clip;
-  phase.time = clip_time(sections_[k], t);
-  if (k + 1 < sections_.size()) {
-    const double fade_start = sections_[k].end - 0.5 * kBlendSeconds;
-    const double w = std::clamp((t - fade_start) / kBlendSeconds, 0.0, 1.0);
-    if (w > 0) {
-      phase.next = sections_[k + 1].clip;
-      phase.next_time = clip_time(sections_[k + 1], t);
-      phase.next_weight = w * w * (3 - 2 * w);
+  std::vector<double> ends{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    const Section& section = sections[i];
+    Strip strip;
+    strip.clip = &clips.at(section.behavior);
+    const double start = steps[section.first].start_time, end = steps[section.last].end_time;
+    const double lead = i > 0 ? kBlendSeconds : 0.0;
+    const double tail = i + 1 < sections.size() ? kBlendSeconds : std::max(scene_end - end, 0.0);
+    strip.start = start - lead;
+    const double cycle = strip.clip->cycle;
+    double walking_time = 0, right_strike = -1;
+    int walking = 0;
+    for (std::size_t k = section.first; k <= section.last; ++k) {
+      if (steps[k].kind != StepKind::kWalk) continue;
+      walking_time += steps[k].duration();
+      ++walking;
+      if (right_strike < 0 && steps[k].foot == Foot::kRight) right_strike = steps[k].start_time;
     }
+    if (section.behavior != "idle" && walking > 0) {
+      // A cycle spans two steps; the clip's right heel strike on the plan's.
+      const double step_time = walking_time / walking;
+      strip.scale = 2.0 * step_time / cycle;
+      if (right_strike < 0) right_strike = start + step_time;
+      strip.offset = std::fmod(strip.clip->strike * cycle - (right_strike - strip.start) / strip.scale, cycle);
+      if (strip.offset < 0) strip.offset += cycle;
+    }
+    strip.end = strip.start + std::max(end + tail - strip.start, 1e-3 * cycle * strip.scale);
+    // Its track: A or B by turns, else the lowest free one above A, else a
+    // new one (Blender first places a strip at the whole frame below its start).
+    const double start_frame = std::floor(strip.start * fps);
+    int track = -1;
+    std::vector<int> candidates{static_cast<int>(i % 2)};
+    for (int k = 1; k < tracks_; ++k) candidates.push_back(k);
+    for (int k : candidates)
+      if (ends[k] * fps <= start_frame + 1e-9) {
+        track = k;
+        break;
+      }
+    if (track < 0) {
+      track = tracks_++;
+      ends.push_back(0);
+    }
+    ends[track] = strip.end;
+    strip.track = track;
+    strip.hold = i + 1 == sections.size();
+    if (track > 0) {
+      // Strips above the lowest track fade in and out over what is below;
+      // the last holds its end, faded in only.
+      const double blend = std::min(kBlendSeconds, 0.5 * (strip.end - strip.start));
+      strip.blend_in = blend;
+      strip.blend_out = strip.hold ? 0.0 : blend;
+    }
+    strips_.push_back(strip);
   }
-  return phase;
+  if (strips_.empty()) {  // standing still throughout
+    Strip idle;
+    idle.clip = &clips.at("idle");
+    idle.end = std::max(scene_end, 0.0);
+    idle.hold = true;
+    strips_.push_back(idle);
+  }
+}
+
+std::vector<ClipLayer> SectionTiming::at(double t) const {
+  std::vector<ClipLayer> layers;
+  for (int track = 0; track < tracks_; ++track)
+    for (const Strip& strip : strips_) {
+      if (strip.track != track || t < strip.start || (t > strip.end && !strip.hold)) continue;
+      const double local = std::min(t, strip.end) - strip.start;
+      double influence = 1.0;
+      if (strip.blend_in > 0) influence = std::min(influence, local / strip.blend_in);
+      if (strip.blend_out > 0) influence = std::min(influence, (strip.end - std::min(t, strip.end)) / strip.blend_out);
+      double phase = std::fmod(strip.offset + local / strip.scale, strip.clip->cycle);
+      if (phase < 0) phase += strip.clip->cycle;
+      layers.push_back({strip.clip, strip.clip->start + phase, std::clamp(influence, 0.0, 1.0)});
+      break;
+    }
+  return layers;
 }
 
 }  // namespace footfall::animate

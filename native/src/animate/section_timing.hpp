@@ -1,8 +1,11 @@
 // Footfall — when each upper-body clip plays: the plan's steps grouped into
-// sections of one behaviour (stops and standing play "idle"), each
-// section's clip stretched to its steps and phased so that the clip's right
-// heel strike falls on the plan's, as the add-on's core/clip_timing.py
-// times its NLA strips; neighbouring sections cross-fade.
+// sections of one behaviour (stops and standing play "idle"), each played by
+// its behaviour's clip, stretched so that a gait cycle spans two walking
+// steps and phased so that the clip's right heel strike falls on the plan's.
+// Laid out as the add-on lays its NLA strips (bridge/animate.py with
+// core/clip_timing.py) and blended as Blender's NLA blends them, so that both
+// play the same motion: strips overlap their neighbours by kBlendSeconds on
+// two alternating tracks, the upper one fading in and out.
 #pragma once
 
 #include <map>
@@ -14,35 +17,37 @@
 
 namespace footfall::animate {
 
-constexpr double kBlendSeconds = 0.25;  ///< cross-fade between two sections' clips, centred on their boundary
+constexpr double kBlendSeconds = 0.25;  ///< a strip's overlap with its neighbours and its fades
 
-/// What plays at one instant: a clip at its time, and, across a section
-/// boundary, the next one at its time with its weight.
-struct ClipPhase {
+/// One clip playing at one instant: at `time` of its animation, with
+/// `influence` over what the tracks below give.
+struct ClipLayer {
   const Clip* clip = nullptr;
   double time = 0;  ///< [s] in the clip's animation
-  const Clip* next = nullptr;
-  double next_time = 0;
-  double next_weight = 0;  ///< 0: `clip` alone
+  double influence = 1;
 };
 
 class SectionTiming {
  public:
-  /// `clips`: by behaviour, with "walk", "arms_in", "side_step" and "idle".
-  SectionTiming(const AgentPlan& plan, const std::map<std::string, Clip>& clips);
-  /// At scene time `t` [s]; past the plan the last section plays on.
-  ClipPhase at(double t) const;
+  /// `clips`: by behaviour, with "walk", "arms_in", "side_step" and "idle";
+  /// the last strip plays on to `scene_end` [s]; frames at `fps` place the
+  /// strips on their tracks as Blender does.
+  SectionTiming(const AgentPlan& plan, const std::map<std::string, Clip>& clips, double scene_end, double fps);
+  /// What plays at scene time `t` [s], lowest track first.
+  std::vector<ClipLayer> at(double t) const;
 
  private:
-  struct Section {
+  struct Strip {
     const Clip* clip = nullptr;
-    double start = 0, end = 0;  ///< [s]
-    double scale = 1;           ///< scene seconds per clip second
-    double anchor = 0;          ///< a scene time at which the clip is at `anchor_phase`
-    double anchor_phase = 0;    ///< [s] into the cycle
+    double start = 0, end = 0;  ///< [s], with the overlaps
+    int track = 0;
+    double blend_in = 0, blend_out = 0;  ///< [s]
+    bool hold = false;                   ///< the last: holds its end after it
+    double scale = 1;                    ///< scene seconds per clip second
+    double offset = 0;                   ///< [s] into the clip's cycle at `start`
   };
-  double clip_time(const Section& section, double t) const;
-  std::vector<Section> sections_;
+  std::vector<Strip> strips_;
+  int tracks_ = 2;
 };
 
 }  // namespace footfall::animate
