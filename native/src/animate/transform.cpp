@@ -13,6 +13,7 @@ Quat operator*(const Quat& a, const Quat& b) {
 
 Quat normalized(Quat q) {
   const double n = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+  if (!(n > 1e-300)) return {};  // no turn at all (a clip's zero quaternion, or two opposite ones mixed)
   return {q.w / n, q.x / n, q.y / n, q.z / n};
 }
 

@@ -15,10 +15,11 @@ struct Quat {
 };
 
 Quat operator*(const Quat& a, const Quat& b);
+/// Of unit length; a zero quaternion gives no turn.
 Quat normalized(Quat q);
 /// The turn by `angle` [rad] about the unit `axis`.
 Quat axis_angle(Vec3 axis, double angle);
-/// Normalised linear interpolation on the shorter arc: the cross-fade of two poses.
+/// Normalised linear interpolation on the shorter arc (slerp, for nearly equal turns).
 Quat nlerp(Quat a, Quat b, double w);
 /// Spherical linear interpolation on the shorter arc (glTF's LINEAR rotations).
 Quat slerp(Quat a, Quat b, double w);
