@@ -102,8 +102,7 @@ void bind_animate(py::module_& m) {
         CrowdGltfSummary summary;
         {
           py::gil_scoped_release release;
-          const Rig rig = Rig::load(rig_path, profile_path.empty() ? profile_beside(rig_path)
-                                                                   : load_rig_profile(profile_path));
+          const Rig rig = Rig::load(rig_path, rig_profile_for(rig_path, profile_path));
           CrowdGltfOptions options;
           options.fps = fps;
           summary = write_crowd_gltf(plan, rig, out_path, options);

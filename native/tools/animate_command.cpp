@@ -12,8 +12,7 @@ namespace footfall::tools {
 void animate_and_write(const Plan& plan, const AnimateArguments& arguments, const std::string& output,
                        std::ostream& out) {
   const auto begin = std::chrono::steady_clock::now();
-  const Rig rig = Rig::load(arguments.rig, arguments.profile.empty() ? profile_beside(arguments.rig)
-                                                                      : load_rig_profile(arguments.profile));
+  const Rig rig = Rig::load(arguments.rig, rig_profile_for(arguments.rig, arguments.profile));
   const std::filesystem::path folder = std::filesystem::path(output).parent_path();
   if (!folder.empty()) std::filesystem::create_directories(folder);
   CrowdGltfOptions options;

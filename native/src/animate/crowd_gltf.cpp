@@ -229,6 +229,22 @@ bool differs(const std::vector<Trs>& frames, const Trs& rest, int path) {
   return false;
 }
 
+// A sampler of `input` times and `output` values, and the channel that
+// animates `path` of `node` with it.
+void add_sampled(tinygltf::Animation& animation, int input, int output, const char* interpolation, int node,
+                 const char* path) {
+  tinygltf::AnimationSampler sampler;
+  sampler.input = input;
+  sampler.output = output;
+  sampler.interpolation = interpolation;
+  tinygltf::AnimationChannel channel;
+  channel.sampler = static_cast<int>(animation.samplers.size());
+  channel.target_node = node;
+  channel.target_path = path;
+  animation.samplers.push_back(sampler);
+  animation.channels.push_back(channel);
+}
+
 // One LINEAR channel of `node` from the motion's frames.
 void add_channel(CrowdModel& crowd, tinygltf::Animation& animation, int input, int node,
                  const std::vector<Trs>& frames, int path) {
@@ -248,16 +264,8 @@ void add_channel(CrowdModel& crowd, tinygltf::Animation& animation, int input, i
       for (double c : {v.x, v.y, v.z}) values.push_back(static_cast<float>(c));
     }
   }
-  tinygltf::AnimationSampler sampler;
-  sampler.input = input;
-  sampler.output = crowd.add_floats(values, components);
-  sampler.interpolation = "LINEAR";
-  tinygltf::AnimationChannel channel;
-  channel.sampler = static_cast<int>(animation.samplers.size());
-  channel.target_node = node;
-  channel.target_path = path == 0 ? "translation" : path == 1 ? "rotation" : "scale";
-  animation.samplers.push_back(sampler);
-  animation.channels.push_back(channel);
+  add_sampled(animation, input, crowd.add_floats(values, components), "LINEAR", node,
+              path == 0 ? "translation" : path == 1 ? "rotation" : "scale");
 }
 
 }  // namespace
@@ -293,18 +301,9 @@ CrowdGltfSummary write_crowd_gltf(const Plan& plan, const Rig& rig, const std::s
     }
     if (agent.leaves) {
       // Gone from the first key after it has left: scaled to nothing.
-      const int root = crowd.last_root();
       const float gone = static_cast<float>((std::floor(agent.end_time() * options.fps) + 1) / options.fps);
-      tinygltf::AnimationSampler sampler;
-      sampler.input = crowd.add_floats({0.0f, gone}, 1);
-      sampler.output = crowd.add_floats({1, 1, 1, 0, 0, 0}, 3);
-      sampler.interpolation = "STEP";
-      tinygltf::AnimationChannel channel;
-      channel.sampler = static_cast<int>(animation.samplers.size());
-      channel.target_node = root;
-      channel.target_path = "scale";
-      animation.samplers.push_back(sampler);
-      animation.channels.push_back(channel);
+      add_sampled(animation, crowd.add_floats({0.0f, gone}, 1), crowd.add_floats({1, 1, 1, 0, 0, 0}, 3), "STEP",
+                  crowd.last_root(), "scale");
     }
     crowd.model().animations.push_back(std::move(animation));
   }

@@ -78,12 +78,7 @@ tinygltf::Model parse_model(const std::string& bytes, const std::string& name) {
 }
 
 Mat4 local_matrix(const tinygltf::Node& node) {
-  if (node.matrix.size() == 16) {
-    Mat4 m;  // glTF stores columns
-    for (int c = 0; c < 4; ++c)
-      for (int r = 0; r < 4; ++r) m.m[r][c] = node.matrix[4 * c + r];
-    return m;
-  }
+  if (node.matrix.size() == 16) return animate::from_columns(node.matrix.data());
   animate::Trs trs;
   if (node.translation.size() == 3) trs.translation = {node.translation[0], node.translation[1], node.translation[2]};
   if (node.rotation.size() == 4)
@@ -169,21 +164,17 @@ int bone(const RigData& rig, const std::vector<int>& joints, const std::string& 
   return found;
 }
 
-// Rest positions (Z up) of the skinned vertices whose strongest joint is
-// one of `joints`.
-std::vector<Vec3> skinned_points(const RigData& rig, const std::vector<int>& joints) {
+// Each skinned vertex of the rig's body at rest, Z up, with the node of the
+// joint that moves it most.
+std::vector<std::pair<int, Vec3>> skinned_vertices(const RigData& rig) {
   const tinygltf::Skin& skin = rig.model.skins[rig.skin];
   std::vector<Mat4> bind(skin.joints.size());  // joint world at rest times its inverse bind matrix
   const std::vector<double> inverse =
       skin.inverseBindMatrices >= 0 ? animate::accessor_values(rig.model, skin.inverseBindMatrices) : std::vector<double>{};
-  for (std::size_t j = 0; j < skin.joints.size(); ++j) {
-    Mat4 ibm;
-    if (inverse.size() >= 16 * (j + 1))
-      for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r) ibm.m[r][c] = inverse[16 * j + 4 * c + r];
-    bind[j] = rig.rest_world[skin.joints[j]] * ibm;
-  }
-  std::vector<Vec3> points;
+  for (std::size_t j = 0; j < skin.joints.size(); ++j)
+    bind[j] = rig.rest_world[skin.joints[j]] *
+              (inverse.size() >= 16 * (j + 1) ? animate::from_columns(&inverse[16 * j]) : Mat4{});
+  std::vector<std::pair<int, Vec3>> vertices;
   for (std::size_t node = 0; node < rig.model.nodes.size(); ++node) {
     const tinygltf::Node& n = rig.model.nodes[node];
     if (n.skin != rig.skin || n.mesh < 0) continue;
@@ -201,20 +192,18 @@ std::vector<Vec3> skinned_points(const RigData& rig, const std::vector<int>& joi
       for (std::size_t v = 0; v < count; ++v) {
         const std::size_t strongest = static_cast<std::size_t>(std::max_element(&w[4 * v], &w[4 * v + 4]) - &w[4 * v]);
         const auto index = static_cast<std::size_t>(j[4 * v + strongest]);
-        if (index >= skin.joints.size() ||
-            std::find(joints.begin(), joints.end(), skin.joints[index]) == joints.end())
-          continue;
+        if (index >= skin.joints.size()) continue;
         Vec3 world{0, 0, 0};
         for (int k = 0; k < 4; ++k) {
           const auto jk = static_cast<std::size_t>(j[4 * v + k]);
           if (w[4 * v + k] <= 0 || jk >= bind.size()) continue;
           world = world + w[4 * v + k] * animate::transform_point(bind[jk], {p[3 * v], p[3 * v + 1], p[3 * v + 2]});
         }
-        points.push_back(to_z_up(world));
+        vertices.emplace_back(skin.joints[index], to_z_up(world));
       }
     }
   }
-  return points;
+  return vertices;
 }
 
 void read_legs(RigData& rig, const RigProfile& profile) {
@@ -228,6 +217,7 @@ void read_legs(RigData& rig, const RigProfile& profile) {
     throw std::invalid_argument(rig.path + ": the feet point straight up or down at rest: the rig's facing is unclear");
   forward = animate::normalized(forward);
   rig.forward_yaw = std::atan2(forward.y, forward.x);
+  const std::vector<std::pair<int, Vec3>> vertices = skinned_vertices(rig);
   double hips = 0;
   for (int side = 0; side < 2; ++side) {
     animate::Leg& leg = rig.legs[side];
@@ -241,7 +231,8 @@ void read_legs(RigData& rig, const RigProfile& profile) {
     const auto found = profile.dimensions.find("foot_length");
     const double foot_length = found != profile.dimensions.end() ? found->second : length(ball - leg.ankle) / (1 - animate::kHeelShare);
     double heel = 0;
-    for (const Vec3& p : skinned_points(rig, {leg.foot, leg.toe})) heel = std::max(heel, -dot(p - leg.ankle, forward));
+    for (const auto& [joint, p] : vertices)
+      if (joint == leg.foot || joint == leg.toe) heel = std::max(heel, -dot(p - leg.ankle, forward));
     leg.shape = {leg.ankle.z, heel > 0 ? heel : animate::kHeelShare * foot_length, dot(ball - leg.ankle, forward), ball.z};
     hips += 0.5 * leg.hip.z;
     // Standing legs hang nearly straight down; a rig lying down (modelled Z

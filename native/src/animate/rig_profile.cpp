@@ -83,7 +83,8 @@ RigProfile load_rig_profile(const std::string& path) {
   return parse_rig_profile(detail::read_file(path), path);
 }
 
-RigProfile profile_beside(const std::string& rig_path) {
+RigProfile rig_profile_for(const std::string& rig_path, const std::string& profile_path) {
+  if (!profile_path.empty()) return load_rig_profile(profile_path);
   std::filesystem::path beside(rig_path);
   beside.replace_extension(".json");
   std::error_code error;

@@ -49,6 +49,13 @@ Quat slerp(Quat a, Quat b, double w) {
 
 Vec3 rotate(const Quat& q, Vec3 v) { return transform_direction(rotation(q), v); }
 
+Mat4 from_columns(const double* values) {
+  Mat4 r;
+  for (int c = 0; c < 4; ++c)
+    for (int row = 0; row < 4; ++row) r.m[row][c] = values[4 * c + row];
+  return r;
+}
+
 Mat4 operator*(const Mat4& a, const Mat4& b) {
   Mat4 r;
   for (int i = 0; i < 4; ++i)

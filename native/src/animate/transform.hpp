@@ -33,6 +33,8 @@ struct Mat4 {
   Vec3 column(int c) const { return {m[0][c], m[1][c], m[2][c]}; }
 };
 
+/// The matrix of 16 values stored column by column, as glTF stores them.
+Mat4 from_columns(const double* values);
 Mat4 operator*(const Mat4& a, const Mat4& b);
 Vec3 transform_point(const Mat4& a, Vec3 p);
 Vec3 transform_direction(const Mat4& a, Vec3 v);

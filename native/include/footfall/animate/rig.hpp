@@ -29,10 +29,10 @@ struct RigProfile {
 RigProfile parse_rig_profile(const std::string& text, const std::string& source = "<profile>");
 /// Reads a profile file (errors as parse_rig_profile).
 RigProfile load_rig_profile(const std::string& path);
-/// The profile beside a rig, as the add-on finds it ("robot.glb" ->
-/// "robot.json"), read; an empty profile (everything detected) if there is
-/// none.
-RigProfile profile_beside(const std::string& rig_path);
+/// The profile of a rig: the file `profile_path`, else (empty) the one
+/// beside the rig as the add-on finds it ("robot.glb" -> "robot.json"), else
+/// an empty profile (everything detected).
+RigProfile rig_profile_for(const std::string& rig_path, const std::string& profile_path = "");
 
 namespace animate {
 struct RigData;
