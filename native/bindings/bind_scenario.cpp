@@ -7,6 +7,7 @@
 #include "footfall/io/scenario_file.hpp"
 #include "footfall/io/steersuite.hpp"
 #include "footfall/plan/metrics.hpp"
+#include "footfall/plan/motion_check.hpp"
 #include "footfall/plan/plan.hpp"
 #include "footfall/scenes/scenes.hpp"
 
@@ -110,6 +111,15 @@ void bind_scenario(py::module_& m) {
   m.def("measure_plan", &measure_plan, py::arg("plan"), py::arg("rate") = 20.0,
         py::call_guard<py::gil_scoped_release>(),
         "Our figures and SteerBench's, sampled at `rate` Hz.");
+  py::class_<MotionCheck>(m, "MotionCheck", "How smoothly one agent's plan moves.")
+      .def_readonly("velocity_jump", &MotionCheck::velocity_jump)
+      .def_readonly("top_speed", &MotionCheck::top_speed)
+      .def_readonly("stance_slide", &MotionCheck::stance_slide)
+      .def_readonly("worst_jump_step", &MotionCheck::worst_jump_step)
+      .def_readonly("worst_slide_step", &MotionCheck::worst_slide_step);
+  m.def("check_motion", &check_motion, py::arg("agent"), py::arg("rate") = 500.0,
+        py::call_guard<py::gil_scoped_release>(),
+        "Velocity jumps at step boundaries, top COM speed and stance-foot slide of one agent's plan.");
   m.def("parse_plan", &parse_plan, py::arg("text"), py::arg("source") = "<string>");
   m.def("load_plan", &load_plan, py::arg("path"));
   m.def("write_plan_file", &write_plan_file, py::arg("plan"), py::arg("path"),

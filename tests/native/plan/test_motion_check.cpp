@@ -1,0 +1,55 @@
+// check_motion measures what an animator sees of a plan: velocity jumps at
+// step boundaries, and stance feet that move.
+#include <gtest/gtest.h>
+
+#include "footfall/model/footstep.hpp"
+#include "footfall/plan/motion_check.hpp"
+
+namespace footfall {
+namespace {
+
+// An agent standing at the origin facing +x that takes `actions` in turn.
+AgentPlan plan_of(const std::vector<FootstepAction>& actions) {
+  const CharacterParams character;
+  AgentPlan plan;
+  plan.name = "a";
+  plan.start = standing_state({0.0, 0.0}, 0.0, character);
+  FootstepState state = plan.start;
+  for (const FootstepAction& action : actions) {
+    const StepResult r = create_footstep(state, action, character);
+    EXPECT_TRUE(r.valid()) << to_string(r.validity);
+    plan.footsteps.push_back(r.step);
+    state = r.state;
+  }
+  return plan;
+}
+
+TEST(MotionCheck, AWalkFromStandingJumpsAndItsFirstFootSlides) {
+  // The model's walk from standing sets off at full speed; its foot, with no
+  // step before it to swing in, moves in a lead-in at the start of its stance.
+  const AgentPlan plan = plan_of({{StepKind::kWalk, Foot::kLeft, -0.04, 1.3, 0.5},
+                                  {StepKind::kWalk, Foot::kRight, 0.0, 1.3, 0.5},
+                                  {StepKind::kWalk, Foot::kLeft, -0.04, 1.3, 0.5}});
+  const MotionCheck check = check_motion(plan);
+  EXPECT_NEAR(check.velocity_jump, 1.3, 1e-12);
+  EXPECT_EQ(check.worst_jump_step, 0);
+  EXPECT_GT(check.stance_slide, 0.3);  // the first stride
+  EXPECT_EQ(check.worst_slide_step, 0);
+  EXPECT_NEAR(check.top_speed, 1.3, 1e-3);
+}
+
+TEST(MotionCheck, AWaitLetsTheFirstWalksFootSwingIn) {
+  // After a wait by the left foot, the right swings while it stands: no foot
+  // moves while it bears weight; the velocity still jumps as the walk sets off.
+  const AgentPlan plan = plan_of({{StepKind::kStop, Foot::kLeft, 0.0, 0.0, 0.5},
+                                  {StepKind::kWalk, Foot::kRight, 0.04, 1.3, 0.5},
+                                  {StepKind::kWalk, Foot::kLeft, 0.0, 1.3, 0.5}});
+  const MotionCheck check = check_motion(plan);
+  EXPECT_LT(check.stance_slide, 1e-9);
+  EXPECT_NEAR(check.velocity_jump, 1.3, 1e-12);
+  EXPECT_EQ(check.worst_jump_step, 1);
+  EXPECT_THROW(check_motion(plan, 0.0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace footfall
