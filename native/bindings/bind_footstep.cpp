@@ -11,7 +11,8 @@ void bind_footstep(py::module_& m) {
   py::enum_<StepKind>(m, "StepKind")
       .value("WALK", StepKind::kWalk)
       .value("STOP", StepKind::kStop)
-      .value("SIDE_STEP", StepKind::kSideStep);
+      .value("SIDE_STEP", StepKind::kSideStep)
+      .value("START", StepKind::kStart);
   py::enum_<Behavior>(m, "Behavior")
       .value("WALK", Behavior::kWalk)
       .value("ARMS_IN", Behavior::kArmsIn)
@@ -27,6 +28,8 @@ void bind_footstep(py::module_& m) {
       .value("VALID", StepValidity::kValid)
       .value("WRONG_FOOT", StepValidity::kWrongFoot)
       .value("NOT_STANDING", StepValidity::kNotStanding)
+      .value("NOT_AN_ACTION", StepValidity::kNotAnAction)
+      .value("NO_SWING", StepValidity::kNoSwing)
       .value("DURATION_OUT_OF_RANGE", StepValidity::kDurationOutOfRange)
       .value("SPEED_OUT_OF_RANGE", StepValidity::kSpeedOutOfRange)
       .value("LENGTH_OUT_OF_RANGE", StepValidity::kLengthOutOfRange)
@@ -57,6 +60,7 @@ void bind_footstep(py::module_& m) {
       .def_readwrite("foot_orientation", &FootstepState::foot_orientation)
       .def_readwrite("facing", &FootstepState::facing)
       .def_readwrite("time", &FootstepState::time)
+      .def_readwrite("before_first_step", &FootstepState::before_first_step)
       .def("standing", &FootstepState::standing);
   m.def("standing_state", &standing_state, py::arg("position"), py::arg("facing"),
         py::arg("character"));

@@ -271,7 +271,7 @@ def _step_arrays(ff, steps) -> foot_roll.Steps:
     end = numpy.array([s.end_time for s in steps])
     chord = numpy.array([math.dist(s.com_start, s.com_end) for s in steps])
     return foot_roll.Steps(start, end, numpy.array([0 if s.foot == ff.Foot.LEFT else 1 for s in steps]),
-                           numpy.array([s.kind in (ff.StepKind.WALK, ff.StepKind.STOP) for s in steps], dtype=bool),
+                           numpy.array([s.kind != ff.StepKind.SIDE_STEP for s in steps], dtype=bool),
                            chord / numpy.maximum(end - start, 1e-9))
 
 

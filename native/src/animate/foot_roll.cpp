@@ -21,7 +21,7 @@ std::vector<RollStep> roll_steps(const AgentPlan& plan) {
   std::vector<RollStep> steps;
   for (const Footstep& s : plan.footsteps)
     steps.push_back({s.start_time, s.end_time, static_cast<int>(s.foot),
-                     s.kind == StepKind::kWalk || s.kind == StepKind::kStop,
+                     s.kind != StepKind::kSideStep,
                      length(s.com_end - s.com_start) / std::max(s.end_time - s.start_time, 1e-9)});
   return steps;
 }

@@ -224,6 +224,8 @@ void cut_to_rest(const FootstepPlanner& planner, const FootstepState& start,
   for (const Footstep& step : a.steps) states.push_back(state_after(states.back(), step));
   std::size_t keep = a.steps.size();
   for (; keep > 0; --keep) {
+    // A start and the walk it begins are one step of the search: not parted.
+    if (a.steps[keep - 1].kind == StepKind::kStart) continue;
     a.rest = planner.validity().come_to_rest(states[keep], others, whole);
     const bool at_goal = a.reached && keep == a.steps.size();
     if (a.rest.complete && planner.validity().keeps_out(a.rest.state, options.keep_out) &&

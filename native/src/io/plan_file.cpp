@@ -102,7 +102,7 @@ Footstep read_footstep(const Json& json, const std::string& path) {
   step.foot = read_enum(field("foot"), child(path, "foot"), {Foot::kLeft, Foot::kRight});
   if (json.contains("kind"))
     step.kind = read_enum(json["kind"], child(path, "kind"),
-                          {StepKind::kWalk, StepKind::kStop, StepKind::kSideStep});
+                          {StepKind::kWalk, StepKind::kStop, StepKind::kSideStep, StepKind::kStart});
   step.start_time = number(field("start_time"), child(path, "start_time"));
   step.end_time = number(field("end_time"), child(path, "end_time"));
   if (!(step.end_time > step.start_time)) fail(child(path, "end_time"), "must be after start_time");

@@ -16,6 +16,7 @@ FootstepState state_after(const FootstepState& state, const Footstep& step) {
   next.foot_orientation[static_cast<int>(step.foot)] = step.orientation_interval;
   next.facing = step.phi;
   next.time = step.end_time;
+  next.before_first_step = false;
   return next;
 }
 
@@ -62,6 +63,15 @@ StepResult create_walk(const FootstepState& state, const FootstepAction& action,
   return detail::walk_step(state, foot, heading, shape, wrap_angle(action.phi), reach, character);
 }
 
+// The foot planted through `step` must stay within reach of the orientation
+// the step fixes for its own.
+void narrow_planted(FootstepState& after, const Footstep& step, const CharacterParams& character) {
+  OrientationInterval& stance = after.foot_orientation[static_cast<int>(other(step.foot))];
+  intersect(stance,
+            reachable_orientations(step.orientation_interval, step.foot, character.max_foot_turn),
+            other(step.foot), &stance);
+}
+
 // A step that plants `foot` beside the point where the COM, setting off at
 // `velocity`, comes to rest after decelerating uniformly for `T`, at the stance
 // offset across `facing` and turned to it as far as the other foot allows.
@@ -94,11 +104,7 @@ StepResult rest_step(const FootstepState& state, Foot foot, Vec2 velocity, doubl
       speed_change_cost(character.mass, 0.0, length(velocity), cos_double_angle(tan_theta));
 
   result.state = state_after(state, step);
-  // The planted foot must stay within reach of the fixed orientation.
-  OrientationInterval& stance = result.state.foot_orientation[static_cast<int>(other(foot))];
-  intersect(stance,
-            reachable_orientations(step.orientation_interval, foot, character.max_foot_turn),
-            other(foot), &stance);
+  narrow_planted(result.state, step, character);
   return result;
 }
 
@@ -115,22 +121,29 @@ StepResult create_stop(const FootstepState& state, const FootstepAction& action,
   const double facing = state.standing() ? wrap_angle(action.phi) : state.facing;
   if (std::fabs(wrap_angle(facing - state.facing)) > kMaxPivot + 1e-12)
     return invalid(StepValidity::kOrientationEmpty);
-  return rest_step(state, other(state.last_foot), state.com_velocity, facing, T, StepKind::kStop,
-                   character);
+  StepResult result = rest_step(state, other(state.last_foot), state.com_velocity, facing, T,
+                                StepKind::kStop, character);
+  const Foot foot = result.step.foot;
+  const bool moves = distance(result.step.foot_position, state.feet[static_cast<int>(foot)]) > 1e-9 ||
+                     result.step.foot_orientation != state.foot_orientation[static_cast<int>(foot)].inner;
+  if (state.before_first_step && moves) return invalid(StepValidity::kNoSwing);
+  return result;
 }
 
-// The side step: from standing, the COM sets off toward phi, across the facing
-// on the stepping foot's side (give or take kMaxSideStepSkew), at the action's
-// speed (the velocity jump of every step from standing) and comes to rest as
-// in a stop, the torso keeping its facing. A walk carries the shoulders
-// across its way, so without it a character could never pass a gap narrower
-// than its shoulders (the way on the navigation mesh may lead through one).
+// The side step: from standing, the COM moves toward phi, across the facing
+// on the stepping foot's side (give or take kMaxSideStepSkew), `speed T / 2`
+// as a stop from that speed would, but setting off from rest and coming to
+// rest (no velocity jump), the torso keeping its facing. A walk carries the
+// shoulders across its way, so without it a character could never pass a gap
+// narrower than its shoulders (the way on the navigation mesh may lead
+// through one).
 StepResult create_side_step(const FootstepState& state, const FootstepAction& action,
                             const CharacterParams& character) {
   if (!state.standing()) return invalid(StepValidity::kNotStanding);
   // The trailing foot stepped last, so it stands beside the COM (or the feet
   // would drift apart over side steps one way).
   if (action.foot == state.last_foot) return invalid(StepValidity::kWrongFoot);
+  if (state.before_first_step) return invalid(StepValidity::kNoSwing);
   const FootLimits& limits = limits_of(character, action.foot);
   const double T = action.duration;
   if (T < limits.min_step_duration || T > limits.max_step_duration)
@@ -147,9 +160,10 @@ StepResult create_side_step(const FootstepState& state, const FootstepAction& ac
   StepResult result =
       rest_step(state, action.foot, velocity, state.facing, T, StepKind::kSideStep, character);
   Footstep& step = result.step;
+  step.com_velocity_start = {0.0, 0.0};
   step.behavior = Behavior::kSideStep;
   step.speed = action.speed;
-  // Setting off from rest pays the whole kinetic energy, as a walk does.
+  // Setting off from rest pays the whole kinetic energy, as a start does.
   step.cost.speed_change += speed_change_cost(character.mass, action.speed, 0.0, 1.0);
   return result;
 }
@@ -232,7 +246,9 @@ StepResult walk_step(const FootstepState& state, Foot foot, const Heading& headi
   step.foot_orientation = interval.inner;  // phi, or as near as the other foot allows
   step.com_start = state.com;
   step.com_end = state.com + shape.chord * x_axis;
-  step.com_velocity_start = shape.speed * heading.direction;
+  // It sets off at the velocity it comes in with: from rest when standing,
+  // and a change of gait spreads over the step.
+  step.com_velocity_start = state.com_velocity;
   step.com_velocity_end = shape.vx0 * x_axis + (shape.alpha * T) * y_axis;
   step.phi = phi;
   step.speed = shape.speed;
@@ -258,6 +274,8 @@ const char* to_string(StepKind kind) {
       return "stop";
     case StepKind::kSideStep:
       return "side_step";
+    case StepKind::kStart:
+      return "start";
   }
   return "walk";
 }
@@ -281,7 +299,11 @@ const char* to_string(StepValidity validity) {
     case StepValidity::kWrongFoot:
       return "a walking or side-stepping character must alternate feet";
     case StepValidity::kNotStanding:
-      return "a side step sets off from standing";
+      return "a side step or a start sets off from standing";
+    case StepValidity::kNotAnAction:
+      return "a start is the beginning of a walk from standing, not an action of its own";
+    case StepValidity::kNoSwing:
+      return "the first step cannot move its foot: it has had no time to swing";
     case StepValidity::kDurationOutOfRange:
       return "step duration out of range";
     case StepValidity::kSpeedOutOfRange:
@@ -348,6 +370,7 @@ FootstepState standing_state(Vec2 position, double facing, const CharacterParams
   state.feet[static_cast<int>(Foot::kLeft)] = position + character.foot_offset * left;
   state.feet[static_cast<int>(Foot::kRight)] = position - character.foot_offset * left;
   state.foot_orientation[0] = state.foot_orientation[1] = {facing, facing};
+  state.before_first_step = true;
   return state;
 }
 
@@ -362,6 +385,8 @@ StepResult create_footstep(const FootstepState& state, const FootstepAction& act
       return create_stop(state, action, character);
     case StepKind::kSideStep:
       return create_side_step(state, action, character);
+    case StepKind::kStart:
+      return invalid(StepValidity::kNotAnAction);
     case StepKind::kWalk:
       break;
   }
@@ -392,6 +417,62 @@ ComSample com_at(const Footstep& step, double t) {
   sample.position = h00 * p0 + h10 * m0 + h01 * p1 + h11 * m1;
   sample.velocity = T > 0.0 ? (1.0 / T) * (d00 * p0 + d10 * m0 + d01 * p1 + d11 * m1) : Vec2{};
   return sample;
+}
+
+std::array<Footstep, 2> split_set_off(const Footstep& walk, const FootstepState& before,
+                                      double lead) {
+  // The walk's own COM curve, cut at the end of the start: a cubic Hermite
+  // is exact on any part of itself, so the two steps trace it as one.
+  const double at = walk.start_time + lead;
+  const ComSample cut = com_at(walk, at);
+  Footstep start = walk;
+  start.kind = StepKind::kStart;
+  start.foot = other(walk.foot);
+  start.end_time = at;
+  start.foot_position = before.feet[static_cast<int>(start.foot)];
+  start.orientation_interval = before.foot_orientation[static_cast<int>(start.foot)];
+  start.foot_orientation = start.orientation_interval.inner;
+  start.com_end = cut.position;
+  start.com_velocity_end = cut.velocity;
+  start.alpha = 0.0;
+  // Setting off pays the kinetic energy; the time is shared.
+  const double share = lead / walk.duration();
+  start.cost = {walk.cost.fixed_rate * share, walk.cost.speed_change, 0.0};
+  Footstep rest = walk;
+  rest.start_time = at;
+  rest.com_start = cut.position;
+  rest.com_velocity_start = cut.velocity;
+  rest.cost = {walk.cost.fixed_rate - start.cost.fixed_rate, 0.0, walk.cost.curvature};
+  return {start, rest};
+}
+
+double top_speed(const Footstep& step) {
+  // The Hermite's Bezier control velocities: v0, 3 chord / T - v0 - v1, v1.
+  const double T = step.duration();
+  double top = std::max(length(step.com_velocity_start), length(step.com_velocity_end));
+  if (T > 0.0) {
+    const Vec2 middle = (3.0 / T) * (step.com_end - step.com_start) - step.com_velocity_start -
+                        step.com_velocity_end;
+    top = std::max(top, length(middle));
+  }
+  return top;
+}
+
+double com_stray(const Footstep& step) {
+  // The curve lies in the hull of its Bezier control points p0, p0 + m0 / 3,
+  // p1 - m1 / 3, p1: how far the inner two stray from the chord, across it or
+  // beyond its ends.
+  const double T = step.duration();
+  const Vec2 chord = step.com_end - step.com_start;
+  const double span = length(chord);
+  const Vec2 along = span > 0.0 ? (1.0 / span) * chord : Vec2{1.0, 0.0};
+  double stray = 0.0;
+  for (const Vec2 offset : {(T / 3.0) * step.com_velocity_start,
+                            chord - (T / 3.0) * step.com_velocity_end}) {
+    const double x = dot(offset, along);
+    stray = std::max({stray, std::fabs(cross(along, offset)), -x, x - span});
+  }
+  return stray;
 }
 
 std::array<Circle, 3> torso_circles(Vec2 com, double facing, const CharacterParams& character,

@@ -10,7 +10,6 @@ namespace {
 
 constexpr double kMaxLift = 0.12;        // [m] swing height of a full stride
 constexpr double kLiftPerStride = 0.15;  // swing height per metre of stride
-constexpr double kLeadIn = 0.25;         // [s] longest swing of a foot into a first step
 
 // Index of the step under way at time t: the last one that started at or
 // before t (clamped to the first and last). Plans are never empty here.
@@ -33,11 +32,6 @@ ComSample com_at(const AgentPlan& plan, double t) {
 
 namespace {
 
-// A step's COM speed is greatest at one of its ends. [m/s]
-double step_top_speed(const Footstep& step) {
-  return std::max(length(step.com_velocity_start), length(step.com_velocity_end));
-}
-
 // How far the torso circles reach from the COM. [m]
 double torso_reach(const CharacterParams& character) {
   double reach = 0.0;
@@ -46,17 +40,12 @@ double torso_reach(const CharacterParams& character) {
   return reach;
 }
 
-// How far the COM strays from a step's chord. [m]
-double step_sway(const Footstep& step) {
-  return std::fabs(step.alpha) * step.duration() * step.duration() / 4.0;
-}
-
 // How far a planted foot's circle can reach from the COM during `step`: the
-// COM stays within the sway of the chord, and a point's distance to a chord
+// COM stays within its stray of the chord, and a point's distance to a chord
 // is greatest at one of its ends. [m]
 double foot_reach(const Footstep& step, Vec2 foot, const CharacterParams& character) {
   const double far = std::max(distance(step.com_start, foot), distance(step.com_end, foot));
-  return far + step_sway(step) + character.foot_radius;
+  return far + com_stray(step) + character.foot_radius;
 }
 
 // Standing at the start: the feet where they stand. [m]
@@ -75,7 +64,7 @@ double top_com_speed(const AgentPlan& plan, double from) {
   // From the step under way at `from`: a long plan's past costs nothing.
   for (auto step = plan.footsteps.begin() + step_index(plan, from); step != plan.footsteps.end();
        ++step)
-    speed = std::max(speed, step_top_speed(*step));
+    speed = std::max(speed, top_speed(*step));
   return speed;
 }
 
@@ -118,7 +107,7 @@ PlanBounds::PlanBounds(const AgentPlan& plan, const CharacterParams& shared) {
     const Footstep& step = steps[i];
     starts_[i] = step.start_time;
     From& own = suffix_[i];
-    own.top_speed = step_top_speed(step);
+    own.top_speed = top_speed(step);
     own.reach = torso;
     for (const Vec2& foot : {step.foot_position, last[static_cast<int>(other(step.foot))]})
       own.reach = std::max(own.reach, foot_reach(step, foot, character));
@@ -128,7 +117,7 @@ PlanBounds::PlanBounds(const AgentPlan& plan, const CharacterParams& shared) {
     // com_at rounds: a step that stays put may place its COM an ulp aside.
     const double size = std::max({std::fabs(own.com_box.min.x), std::fabs(own.com_box.min.y),
                                   std::fabs(own.com_box.max.x), std::fabs(own.com_box.max.y), 1.0});
-    const double grow = step_sway(step) + 8.0 * std::numeric_limits<double>::epsilon() * size;
+    const double grow = com_stray(step) + 8.0 * std::numeric_limits<double>::epsilon() * size;
     own.com_box = {own.com_box.min - Vec2{grow, grow}, own.com_box.max + Vec2{grow, grow}};
   }
   for (std::size_t i = steps.size(); i-- > 1;) {
@@ -210,15 +199,16 @@ std::array<FootPose, 2> feet_during(const AgentPlan& plan, int k, double t) {
     return feet;
   }
   // A foot lands at its step's start, having swung during the step before,
-  // which the other foot took. The first step, or one taken from standing by
-  // the foot that stopped last, has no such step: its foot swings in a lead-in
-  // at the start of its own step, the other foot still planted.
+  // which the other foot took. The planner puts a start before a walk whose
+  // foot had no such step; a step that still has none (a pivot or a side step
+  // as the first step, or a plan file of an older planner) swings its foot in
+  // a lead-in at the start of its own step, the other foot still planted.
   double stance_start = step.start_time;
   const bool swung_in = k > 0 && steps[k - 1].foot != step.foot;
   const bool moves =
       !(before.position == step.foot_position) || before.orientation != step.foot_orientation;
   if (!swung_in && moves) {
-    const double lead = std::min(kLeadIn, 0.5 * step.duration());
+    const double lead = std::min(kSetOffSwing, 0.5 * step.duration());
     if (t < step.start_time + lead) {
       feet[stepping] = swing(before, step, (t - step.start_time) / lead);
       return feet;

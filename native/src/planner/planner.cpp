@@ -64,7 +64,10 @@ void cut_before_rests(const ValidityChecker::Impl& checks, const FootstepState& 
   FootstepState state = start;
   for (std::size_t k = 0; k < result.footsteps.size(); ++k) {
     const Footstep& step = result.footsteps[k];
-    if (checks.touches_agents(step, others, state.standing())) {
+    if (checks.touches_agents(step, others, state.standing()) ||
+        (step.kind == StepKind::kStop &&
+         checks.held_foot_touches(step, state.feet[static_cast<int>(other(step.foot))], others,
+                                  state.standing()))) {
       result.footsteps.resize(k);
       result.end_state = state;
       result.status = Status::kPartial;
@@ -72,6 +75,49 @@ void cut_before_rests(const ValidityChecker::Impl& checks, const FootstepState& 
     }
     state = state_after(state, step);
   }
+}
+
+// True if `state` stands with its feet side by side across its facing.
+bool feet_together(const FootstepState& state, const CharacterParams& character) {
+  const Vec2 left = character.foot_offset * perp(unit(state.facing));
+  return distance(state.feet[static_cast<int>(Foot::kLeft)], state.com + left) < 1e-9 &&
+         distance(state.feet[static_cast<int>(Foot::kRight)], state.com - left) < 1e-9;
+}
+
+// A step is tried against the others' plans; a stop with both feet (see
+// held_foot_touches).
+template <class Search>
+bool passes_agents(const ValidityChecker::Impl& checks, Search& search, int index,
+                   const WholeBody* whole) {
+  const auto& node = search.nodes[index];
+  const FootstepState& before = search.nodes[node.parent].state;
+  if (checks.collides(node.step, search.others, before.standing(),
+                      whole != nullptr && whole->shoulders_in_3d()))
+    return false;
+  return node.step.kind != StepKind::kStop ||
+         !checks.held_foot_touches(node.step, before.feet[static_cast<int>(other(node.step.foot))],
+                                   search.others, before.standing());
+}
+
+// Each walk from standing whose foot had no step of the other to swing in
+// becomes a start and the rest of the walk (split_set_off): the same motion,
+// told so that no foot moves while it bears weight.
+void split_set_offs(std::vector<Footstep>& steps, const FootstepState& start) {
+  std::vector<Footstep> told;
+  told.reserve(steps.size() + 1);
+  FootstepState state = start;
+  for (const Footstep& step : steps) {
+    const bool swung_in = !state.before_first_step && state.last_foot != step.foot;
+    if (step.kind == StepKind::kWalk && state.standing() && !swung_in) {
+      for (const Footstep& part :
+           split_set_off(step, state, std::min(kSetOffSwing, 0.5 * step.duration())))
+        told.push_back(part);
+    } else {
+      told.push_back(step);
+    }
+    state = state_after(state, step);
+  }
+  steps = std::move(told);
 }
 
 }  // namespace
@@ -185,6 +231,13 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   const double goal_angle = angle_of(goal - state.com);
   for (const Foot foot : {Foot::kLeft, Foot::kRight}) {
     if (!state.standing() && foot == state.last_foot) continue;
+    // Where a search starts standing after its plan's steps, the foot that
+    // stepped last sets off only if the other had nothing to swing into: a
+    // plan made before may have it swing through that step, and others may
+    // have planned against that (a start keeps it planted there).
+    if (index == 0 && state.standing() && foot == state.last_foot && !state.before_first_step &&
+        !feet_together(state, character))
+      continue;
     const double inward = -outward_sign(foot);
     checks.tabled_walks(state, foot,
                  [&](const StepResult& next, double phi, const detail::StepShape& shape) {
@@ -302,10 +355,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     // most generated nodes are never expanded.
     // Following narrower sections, every step is tested whole, in 3-D, and
     // its shoulders against obstacles only so.
-    if (current != 0 && checks.collides(search.nodes[current].step, search.others,
-                                        search.nodes[search.nodes[current].parent].state.standing(),
-                                        whole != nullptr && whole->shoulders_in_3d()))
-      continue;
+    if (current != 0 && passes_agents(checks, search, current, whole) == false) continue;
     if (current != 0 && whole != nullptr && !whole->passes(search.nodes[current].step)) continue;
     ++result.nodes_expanded;
     // At the goal, and able to come to rest there among the others (whose
@@ -374,6 +424,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   if (options.rest_grace != std::numeric_limits<double>::infinity())
     cut_before_rests(checks, start, search.others, result);
 
+  split_set_offs(result.footsteps, start);
   choose_foot_orientations(result.footsteps, start.foot_orientation, character);
   result.refused_by = search.others.refusers();
   return result;
@@ -383,27 +434,37 @@ void choose_foot_orientations(std::vector<Footstep>& steps,
                               const std::array<OrientationInterval, 2>& initial,
                               const CharacterParams& character) {
   // Each step is constrained by the last earlier step of the other foot, its
-  // "previous" step (-1: the initial stance of that foot).
+  // "previous" step (-1: the initial stance of that foot). A start keeps its
+  // foot as the last earlier step of that foot placed it (`same`).
   const int n = static_cast<int>(steps.size());
-  std::vector<int> previous(n, -1);
+  std::vector<int> previous(n, -1), same(n, -1);
   std::array<int, 2> last{-1, -1};
   for (int k = 0; k < n; ++k) {
     previous[k] = last[static_cast<int>(other(steps[k].foot))];
+    same[k] = last[static_cast<int>(steps[k].foot)];
     last[static_cast<int>(steps[k].foot)] = k;
   }
   // Backward: narrow every interval by what its successors can still reach.
   std::vector<OrientationInterval> interval(n);
   for (int k = 0; k < n; ++k) interval[k] = steps[k].orientation_interval;
   for (int k = n - 1; k >= 0; --k) {
+    if (steps[k].kind == StepKind::kStart && same[k] >= 0)
+      intersect(interval[same[k]], interval[k], steps[k].foot, &interval[same[k]]);
     const int p = previous[k];
     if (p < 0) continue;
     const OrientationInterval reach =
         reachable_orientations(interval[k], steps[k].foot, character.max_foot_turn);
     intersect(interval[p], reach, steps[p].foot, &interval[p]);
   }
-  // Forward: turn each foot as close to its phi as the chosen previous foot allows.
+  // Forward: turn each foot as close to its phi as the chosen previous foot
+  // allows. A start keeps its foot as it stands.
+  std::array<double, 2> standing{initial[0].inner, initial[1].inner};
   for (int k = 0; k < n; ++k) {
     const Foot foot = steps[k].foot;
+    if (steps[k].kind == StepKind::kStart) {
+      steps[k].foot_orientation = standing[static_cast<int>(foot)];
+      continue;
+    }
     const int p = previous[k];
     const OrientationInterval previous_choice =
         p < 0 ? initial[static_cast<int>(other(foot))]
@@ -413,6 +474,7 @@ void choose_foot_orientations(std::vector<Footstep>& steps,
               reachable_orientations(previous_choice, other(foot), character.max_foot_turn), foot,
               &allowed);
     steps[k].foot_orientation = clamp_orientation(steps[k].phi, allowed, foot);
+    standing[static_cast<int>(foot)] = steps[k].foot_orientation;
   }
 }
 

@@ -14,13 +14,12 @@ namespace footfall {
 namespace {
 
 // A disc that holds the torso throughout the step, grown by `margin`: the
-// whole step's COM lies within half the chord plus the sway of the chord's
+// whole step's COM lies within half the chord plus its stray of the chord's
 // midpoint.
 Circle sweep_bound(const Footstep& step, const CharacterParams& character, double margin) {
   const double chord = distance(step.com_start, step.com_end);
-  const double sway = step.alpha * step.duration() * step.duration() / 4.0;
   return {0.5 * (step.com_start + step.com_end),
-          0.5 * chord + sway + 0.5 * character.torso_width + margin};
+          0.5 * chord + com_stray(step) + 0.5 * character.torso_width + margin};
 }
 
 // `others` sampled from time `from` on, for a check outside a search (which
@@ -203,9 +202,8 @@ bool ValidityChecker::Impl::collides(const Footstep& step, detail::SampledAgents
 bool ValidityChecker::Impl::hits_obstacles(const Footstep& step, bool shoulders_in_3d) const {
   if (obstacles_.overlaps({step.foot_position, character_.foot_radius})) return true;
   // Samples no further apart along the COM path than `spacing`: the path is
-  // never longer than speed * time between samples, where the COM speed of a
-  // walking step is at most its speed at either end.
-  const double top_speed = std::max(length(step.com_velocity_start), length(step.com_velocity_end));
+  // never longer than the top speed times the time between samples.
+  const double top_speed = footfall::top_speed(step);
   const double spacing = params_.collision_sample_spacing;
   // The circles are grown by half the spacing, the COM's travel to the
   // nearest sample. A step that does not move the COM (a wait, or a pivot,
@@ -248,8 +246,7 @@ bool ValidityChecker::Impl::touches_agents(const Footstep& step, detail::Sampled
   const Circle sweep = sweep_bound(step, character_, 0.0);
   const Circle foot{step.foot_position, character_.foot_radius};
   const double my_reach = std::max(sweep.radius, distance(foot.center, sweep.center) + foot.radius);
-  const double my_top_speed =
-      std::max(length(step.com_velocity_start), length(step.com_velocity_end));
+  const double my_top_speed = top_speed(step);
   const auto may_come_near = [&](std::size_t j) {
     const PlanBounds::From& bounds = others.bounds(j);
     const double pad = 0.5 * (my_top_speed + bounds.top_speed) * kContactDt;
@@ -341,6 +338,15 @@ bool ValidityChecker::Impl::touches_agents(const Footstep& step, detail::Sampled
     }
   }
   return false;
+}
+
+bool ValidityChecker::Impl::held_foot_touches(const Footstep& stop, Vec2 held,
+                                              detail::SampledAgents& others,
+                                              bool from_standing) const {
+  Footstep other_foot = stop;
+  other_foot.foot = other(stop.foot);
+  other_foot.foot_position = held;
+  return touches_agents(other_foot, others, from_standing);
 }
 
 Rest ValidityChecker::Impl::come_to_rest(const FootstepState& state,
@@ -447,6 +453,8 @@ StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double d
   if (!stop.valid()) return stop;
   if (whole != nullptr) whole->label(stop.step);  // a stop goes anywhere
   if (collides(stop.step, others, state.standing(), whole != nullptr && whole->shoulders_in_3d()) ||
+      held_foot_touches(stop.step, state.feet[static_cast<int>(other(stop.step.foot))], others,
+                        state.standing()) ||
       (whole != nullptr && !whole->passes(stop.step)))
     stop.validity = StepValidity::kCollides;
   return stop;

@@ -15,6 +15,14 @@ FootstepState walking_state(double heading, double speed, Foot last) {
   state.com_velocity = speed * unit(heading);
   state.last_foot = last;
   state.time = 3.0;
+  state.before_first_step = false;
+  return state;
+}
+
+// A standing character that has taken steps (its feet may move at once).
+FootstepState stepped_standing(Vec2 position, double facing) {
+  FootstepState state = standing_state(position, facing, CharacterParams{});
+  state.before_first_step = false;
   return state;
 }
 
@@ -60,9 +68,10 @@ TEST(Footstep, WalkStepFollowsEquationOneInTheMirroredLocalFrame) {
   const Vec2 end_velocity = vx0 * x + (alpha * T) * y;
   EXPECT_NEAR(step.com_velocity_end.x, end_velocity.x, 1e-12);
   EXPECT_NEAR(step.com_velocity_end.y, end_velocity.y, 1e-12);
-  // G1: the step starts along the previous velocity, at the desired speed.
+  // The step starts at the previous velocity (1.2 m/s, not its 1.4): the
+  // change of speed spreads over the step, and the velocity is continuous.
   EXPECT_NEAR(angle_of(step.com_velocity_start), heading, 1e-12);
-  EXPECT_NEAR(length(step.com_velocity_start), v, 1e-12);
+  EXPECT_NEAR(length(step.com_velocity_start), 1.2, 1e-12);
   EXPECT_DOUBLE_EQ(step.start_time, 3.0);
   EXPECT_DOUBLE_EQ(step.end_time, 3.0 + T);
   // The new state.
@@ -217,9 +226,10 @@ TEST(Footstep, StartsFromStandingWithEitherFoot) {
     const StepResult r =
         create_footstep(standing, {StepKind::kWalk, foot, phi, 1.0, 0.5}, character);
     ASSERT_TRUE(r.valid()) << to_string(r.validity);
-    // From rest, the whole kinetic energy is paid: dE2 = m/2 v^2.
+    // From rest, the whole kinetic energy is paid: dE2 = m/2 v^2; the COM
+    // sets off from rest.
     EXPECT_NEAR(r.step.cost.speed_change, 0.5 * character.mass * 1.0, 1e-9);
-    EXPECT_NEAR(angle_of(r.step.com_velocity_start), kPi / 2, 1e-12);
+    EXPECT_EQ(length(r.step.com_velocity_start), 0.0);
   }
 }
 
@@ -261,7 +271,7 @@ TEST(Footstep, StopBringsTheComToRestBesideTheFeet) {
 // facing, up to a quarter turn.
 TEST(Footstep, APivotTurnsAStandingCharacterOnTheSpot) {
   const CharacterParams character;
-  const FootstepState standing = standing_state({1.0, 2.0}, 0.0, character);
+  const FootstepState standing = stepped_standing({1.0, 2.0}, 0.0);
   const Foot foot = other(standing.last_foot);
   for (const double turn : {kPi / 4, -kPi / 4, kPi / 2, -kPi / 2}) {
     SCOPED_TRACE(turn);
@@ -283,6 +293,12 @@ TEST(Footstep, APivotTurnsAStandingCharacterOnTheSpot) {
   // More than a quarter turn at once is refused.
   EXPECT_EQ(create_footstep(standing, {StepKind::kStop, foot, 2.0, 0.0, 0.5}, character).validity,
             StepValidity::kOrientationEmpty);
+  // As the first step, a pivot would turn a foot that has had no time to
+  // swing; a wait, which moves nothing, may come first.
+  const FootstepState first = standing_state({1.0, 2.0}, 0.0, character);
+  EXPECT_EQ(create_footstep(first, {StepKind::kStop, foot, 0.5, 0.0, 0.5}, character).validity,
+            StepValidity::kNoSwing);
+  EXPECT_TRUE(create_footstep(first, {StepKind::kStop, foot, 0.0, 0.0, 0.5}, character).valid());
 }
 
 // A walk carries the shoulders across its way; a side step moves the COM
@@ -290,17 +306,26 @@ TEST(Footstep, APivotTurnsAStandingCharacterOnTheSpot) {
 // shoulders can be passed side-on.
 TEST(Footstep, ASideStepMovesAStandingCharacterAcrossItsFacing) {
   const CharacterParams character;
-  const FootstepState standing = standing_state({1.0, 2.0}, 0.5, character);
+  const FootstepState standing = stepped_standing({1.0, 2.0}, 0.5);
   const Foot foot = other(standing.last_foot);
   const double across = 0.5 + outward_sign(foot) * kPi / 2;
+  // Not as the first step: its foot would have had no time to swing.
+  EXPECT_EQ(create_footstep(standing_state({1.0, 2.0}, 0.5, character),
+                            {StepKind::kSideStep, foot, across, 1.0, 0.5}, character)
+                .validity,
+            StepValidity::kNoSwing);
   for (const double skew : {0.0, 0.3, -0.3}) {
     SCOPED_TRACE(skew);
     const StepResult side =
         create_footstep(standing, {StepKind::kSideStep, foot, across + skew, 1.0, 0.5}, character);
     ASSERT_TRUE(side.valid()) << to_string(side.validity);
     EXPECT_EQ(side.step.behavior, Behavior::kSideStep);
-    // Decelerating from 1 m/s to rest over 0.5 s: 0.25 m toward phi.
+    // From rest to rest, as far as a stop from 1 m/s over 0.5 s goes: 0.25 m
+    // toward phi, fastest half way (0.75 m/s).
     EXPECT_NEAR(distance(side.step.com_end, standing.com + 0.25 * unit(across + skew)), 0.0, 1e-12);
+    EXPECT_EQ(length(side.step.com_velocity_start), 0.0);
+    EXPECT_EQ(length(side.step.com_velocity_end), 0.0);
+    EXPECT_NEAR(length(com_at(side.step, side.step.start_time + 0.25).velocity), 0.75, 1e-12);
     EXPECT_TRUE(side.state.standing());
     EXPECT_DOUBLE_EQ(side.state.facing, 0.5);
     EXPECT_DOUBLE_EQ(side.step.phi, 0.5);  // the torso keeps its facing
@@ -337,6 +362,63 @@ TEST(Footstep, ASideStepMovesAStandingCharacterAcrossItsFacing) {
   EXPECT_EQ(validity(walking_state(0.0, 1.2, standing.last_foot),
                      {StepKind::kSideStep, foot, across, 1.0, 0.5}),
             StepValidity::kNotStanding);
+}
+
+// A walk from standing sets off from rest along the walk's own curve; told
+// as a start by the other foot and the rest of the walk, it is the same
+// motion, and no foot moves while it bears weight.
+TEST(Footstep, AWalkFromStandingSplitsIntoAStartAndTheRestOfTheWalk) {
+  const CharacterParams character;
+  const FootstepState standing = standing_state({1.0, 2.0}, 0.5, character);
+  const StepResult walk =
+      create_footstep(standing, {StepKind::kWalk, Foot::kRight, 0.5 + 0.15, 1.3, 0.5}, character);
+  ASSERT_TRUE(walk.valid()) << to_string(walk.validity);
+  EXPECT_EQ(length(walk.step.com_velocity_start), 0.0);
+  const auto [start, rest] = split_set_off(walk.step, standing, 0.25);
+  EXPECT_EQ(start.kind, StepKind::kStart);
+  EXPECT_EQ(start.foot, Foot::kLeft);
+  EXPECT_EQ(start.foot_position, standing.feet[0]);  // planted where it stands
+  EXPECT_DOUBLE_EQ(start.end_time, rest.start_time);
+  EXPECT_DOUBLE_EQ(rest.start_time, walk.step.start_time + 0.25);
+  EXPECT_EQ(rest.foot_position, walk.step.foot_position);
+  EXPECT_DOUBLE_EQ(start.phi, walk.step.phi);
+  for (int i = 0; i <= 50; ++i) {
+    const double t = walk.step.start_time + 0.5 * i / 50.0;
+    const ComSample whole = com_at(walk.step, t);
+    const ComSample part = com_at(t < rest.start_time ? start : rest, t);
+    EXPECT_NEAR(distance(whole.position, part.position), 0.0, 1e-12) << t;
+    EXPECT_NEAR(distance(whole.velocity, part.velocity), 0.0, 1e-12) << t;
+  }
+  EXPECT_NEAR(start.cost.total() + rest.cost.total(), walk.step.cost.total(), 1e-9);
+  // Planned on its own, a start is refused.
+  EXPECT_EQ(create_footstep(standing, {StepKind::kStart, Foot::kLeft, 0.5, 1.3, 0.25}, character)
+                .validity,
+            StepValidity::kNotAnAction);
+}
+
+// A change of gait spreads over the step: the COM leaves at the speed it came
+// in with; top_speed and com_stray still bound what com_at gives.
+TEST(Footstep, BoundsHoldAcrossAChangeOfGait) {
+  const CharacterParams character;
+  for (const double incoming : {0.6, 1.3, 1.6}) {
+    for (const double speed : {0.6, 1.3, 1.6}) {
+      const FootstepState state = walking_state(0.2, incoming, Foot::kRight);
+      const StepResult r = create_footstep(
+          state, {StepKind::kWalk, Foot::kLeft, 0.2 - 0.35, speed, 0.5}, character);
+      ASSERT_TRUE(r.valid()) << to_string(r.validity);
+      const Footstep& step = r.step;
+      const Vec2 chord = step.com_end - step.com_start;
+      double fastest = 0.0, farthest = 0.0;
+      for (int i = 0; i <= 1000; ++i) {
+        const ComSample c = com_at(step, step.start_time + 0.5 * i / 1000.0);
+        fastest = std::max(fastest, length(c.velocity));
+        farthest = std::max(farthest, std::fabs(cross(unit(angle_of(chord)), c.position - step.com_start)));
+      }
+      EXPECT_LE(fastest, top_speed(step) + 1e-12) << incoming << " to " << speed;
+      EXPECT_LE(farthest, com_stray(step) + 1e-12) << incoming << " to " << speed;
+      EXPECT_NEAR(length(com_at(step, step.start_time).velocity), incoming, 1e-12);
+    }
+  }
 }
 
 TEST(Footstep, TorsoCirclesSpanTheTorsoWidth) {

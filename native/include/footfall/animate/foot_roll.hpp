@@ -41,7 +41,7 @@ FootRoll roll_at_pitch(const FootShape& shape, double pitch);
 struct RollStep {
   double start = 0, end = 0;  ///< [s]
   int foot = 0;               ///< 0 left, 1 right
-  bool forward = true;        ///< the body goes over the feet (a walk or a stop; not a side step)
+  bool forward = true;        ///< the body goes over the feet (a walk, start or stop; not a side step)
   double speed = 0;           ///< the COM's speed over the step [m/s]
 };
 

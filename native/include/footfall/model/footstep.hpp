@@ -37,15 +37,23 @@ enum class StepKind {
   /// From standing, the COM moves across the facing to the stepping foot's
   /// side and comes to rest there; the torso keeps its facing.
   kSideStep,
+  /// The beginning of a walk from standing whose foot had no step of the
+  /// other to swing in (split_set_off): this foot stays planted where it
+  /// stands while the walk's foot swings to its place and the COM sets off.
+  kStart,
 };
 
+/// Longest swing of a foot into the first step of a walk from standing: the
+/// duration of a start (split_set_off), or of the lead-in when a plan (from
+/// an older planner) has none. [s]
+constexpr double kSetOffSwing = 0.25;
 /// Largest turn of one pivot: a stop from standing that turns the character
 /// on the spot (FootstepAction::phi). [rad]
 constexpr double kMaxPivot = 1.5707963267948966;
 /// Largest angle between a side step's way (FootstepAction::phi) and straight
 /// across the facing: a side step may lean a little forward or back. [rad]
 constexpr double kMaxSideStepSkew = 0.39269908169872414;
-/// "walk", "stop" or "side_step".
+/// "walk", "stop", "side_step" or "start".
 const char* to_string(StepKind kind);
 
 /// The behaviour of the path section a step belongs to (Juarez-Perez and
@@ -91,6 +99,9 @@ struct FootstepState {
   std::array<OrientationInterval, 2> foot_orientation;  ///< Valid orientations per foot.
   double facing = 0;  ///< Torso facing: phi of the last walking step. [rad]
   double time = 0;    ///< Time at the end of the step. [s]
+  /// True before the first step: no foot has swung yet, so the first step may
+  /// not move the foot it plants (a pivot or a side step waits one stop).
+  bool before_first_step = false;
 
   /// True when the character stands still (after a stop, or at the start).
   bool standing() const { return com_velocity.x == 0.0 && com_velocity.y == 0.0; }
@@ -101,7 +112,7 @@ FootstepState standing_state(Vec2 position, double facing, const CharacterParams
 
 /// A footstep action (section 3.1): parabola orientation, desired speed, duration.
 struct FootstepAction {
-  StepKind kind = StepKind::kWalk;  ///< Walk or the special stop.
+  StepKind kind = StepKind::kWalk;  ///< Walk, stop or side step.
   /// Stepping foot: the other one than the last, unless standing (a side
   /// step, too, takes the other one; it moves to this foot's side).
   Foot foot = Foot::kLeft;
@@ -111,7 +122,9 @@ struct FootstepAction {
   /// goes, at most kMaxSideStepSkew from straight across the facing to the
   /// stepping foot's side; the facing stays. [rad]
   double phi = 0;
-  double speed = 1.3;     ///< Desired COM speed at the start of the step (a stop: none). [m/s]
+  /// Desired COM speed: of a walk, the nominal speed of a side step (a stop:
+  /// none). [m/s]
+  double speed = 1.3;
   double duration = 0.5;  ///< Step duration T. [s]
 };
 
@@ -126,8 +139,8 @@ struct StepCost {
 
 /// One planned footstep with everything needed to evaluate it analytically.
 struct Footstep {
-  Foot foot = Foot::kLeft;                   ///< The foot placed at the start of the step.
-  StepKind kind = StepKind::kWalk;           ///< Walk or stop.
+  Foot foot = Foot::kLeft;                   ///< The foot planted through the step.
+  StepKind kind = StepKind::kWalk;           ///< Walk, stop, side step or start.
   Behavior behavior = Behavior::kWalk;       ///< Behaviour of the path section.
   double start_time = 0;                     ///< [s]
   double end_time = 0;                       ///< [s]
@@ -152,6 +165,8 @@ enum class StepValidity {
   kValid,
   kWrongFoot,           ///< A walking or side-stepping character must alternate feet.
   kNotStanding,         ///< A side step sets off from standing only.
+  kNotAnAction,         ///< A start is planned as part of a walk (split_set_off).
+  kNoSwing,             ///< The first step would move its foot, which has had no time to swing.
   kDurationOutOfRange,  ///< T outside the foot's duration limits.
   kSpeedOutOfRange,     ///< Desired speed outside the foot's speed limits.
   kLengthOutOfRange,    ///< COM travel outside the foot's step-length limits.
@@ -175,7 +190,9 @@ struct StepResult {
 /// createFootstep(s, a) of section 3.1, the stop action or the side step. The
 /// pendulum angle theta of dE2 is the leg's angle from vertical at heel
 /// strike, atan(half the COM chord / COM height); for a stop or a side step,
-/// atan(COM travel / height).
+/// atan(COM travel / height). A walk starts at the incoming velocity (from
+/// rest when standing) and reaches the parabola's by its end, so the COM's
+/// velocity is continuous; a side step starts and ends at rest.
 StepResult create_footstep(const FootstepState& state, const FootstepAction& action,
                            const CharacterParams& character);
 
@@ -190,8 +207,26 @@ struct ComSample {
 
 /// COM of a step at absolute time `t` (clamped to the step). The cubic Hermite
 /// through the step's end positions and velocities is exact for the parabola
-/// of a walking step, and is the deceleration curve of a stop.
+/// of a walking step in a steady gait, and is the uniform deceleration of a
+/// stop.
 ComSample com_at(const Footstep& step, double t);
+
+/// A walk from standing (`walk`, taken from `before`) as a start of `lead`
+/// seconds by the other foot, planted where it stands while the walk's foot
+/// swings to its place and the COM sets off along the walk's own curve, and
+/// the rest of the walk: for a foot that had no step of the other to swing in
+/// (the first step, or one by the foot that stopped last). The two trace the
+/// walk's COM, torso and feet and cost what it costs.
+std::array<Footstep, 2> split_set_off(const Footstep& walk, const FootstepState& before,
+                                      double lead);
+
+/// A bound on the COM's speed through a step: the largest of the velocity's
+/// Bezier control points (the curve's velocity lies in their hull). [m/s]
+double top_speed(const Footstep& step);
+
+/// A bound on how far the COM strays from the chord between its ends, across
+/// it or beyond them. [m]
+double com_stray(const Footstep& step);
 
 /// The three torso circles (centre, then left and right shoulder) for a COM
 /// at `com` with the torso facing `facing`, each radius grown by `pad`. With
