@@ -20,7 +20,7 @@ class Step:
     start: float
     end: float
     foot: str  # "left" or "right"
-    kind: str  # "walk", "stop" or "side_step"
+    kind: str  # "walk", "stop", "side_step" or "start"
     behavior: str  # "walk", "arms_in", "side_step"
 
 
