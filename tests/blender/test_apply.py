@@ -107,6 +107,33 @@ def test_feet_and_pelvis_follow_the_plan():
     check(worst_pelvis <= 0.02, f"the pelvis is {worst_pelvis * 100:.2f} cm off the COM")
 
 
+def test_on_the_demo_no_stance_foot_moves():
+    # The README's demo, planned and applied in Blender as scripts/demo.py does:
+    # every foot the plan has planted stays within 2 mm of its place at every
+    # frame, from the first instant of its stance to the last (the start of a
+    # walk from standing no longer slides it in), and the COM moves without
+    # a jump in its velocity.
+    from footfall.bridge import plan_store, scene_build
+    from footfall.core import native
+    from footfall.core.scenario import document_of
+
+    ff = native.load()
+    fresh_scene_with_rig()
+    scene_build.build(bpy.context.scene, document_of(ff.demo_scenario()), "demo")
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+    check(bpy.ops.footfall.apply() == {"FINISHED"}, "apply failed")
+    plan = plan_store.load_plan()
+    for agent in plan.agents:
+        motion = ff.check_motion(agent)
+        check(motion.velocity_jump < 1e-3, f"{agent.name}: the velocity jumps by {motion.velocity_jump:.3f} m/s")
+        check(motion.stance_slide < 1e-6, f"{agent.name}: a stance foot moves {motion.stance_slide * 1000:.3f} mm")
+    starts = sum(s.kind == ff.StepKind.START for a in plan.agents for s in a.footsteps)
+    check(starts > 0, "no walk from standing needed a start")
+    worst_foot, _, stance_frames = plan_errors(ff, plan)
+    check(stance_frames > 1000, f"only {stance_frames} stance samples")
+    check(worst_foot <= 0.002, f"a planted foot is {worst_foot * 1000:.2f} mm off the plan")
+
+
 def test_feet_roll_from_heel_to_toe():
     """At full speed a foot strikes with its toes up, is flat in mid-stance,
     and leaves with its heel up and its toes bent (footfall.core.foot_roll)."""
@@ -674,7 +701,7 @@ def test_a_leaving_agent_walks_off_and_disappears():
     check(numpy.all(values[times <= leo.end_time()] > 0.5), "leo is scaled down before leaving")
 
 
-run([test_feet_and_pelvis_follow_the_plan, test_feet_roll_from_heel_to_toe, test_arms_swing_opposite_to_the_legs, test_behaviours_play_their_clips,
+run([test_feet_and_pelvis_follow_the_plan, test_on_the_demo_no_stance_foot_moves, test_feet_roll_from_heel_to_toe, test_arms_swing_opposite_to_the_legs, test_behaviours_play_their_clips,
      test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was,
      test_applying_again_replaces_the_crowd, test_a_crowd_with_short_waits_applies,
      test_a_sheared_pose_is_refused_by_name, test_a_leaving_agent_walks_off_and_disappears,
