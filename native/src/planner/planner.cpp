@@ -64,10 +64,7 @@ void cut_before_rests(const ValidityChecker::Impl& checks, const FootstepState& 
   FootstepState state = start;
   for (std::size_t k = 0; k < result.footsteps.size(); ++k) {
     const Footstep& step = result.footsteps[k];
-    if (checks.touches_agents(step, others, state.standing()) ||
-        (step.kind == StepKind::kStop &&
-         checks.held_foot_touches(step, state.feet[static_cast<int>(other(step.foot))], others,
-                                  state.standing()))) {
+    if (checks.step_touches_agents(step, state, others)) {
       result.footsteps.resize(k);
       result.end_state = state;
       result.status = Status::kPartial;
@@ -82,21 +79,6 @@ bool feet_together(const FootstepState& state, const CharacterParams& character)
   const Vec2 left = character.foot_offset * perp(unit(state.facing));
   return distance(state.feet[static_cast<int>(Foot::kLeft)], state.com + left) < 1e-9 &&
          distance(state.feet[static_cast<int>(Foot::kRight)], state.com - left) < 1e-9;
-}
-
-// A step is tried against the others' plans; a stop with both feet (see
-// held_foot_touches).
-template <class Search>
-bool passes_agents(const ValidityChecker::Impl& checks, Search& search, int index,
-                   const WholeBody* whole) {
-  const auto& node = search.nodes[index];
-  const FootstepState& before = search.nodes[node.parent].state;
-  if (checks.collides(node.step, search.others, before.standing(),
-                      whole != nullptr && whole->shoulders_in_3d()))
-    return false;
-  return node.step.kind != StepKind::kStop ||
-         !checks.held_foot_touches(node.step, before.feet[static_cast<int>(other(node.step.foot))],
-                                   search.others, before.standing());
 }
 
 // Each walk from standing whose foot had no step of the other to swing in
@@ -355,8 +337,14 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     // most generated nodes are never expanded.
     // Following narrower sections, every step is tested whole, in 3-D, and
     // its shoulders against obstacles only so.
-    if (current != 0 && passes_agents(checks, search, current, whole) == false) continue;
-    if (current != 0 && whole != nullptr && !whole->passes(search.nodes[current].step)) continue;
+    if (current != 0) {
+      Footstep& step = search.nodes[current].step;
+      if (checks.step_touches_agents(step, search.nodes[search.nodes[current].parent].state,
+                                     search.others) ||
+          checks.hits_obstacles(step, whole != nullptr && whole->shoulders_in_3d()) ||
+          (whole != nullptr && !whole->passes(step)))
+        continue;
+    }
     ++result.nodes_expanded;
     // At the goal, and able to come to rest there among the others (whose
     // rests may already stand on it), free to set off again (a local goal is

@@ -340,13 +340,14 @@ bool ValidityChecker::Impl::touches_agents(const Footstep& step, detail::Sampled
   return false;
 }
 
-bool ValidityChecker::Impl::held_foot_touches(const Footstep& stop, Vec2 held,
-                                              detail::SampledAgents& others,
-                                              bool from_standing) const {
-  Footstep other_foot = stop;
-  other_foot.foot = other(stop.foot);
-  other_foot.foot_position = held;
-  return touches_agents(other_foot, others, from_standing);
+bool ValidityChecker::Impl::step_touches_agents(const Footstep& step, const FootstepState& before,
+                                                detail::SampledAgents& others) const {
+  if (touches_agents(step, others, before.standing())) return true;
+  if (step.kind != StepKind::kStop) return false;
+  Footstep held = step;
+  held.foot = other(step.foot);
+  held.foot_position = before.feet[static_cast<int>(held.foot)];
+  return touches_agents(held, others, before.standing());
 }
 
 Rest ValidityChecker::Impl::come_to_rest(const FootstepState& state,
@@ -452,9 +453,8 @@ StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double d
       state, {StepKind::kStop, other(state.last_foot), state.facing, 0.0, duration}, character_);
   if (!stop.valid()) return stop;
   if (whole != nullptr) whole->label(stop.step);  // a stop goes anywhere
-  if (collides(stop.step, others, state.standing(), whole != nullptr && whole->shoulders_in_3d()) ||
-      held_foot_touches(stop.step, state.feet[static_cast<int>(other(stop.step.foot))], others,
-                        state.standing()) ||
+  if (step_touches_agents(stop.step, state, others) ||
+      hits_obstacles(stop.step, whole != nullptr && whole->shoulders_in_3d()) ||
       (whole != nullptr && !whole->passes(stop.step)))
     stop.validity = StepValidity::kCollides;
   return stop;

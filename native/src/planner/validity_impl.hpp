@@ -56,12 +56,12 @@ struct ValidityChecker::Impl {
                 bool shoulders_in_3d = false) const;
   bool touches_agents(const Footstep& step, detail::SampledAgents& others,
                       bool from_standing) const;
-  // True if the foot that does not take `stop` touches `others` where it
-  // stands (`held`) while the stop is under way: unless it swings into the
-  // next step, it stays planted through the stop (before a walk or a start
-  // by the same foot), so stops are checked with both feet.
-  bool held_foot_touches(const Footstep& stop, Vec2 held, detail::SampledAgents& others,
-                         bool from_standing) const;
+  // touches_agents for `step` taken from `before`, a stop with both feet:
+  // unless the foot that does not take it swings into the next step, it
+  // stays planted through the stop (before a walk or a start by the same
+  // foot), where it stands.
+  bool step_touches_agents(const Footstep& step, const FootstepState& before,
+                           detail::SampledAgents& others) const;
   Rest come_to_rest(const FootstepState& state, detail::SampledAgents& others,
                     const WholeBody* whole) const;
   bool stands_clear(const FootstepState& state, detail::SampledAgents& others) const;
