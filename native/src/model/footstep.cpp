@@ -163,7 +163,7 @@ StepResult create_side_step(const FootstepState& state, const FootstepAction& ac
   step.com_velocity_start = {0.0, 0.0};
   step.behavior = Behavior::kSideStep;
   step.speed = action.speed;
-  // Setting off from rest pays the whole kinetic energy, as a start does.
+  // Setting off from rest pays the whole kinetic energy, as a walk does.
   step.cost.speed_change += speed_change_cost(character.mass, action.speed, 0.0, 1.0);
   return result;
 }
@@ -299,7 +299,7 @@ const char* to_string(StepValidity validity) {
     case StepValidity::kWrongFoot:
       return "a walking or side-stepping character must alternate feet";
     case StepValidity::kNotStanding:
-      return "a side step or a start sets off from standing";
+      return "a side step sets off from standing";
     case StepValidity::kNotAnAction:
       return "a start is the beginning of a walk from standing, not an action of its own";
     case StepValidity::kNoSwing:
