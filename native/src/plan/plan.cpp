@@ -184,7 +184,11 @@ std::array<FootPose, 2> feet_during(const AgentPlan& plan, int k, double t) {
   const int stepping = static_cast<int>(step.foot);
   const int other_foot = static_cast<int>(other(step.foot));
   const FootPose before = feet[stepping];
-  feet[stepping] = {step.foot_position, step.foot_orientation, 0.0, true};
+  // A start's foot stays as it was put down (its own orientation is chosen
+  // again when a crowd's plan is complete; the pose must not change with it).
+  feet[stepping] = step.kind == StepKind::kStart
+                       ? FootPose{before.position, before.orientation, 0.0, true}
+                       : FootPose{step.foot_position, step.foot_orientation, 0.0, true};
   // One that leaves walks on off its last step: the other foot swings a
   // stride on (two COM chords), as the COM travels beyond the planted foot.
   const bool walks_off = k + 1 == static_cast<int>(steps.size()) && plan.leaves &&
@@ -207,7 +211,7 @@ std::array<FootPose, 2> feet_during(const AgentPlan& plan, int k, double t) {
   const bool swung_in = k > 0 && steps[k - 1].foot != step.foot;
   const bool moves =
       !(before.position == step.foot_position) || before.orientation != step.foot_orientation;
-  if (!swung_in && moves) {
+  if (!swung_in && moves && step.kind != StepKind::kStart) {
     const double lead = std::min(kSetOffSwing, 0.5 * step.duration());
     if (t < step.start_time + lead) {
       feet[stepping] = swing(before, step, (t - step.start_time) / lead);
@@ -217,7 +221,8 @@ std::array<FootPose, 2> feet_during(const AgentPlan& plan, int k, double t) {
   }
   // Meanwhile the other foot swings to where the next step plants it.
   const double u = (t - stance_start) / (step.end_time - stance_start);
-  if (k + 1 < static_cast<int>(steps.size()) && steps[k + 1].foot == other(step.foot)) {
+  if (k + 1 < static_cast<int>(steps.size()) && steps[k + 1].foot == other(step.foot) &&
+      steps[k + 1].kind != StepKind::kStart) {  // a start's foot stays put
     feet[other_foot] = swing(feet[other_foot], steps[k + 1], u);
   } else if (walks_off) {
     feet[other_foot] = swing(feet[other_foot], walk_on, u);

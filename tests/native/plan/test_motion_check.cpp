@@ -60,6 +60,12 @@ TEST(MotionCheck, AStartedWalkMovesSmoothly) {
     EXPECT_LT(check.velocity_jump, 1e-9);
     EXPECT_LE(check.top_speed, 1.8);  // setting off from rest: above 1.3 midway
   }
+  // A start's foot stays as it was put down whatever orientation the start
+  // records (a crowd chooses them again once its plan is complete; checks
+  // made before must see the same feet).
+  started.footsteps[0].foot_orientation += 0.3;
+  EXPECT_LT(check_motion(started).stance_slide, 1e-9);
+  EXPECT_TRUE(feet_at(started, 0.1)[static_cast<int>(started.footsteps[0].foot)].planted);
 }
 
 }  // namespace
