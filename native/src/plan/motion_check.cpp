@@ -22,13 +22,16 @@ MotionCheck check_motion(const AgentPlan& plan, double rate) {
     before = step.com_velocity_end;
     const double span = step.duration();
     const int samples = std::max(2, static_cast<int>(std::ceil(span * rate)));
+    // The foot's turn is measured from the first instant of its stance (a
+    // start keeps the foot as it was put down, whatever it records).
+    const double turned_to = feet_at(plan, step.start_time)[static_cast<int>(step.foot)].orientation;
     for (int i = 0; i <= samples; ++i) {
       // The end itself belongs to the next step: the last sample is just before it.
       const double t = step.start_time + span * std::min(static_cast<double>(i) / samples, 1.0 - 1e-9);
       check.top_speed = std::max(check.top_speed, length(com_at(step, t).velocity));
       const FootPose foot = feet_at(plan, t)[static_cast<int>(step.foot)];
       // A turn of the foot counts as the travel of a point 0.1 m from the ankle.
-      const double turn = std::fabs(wrap_angle(foot.orientation - step.foot_orientation));
+      const double turn = std::fabs(wrap_angle(foot.orientation - turned_to));
       const double slide = std::max({distance(foot.position, step.foot_position), 0.1 * turn,
                                      foot.planted ? 0.0 : std::max(foot.lift, 1e-6)});
       if (slide > check.stance_slide) {

@@ -13,9 +13,10 @@ struct MotionCheck {
   /// counts as zero before the first step). [m/s]
   double velocity_jump = 0;
   double top_speed = 0;  ///< Fastest COM, sampled. [m/s]
-  /// Farthest a stance foot is from where its step plants it (a turn counts
-  /// as the travel of a point 0.1 m from the ankle; a foot not on the ground
-  /// at least 1 um), while the step is under way (sampled, ends included). [m]
+  /// Farthest a stance foot is from where its step plants it, or turned from
+  /// how it stood at the step's first instant (a turn counts as the travel of
+  /// a point 0.1 m from the ankle; a foot not on the ground at least 1 um),
+  /// while the step is under way (sampled, ends included). [m]
   double stance_slide = 0;
   int worst_jump_step = -1;   ///< The step after the largest jump.
   int worst_slide_step = -1;  ///< The step whose stance foot strays farthest.
