@@ -63,15 +63,6 @@ StepResult create_walk(const FootstepState& state, const FootstepAction& action,
   return detail::walk_step(state, foot, heading, shape, wrap_angle(action.phi), reach, character);
 }
 
-// The foot planted through `step` must stay within reach of the orientation
-// the step fixes for its own.
-void narrow_planted(FootstepState& after, const Footstep& step, const CharacterParams& character) {
-  OrientationInterval& stance = after.foot_orientation[static_cast<int>(other(step.foot))];
-  intersect(stance,
-            reachable_orientations(step.orientation_interval, step.foot, character.max_foot_turn),
-            other(step.foot), &stance);
-}
-
 // A step that plants `foot` beside the point where the COM, setting off at
 // `velocity`, comes to rest after decelerating uniformly for `T`, at the stance
 // offset across `facing` and turned to it as far as the other foot allows.
@@ -104,7 +95,11 @@ StepResult rest_step(const FootstepState& state, Foot foot, Vec2 velocity, doubl
       speed_change_cost(character.mass, 0.0, length(velocity), cos_double_angle(tan_theta));
 
   result.state = state_after(state, step);
-  narrow_planted(result.state, step, character);
+  // The planted foot must stay within reach of the fixed orientation.
+  OrientationInterval& stance = result.state.foot_orientation[static_cast<int>(other(foot))];
+  intersect(stance,
+            reachable_orientations(step.orientation_interval, foot, character.max_foot_turn),
+            other(foot), &stance);
   return result;
 }
 

@@ -74,11 +74,13 @@ void cut_before_rests(const ValidityChecker::Impl& checks, const FootstepState& 
   }
 }
 
-// True if `state` stands with its feet side by side across its facing.
+// True if `state` stands with its feet side by side across its facing, as
+// standing_state puts them.
 bool feet_together(const FootstepState& state, const CharacterParams& character) {
-  const Vec2 left = character.foot_offset * perp(unit(state.facing));
-  return distance(state.feet[static_cast<int>(Foot::kLeft)], state.com + left) < 1e-9 &&
-         distance(state.feet[static_cast<int>(Foot::kRight)], state.com - left) < 1e-9;
+  const FootstepState together = standing_state(state.com, state.facing, character);
+  for (int f = 0; f < 2; ++f)
+    if (distance(state.feet[f], together.feet[f]) >= 1e-9) return false;
+  return true;
 }
 
 // Each walk from standing whose foot had no step of the other to swing in
