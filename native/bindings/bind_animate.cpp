@@ -1,5 +1,5 @@
 // Rigs and the animated crowd as glTF: footfall._native.detect_bones,
-// split_side, foot_roll, find_gait_cycle, animate_gltf.
+// split_side, foot_roll, upper_body, find_gait_cycle, animate_gltf.
 #include <pybind11/numpy.h>
 
 #include "bindings.hpp"
@@ -7,6 +7,7 @@
 #include "footfall/animate/crowd_gltf.hpp"
 #include "footfall/animate/foot_roll.hpp"
 #include "footfall/animate/gait_cycle.hpp"
+#include "footfall/animate/upper_body.hpp"
 
 #include <array>
 #include <optional>
@@ -84,6 +85,28 @@ void bind_animate(py::module_& m) {
       "Heel-toe roll of foot `side` (0 left) at `times`, planted or not: (pitch, forward, up) arrays. "
       "Steps as arrays (start, end, foot, forward, speed); shape (ankle_height, heel_back, ball_ahead, "
       "ball_height).");
+  py::dict shares;
+  shares["chest"] = animate::kChestLook;
+  shares["head"] = animate::kHeadLook;
+  m.attr("LOOK_SHARES") = shares;
+  m.def(
+      "upper_body",
+      [](const AgentPlan& agent, const py::array_t<double>& times, double full_speed) {
+        const animate::UpperBodyFollower follower(agent, full_speed);
+        const auto count = times.size();
+        py::array_t<double> facing(count), swing(count), look(count);
+        for (py::ssize_t i = 0; i < count; ++i) {
+          const double t = times.at(i);
+          facing.mutable_at(i) = animate::body_facing(agent, t);
+          swing.mutable_at(i) = follower.swing_at(t);
+          look.mutable_at(i) = follower.look_at(t);
+        }
+        return py::make_tuple(facing, swing, look);
+      },
+      py::arg("agent"), py::arg("times"), py::arg("full_speed"),
+      "How the upper body follows an agent's plan at `times` [s]: (facing, swing, look) arrays: the "
+      "body's facing [rad], the share of the walking clip's amplitude, and the look angle [rad] the "
+      "chest and head turn by (LOOK_SHARES of it each, the head on top of the chest).");
   m.def(
       "find_gait_cycle",
       [](const std::vector<double>& feet, const std::vector<double>& hands, double leg_length) {

@@ -60,6 +60,21 @@ def applied(make_plan):
     return ff, plan, path
 
 
+def demo_applied():
+    """The README's demo, planned and applied in Blender as scripts/demo.py
+    does: (ff, plan)."""
+    from footfall.bridge import plan_store, scene_build
+    from footfall.core import native
+    from footfall.core.scenario import document_of
+
+    ff = native.load()
+    fresh_scene_with_rig()
+    scene_build.build(bpy.context.scene, document_of(ff.demo_scenario()), "demo")
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+    check(bpy.ops.footfall.apply() == {"FINISHED"}, "apply failed")
+    return ff, plan_store.load_plan()
+
+
 def imported_rig():
     """The rig imported with Footfall, and its profile."""
     from footfall.bridge import rig_import
@@ -108,21 +123,11 @@ def test_feet_and_pelvis_follow_the_plan():
 
 
 def test_on_the_demo_no_stance_foot_moves():
-    # The README's demo, planned and applied in Blender as scripts/demo.py does:
-    # every foot the plan has planted stays within 2 mm of its place at every
+    # On the demo every foot the plan has planted stays within 2 mm of its place at every
     # frame, from the first instant of its stance to the last (the start of a
     # walk from standing no longer slides it in), and the COM moves without
     # a jump in its velocity.
-    from footfall.bridge import plan_store, scene_build
-    from footfall.core import native
-    from footfall.core.scenario import document_of
-
-    ff = native.load()
-    fresh_scene_with_rig()
-    scene_build.build(bpy.context.scene, document_of(ff.demo_scenario()), "demo")
-    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
-    check(bpy.ops.footfall.apply() == {"FINISHED"}, "apply failed")
-    plan = plan_store.load_plan()
+    ff, plan = demo_applied()
     for agent in plan.agents:
         motion = ff.check_motion(agent)
         check(motion.velocity_jump < 1e-3, f"{agent.name}: the velocity jumps by {motion.velocity_jump:.3f} m/s")
@@ -182,6 +187,116 @@ def test_feet_roll_from_heel_to_toe():
     check(checked >= 3, f"only {checked} full-speed steps checked")
 
 
+def hands_ahead(armature, profile, hips_rest):
+    """How far each hand (its tail) is ahead of the hips, in the body's frame. [m]"""
+    hips = armature.pose.bones[profile.bones["hips"]]
+    body = (armature.matrix_world @ hips.matrix @ hips_rest.inverted()).inverted()
+    ahead = {}
+    for side in ("left", "right"):
+        hand = armature.pose.bones[profile.bones[side]["hand"]]
+        ahead[side] = -(body @ (armature.matrix_world @ hand.tail)).y  # the rig faces -Y at rest
+    return ahead
+
+
+def yaw_of(armature, bone: str) -> float:
+    """The world yaw [rad] of the bone's rest facing (-Y, the rig's) as posed."""
+    posed = armature.matrix_world @ armature.pose.bones[bone].matrix @ armature.data.bones[bone].matrix_local.inverted()
+    forward = posed.to_3x3() @ mathutils.Vector((0.0, -1.0, 0.0))
+    return math.atan2(forward.y, forward.x)
+
+
+def straight_walk_plan(gaits: slice):
+    """A plan maker: one agent walking 10 m straight with the rig's gaits[gaits]."""
+    def make(ff):
+        from footfall.core import character, scenario as sc
+
+        c, p = character.derive_parameters(imported_rig()[1].dimensions)
+        p["gaits"] = p["gaits"][gaits]
+        plan = sc.plan(sc.scenario_document(sc.ScenarioInput([sc.AgentInput("amble", (0, 0), [(10, 0)])], [], c, p)))
+        path = TMP / "straight-plan.json"
+        ff.write_plan_file(plan, str(path))
+        return plan, path
+    return make
+
+
+def swing_amplitudes(ff, plan):
+    """Per pair of walking steps in the middle of the one agent's walk: (the
+    mean share of the walking clip's amplitude ff.upper_body gives it, half
+    the range of the left hand's lead over the right). [m]"""
+    rig, profile = imported_rig()
+    hips_rest = rig.data.bones[profile.bones["hips"]].matrix_local
+    scene = bpy.context.scene
+    fps = scene.render.fps / scene.render.fps_base
+    (agent,) = plan.agents
+    frames = numpy.arange(scene.frame_start, scene.frame_end + 1)
+    times = numpy.minimum((frames - scene.frame_start) / fps, agent.end_time())
+    _, swing, _ = ff.upper_body(agent, times, (agent.character or plan.character).preferred_speed)
+    lead = []
+    for frame in frames:
+        scene.frame_set(int(frame))
+        ahead = hands_ahead(evaluated(agent.name), profile, hips_rest)
+        lead.append(ahead["left"] - ahead["right"])
+    lead = numpy.array(lead)
+    walks = [s for s in agent.footsteps if s.kind == ff.StepKind.WALK]
+    result = []
+    for first, second in zip(walks[2:-3], walks[3:-2]):  # past the set-off, before the stop
+        inside = (times >= first.start_time) & (times <= second.end_time)
+        result.append((swing[inside].mean(), 0.5 * (lead[inside].max() - lead[inside].min())))
+    return result
+
+
+def test_arms_swing_as_far_as_the_steps_are_fast():
+    """The walking clip plays at the share of its amplitude the step's speed
+    gives: a walk in the slowest gait swings the arms less, in proportion."""
+    measured = {}
+    for name, gaits in (("full", slice(None)), ("slow", slice(0, 1))):
+        ff, plan, path = applied(straight_walk_plan(gaits))
+        pairs = swing_amplitudes(ff, plan)
+        check(len(pairs) >= 4, f"{name}: only {len(pairs)} pairs of steps measured")
+        measured[name] = numpy.array(pairs).mean(axis=0)
+        print(f"{name} gaits: swing share {measured[name][0]:.2f}, hands' amplitude {measured[name][1] * 100:.1f} cm")
+    share = measured["slow"][0] / measured["full"][0]
+    amplitude = measured["slow"][1] / measured["full"][1]
+    check(share < 0.6, f"the slow walk's share of the swing is {share:.2f} of the full one's")
+    check(abs(amplitude - share) < 0.1, f"the hands swing {amplitude:.2f} as far at {share:.2f} of the share")
+
+
+def test_the_head_and_chest_look_into_a_turn():
+    """On the demo the head turns from the hips by the look angle's share
+    (the chest's and its own) at every frame, and ahead of every turn of the
+    body the head is already turned that way."""
+    ff, plan = demo_applied()
+    rig, profile = imported_rig()
+    shares = ff.LOOK_SHARES["chest"] + ff.LOOK_SHARES["head"]
+    scene = bpy.context.scene
+    fps = scene.render.fps / scene.render.fps_base
+    frames = numpy.arange(scene.frame_start, scene.frame_end + 1)
+    worst, most, leads, turns = 0.0, 0.0, 0, 0
+    looks = {}
+    for agent in plan.agents:
+        times = numpy.minimum((frames - scene.frame_start) / fps, agent.end_time())
+        looks[agent.name] = ff.upper_body(agent, times, (agent.character or plan.character).preferred_speed)
+    for i, frame in enumerate(frames):
+        scene.frame_set(int(frame))
+        for agent in plan.agents:
+            facing, _, look = looks[agent.name]
+            armature = evaluated(agent.name)
+            turned = math.remainder(yaw_of(armature, profile.bones["head"]) - yaw_of(armature, profile.bones["hips"]),
+                                    math.tau)
+            worst = max(worst, abs(turned - shares * look[i]))
+            most = max(most, abs(look[i]))
+            ahead = facing[min(i + round(0.4 * fps), len(frames) - 1)]  # the body's facing 0.4 s later
+            coming = math.remainder(ahead - facing[i], math.tau)
+            if abs(coming) > math.radians(10):
+                turns += 1
+                leads += turned * coming > 0 and abs(turned) > math.radians(2)
+    print(f"head from the hips: at most {math.degrees(worst):.2f} degrees off its share of the look; "
+          f"look up to {math.degrees(most):.1f} degrees; the head leads {leads} of {turns} frames before a turn")
+    check(most > math.radians(10), f"the demo's looks reach only {math.degrees(most):.1f} degrees")
+    check(worst < math.radians(3), f"the head is {math.degrees(worst):.1f} degrees off its share of the look")
+    check(turns > 10 and leads == turns, f"the head leads the body into {leads} of {turns} frames of turns")
+
+
 def test_arms_swing_opposite_to_the_legs():
     """At each right heel strike of a walk the left hand is ahead of the right, and the other way round."""
 
@@ -196,13 +311,7 @@ def test_arms_swing_opposite_to_the_legs():
     for step in walks:
         frame = scene.frame_start + step.start_time * fps
         scene.frame_set(int(frame), subframe=frame % 1)
-        armature = evaluated(agent.name)
-        hips = armature.pose.bones[profile.bones["hips"]]
-        body = (armature.matrix_world @ hips.matrix @ hips_rest.inverted()).inverted()
-        ahead = {}
-        for side in ("left", "right"):
-            hand = armature.pose.bones[profile.bones[side]["hand"]]
-            ahead[side] = -(body @ (armature.matrix_world @ hand.tail)).y  # the rig faces -Y at rest
+        ahead = hands_ahead(evaluated(agent.name), profile, hips_rest)
         leading = "left" if step.foot == ff.Foot.RIGHT else "right"
         other = "right" if leading == "left" else "left"
         check(ahead[leading] > ahead[other] + 0.05,
@@ -497,8 +606,7 @@ def test_behaviours_play_their_clips():
                                      for s in agent.footsteps])
     check([s.behavior for s in sections] == ["walk", "arms_in", "side_step", "walk", "idle"],
           [s.behavior for s in sections])
-    strips = sorted((strip for track in bpy.data.objects["dee"].animation_data.nla_tracks
-                     for strip in track.strips), key=lambda strip: strip.frame_start)
+    strips = sorted(section_strips("dee"), key=lambda strip: strip.frame_start)
     check(len(strips) == len(sections), f"{len(strips)} strips for {len(sections)} sections")
     for strip, section in zip(strips, sections):
         start, end = scene.frame_start + section.start * fps, scene.frame_start + section.end * fps
@@ -578,10 +686,19 @@ def demo_plan(ff):
 def test_a_crowd_with_short_waits_applies():
     ff, plan, path = applied(demo_plan)
     for agent in plan.agents:
-        strips = [s for t in bpy.data.objects[agent.name].animation_data.nla_tracks for s in t.strips]
+        strips = section_strips(agent.name)
         check(len(strips) >= 1, f"{agent.name}: no clip strips")
         # Strips on one track never overlap (Blender refuses that), and every section has its strip.
         check(len(strips) == len(sections_of(agent)), f"{agent.name}: {len(strips)} strips")
+
+
+def section_strips(name):
+    """The NLA strips of an instance's sections (not its idle base or look-ahead)."""
+    from footfall.bridge import animate
+
+    return [strip for track in bpy.data.objects[name].animation_data.nla_tracks
+            if track.name.startswith(animate.UPPER_BODY_TRACK) and track.name != f"{animate.UPPER_BODY_TRACK} idle"
+            for strip in track.strips]
 
 
 def sections_of(agent):
@@ -701,7 +818,8 @@ def test_a_leaving_agent_walks_off_and_disappears():
     check(numpy.all(values[times <= leo.end_time()] > 0.5), "leo is scaled down before leaving")
 
 
-run([test_feet_and_pelvis_follow_the_plan, test_on_the_demo_no_stance_foot_moves, test_feet_roll_from_heel_to_toe, test_arms_swing_opposite_to_the_legs, test_behaviours_play_their_clips,
+run([test_feet_and_pelvis_follow_the_plan, test_on_the_demo_no_stance_foot_moves, test_feet_roll_from_heel_to_toe, test_arms_swing_opposite_to_the_legs,
+     test_arms_swing_as_far_as_the_steps_are_fast, test_the_head_and_chest_look_into_a_turn, test_behaviours_play_their_clips,
      test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was,
      test_applying_again_replaces_the_crowd, test_a_crowd_with_short_waits_applies,
      test_a_sheared_pose_is_refused_by_name, test_a_leaving_agent_walks_off_and_disappears,

@@ -36,6 +36,8 @@ LOCOMOTION_OF = "footfall_locomotion_of"  # on an instance's locomotion action: 
 POLE_AHEAD = 0.5  # [m] knee poles in front of the knees
 REACH = 0.995  # share of the leg's length the hips may stretch it to (a locked knee snaps)
 BLEND_SECONDS = 0.25  # cross-fade between the clips of two sections
+UPPER_BODY_TRACK = "Footfall upper body"  # the NLA tracks of the sections' clips: "... idle", "... A", ...
+LOOK_AHEAD_TRACK = "Footfall look ahead"
 
 
 @dataclass
@@ -61,6 +63,8 @@ class RigRest:
     hips: str
     hips_rest: Matrix
     forward_yaw: float  # the rig's facing in the rest pose [rad]
+    chest: str
+    head: str
     legs: Dict[str, _Leg] = field(default_factory=dict)
 
 
@@ -139,7 +143,8 @@ def rig_rest(data, profile, feet=None) -> RigRest:
     (side -> world positions of the vertices skinned to its foot and toe)
     place the heels."""
     bones = profile.bones
-    rest = RigRest(bones["hips"], data.bones[bones["hips"]].matrix_local.copy(), _forward_yaw(data, bones))
+    rest = RigRest(bones["hips"], data.bones[bones["hips"]].matrix_local.copy(), _forward_yaw(data, bones),
+                   bones["chest"], bones["head"])
     forward = Vector((math.cos(rest.forward_yaw), math.sin(rest.forward_yaw), 0.0))
     for side, suffix in SIDES:
         limb = bones[side]
@@ -239,6 +244,14 @@ def _write_action(armature, name: str, frames, channels) -> bpy.types.Action:
     to its (locations, quaternions or None) arrays."""
     action = bpy.data.actions.new(name)
     action[LOCOMOTION_OF] = armature.name  # not a clip of the rig (rig_clips.actions_of)
+    _key_channels(action, frames, channels)
+    action_curves.assign(armature, action)
+    return action
+
+
+def _key_channels(action, frames, channels) -> None:
+    """Keys the bones' channels at every frame: channels maps a bone to its
+    (locations, quaternions or None) arrays."""
     for bone, arrays in channels.items():
         for path, values in zip(("location", "rotation_quaternion"), arrays):
             if values is None:
@@ -248,22 +261,6 @@ def _write_action(armature, name: str, frames, channels) -> bpy.types.Action:
                 curve.keyframe_points.add(len(frames))
                 curve.keyframe_points.foreach_set("co", numpy.column_stack((frames, values[:, index])).ravel())
                 curve.update()
-    action_curves.assign(armature, action)
-    return action
-
-
-def _facings(feet_yaw, steps, step_index):
-    """The body's facing per frame: between the feet; in a side step, across
-    the step's direction of travel, on the side the feet point to."""
-    between = numpy.arctan2(numpy.sin(feet_yaw).sum(axis=1), numpy.cos(feet_yaw).sum(axis=1))
-    side_step = numpy.array([s.behavior.name == "SIDE_STEP" for s in steps], dtype=bool)
-    if not side_step.any():
-        return between
-    travel = numpy.array([math.atan2(s.com_end[1] - s.com_start[1], s.com_end[0] - s.com_start[0]) for s in steps])
-    index = numpy.clip(step_index, 0, len(steps) - 1)
-    across = travel[index] + math.pi / 2
-    across = numpy.where(numpy.cos(across - between) >= 0, across, across - math.pi)
-    return numpy.where((step_index >= 0) & side_step[index], across, between)
 
 
 def _step_arrays(ff, steps) -> foot_roll.Steps:
@@ -275,12 +272,12 @@ def _step_arrays(ff, steps) -> foot_roll.Steps:
                            chord / numpy.maximum(end - start, 1e-9))
 
 
-def _locomotion(ff, agent, rest: RigRest, frames, frame_offset: float, fps: float, full_speed: float):
+def _locomotion(ff, agent, rest: RigRest, times, facing, full_speed: float):
     """Channels of the hips on the COM path, the foot targets on the feet
     (rolling heel to toe: foot_roll, the toes bending as the heels rise) and
-    the poles ahead of the knees, at every frame; after its plan the agent
-    holds its last pose (one that leaves is hidden then, _key_leaving)."""
-    times = numpy.minimum((frames - frame_offset) / fps, agent.end_time())
+    the poles ahead of the knees, at `times` (clamped to the plan's end: after
+    its plan the agent holds its last pose; one that leaves is hidden then,
+    _key_leaving); `facing` is the body's there (ff.upper_body)."""
     count = len(times)
     com = numpy.empty((count, 2))
     feet_xy = numpy.empty((count, 2, 2))
@@ -294,11 +291,9 @@ def _locomotion(ff, agent, rest: RigRest, frames, frame_offset: float, fps: floa
             feet_yaw[i, side] = foot.orientation
             lift[i, side] = foot.lift
             planted[i, side] = foot.planted
-    steps = agent.footsteps
-    step_arrays = _step_arrays(ff, steps)
+    step_arrays = _step_arrays(ff, agent.footsteps)
     lateral = numpy.cross([math.cos(rest.forward_yaw), math.sin(rest.forward_yaw), 0.0], [0.0, 0.0, 1.0])
-    step_index = numpy.searchsorted([s.start_time for s in steps], times, side="right") - 1
-    body_yaw = numpy.unwrap(_facings(feet_yaw, steps, step_index)) - rest.forward_yaw
+    body_yaw = numpy.unwrap(facing) - rest.forward_yaw
     hips_head = numpy.array(rest.hips_rest.to_translation())
     cos, sin = numpy.cos(body_yaw), numpy.sin(body_yaw)
     # The hips as high as at rest, but low enough for both legs to reach.
@@ -331,6 +326,18 @@ def _locomotion(ff, agent, rest: RigRest, frames, frame_offset: float, fps: floa
     return channels
 
 
+def own_actions(obj) -> List[bpy.types.Action]:
+    """The actions Apply made for an instance: its locomotion and look-ahead
+    (the clips its strips play are the rig's, shared)."""
+    animation = obj.animation_data
+    if animation is None:
+        return []
+    found = [animation.action] if animation.action else []
+    found += [strip.action for track in animation.nla_tracks for strip in track.strips
+              if strip.action is not None and LOCOMOTION_OF in strip.action]
+    return found
+
+
 def _key_leaving(armature, agent, frame_offset: float, fps: float) -> None:
     """An agent that leaves at its goal is shown up to its leave time and
     hidden, in viewports and renders, from the first frame after it."""
@@ -358,32 +365,42 @@ def _make_cyclic(clip: rig_clips.Clip) -> None:
 
 
 def _upper_body(armature, agent, clips: Dict[str, rig_clips.Clip], fps: float, frame_offset: float,
-                last_frame: float) -> None:
-    """One NLA strip per section, on two alternating tracks that cross-fade;
-    a strip that overlaps the one before on its track (sections shorter than
-    the blends, as a crowd's short waits make) goes on a free track above."""
+                frames, swing) -> None:
+    """Over a base track playing "idle" throughout, one NLA strip per
+    section, on two alternating tracks that cross-fade; a strip that overlaps
+    the one before on its track (sections shorter than the blends, as a
+    crowd's short waits make) goes on a free track above. A walking strip's
+    influence, keyed at `frames`, is also `swing` there, the share of the
+    clip's amplitude (ff.upper_body)."""
     steps = [clip_timing.Step(s.start_time, s.end_time, s.foot.name.lower(), s.kind.name.lower(),
                               s.behavior.name.lower()) for s in agent.footsteps]
     sections = clip_timing.sections(steps)
+    last_frame = frames[-1]
     tracks, ends = [], []  # NLA tracks, and the frame where each one's last strip ends
 
-    def add_track():
+    def add_track(name: str):
         tracks.append(armature.animation_data.nla_tracks.new())
-        tracks[-1].name = f"Footfall upper body {chr(ord('A') + len(tracks) - 1)}"
+        tracks[-1].name = f"{UPPER_BODY_TRACK} {name}"
         ends.append(-math.inf)
 
     def track_for(i: int, start: float, end: float) -> int:
         """Strip i's track: A or B by turns, else the lowest free one above A, else a new one."""
         # Blender first places the strip at the whole frame below its start.
-        k = next((k for k in [i % 2, *range(1, len(tracks))] if ends[k] <= math.floor(start)), None)
+        k = next((k for k in [1 + i % 2, *range(2, len(tracks))] if ends[k] <= math.floor(start)), None)
         if k is None:
-            add_track()
+            add_track(chr(ord("A") + len(tracks) - 1))
             k = len(tracks) - 1
         ends[k] = end
         return k
 
-    add_track()
-    add_track()
+    add_track("idle")
+    idle = clips["idle"]
+    base = tracks[0].strips.new("idle", int(frame_offset), idle.action)
+    base.action_frame_start, base.action_frame_end = idle.first, idle.first + idle.cycle_frames
+    base.repeat = max((last_frame - frame_offset) / idle.cycle_frames, 1e-3)
+    base.extrapolation = "HOLD_FORWARD"
+    add_track("A")
+    add_track("B")
     for i, section in enumerate(sections):
         clip = clips[section.behavior]
         # Neighbouring strips overlap by the blend time; the last plays to the scene's end.
@@ -398,14 +415,57 @@ def _upper_body(armature, agent, clips: Dict[str, rig_clips.Clip], fps: float, f
         strip.frame_start = timing.frame_start
         strip.action_frame_start, strip.action_frame_end = timing.action_frame_start, timing.action_frame_end
         strip.scale, strip.repeat = timing.scale, timing.repeat
-        strip.extrapolation = "NOTHING" if i < len(sections) - 1 else "HOLD_FORWARD"
-        # Strips above the lowest track fade in and out over what is below; the
-        # last one holds to the scene's end, faded in only (faded out, the
-        # arms would drop to their rest at the last frame).
-        if k > 0:
+        last = i == len(sections) - 1
+        strip.extrapolation = "HOLD_FORWARD" if last else "NOTHING"
+        # Strips above track A fade in and out over what is below; the last
+        # one holds to the scene's end, faded in only (faded out, the arms
+        # would drop to idle at the last frame).
+        blend_in = blend_out = 0.0
+        if k > 1:
             strip.use_auto_blend = False
-            strip.blend_in = min(BLEND_SECONDS * fps, 0.5 * (strip.frame_end - strip.frame_start))
-            strip.blend_out = strip.blend_in if i < len(sections) - 1 else 0.0
+            blend_in = min(BLEND_SECONDS * fps, 0.5 * (strip.frame_end - strip.frame_start))
+            blend_out = 0.0 if last else blend_in
+            strip.blend_in, strip.blend_out = blend_in, blend_out
+        if section.behavior == "walk":
+            # Keyed, the influence replaces the fades: they are keyed into it.
+            fade = clip_timing.fade(frames, strip.frame_start, strip.frame_end, blend_in, blend_out)
+            _key_influence(strip, frames, fade * swing)
+
+
+def _key_influence(strip, frames, influence) -> None:
+    """Keys the strip's influence at the frames (those it plays)."""
+    strip.use_animated_influence = True
+    curve = strip.fcurves.find("influence")
+    curve.keyframe_points.clear()
+    inside = (frames >= math.floor(strip.frame_start)) & (frames <= math.ceil(strip.frame_end))
+    curve.keyframe_points.add(int(inside.sum()))
+    curve.keyframe_points.foreach_set("co", numpy.column_stack((frames[inside], influence[inside])).ravel())
+    curve.update()
+
+
+def _look_ahead(ff, armature, agent_name: str, rest: RigRest, frames, look) -> None:
+    """A top NLA track that turns the chest and head by shares of the `look`
+    angle at the frames (ff.upper_body), about the world's up, combined with
+    (turning on top of) the clips below. Bones not turned by quaternion are
+    left as the clips pose them."""
+    shares = ff.LOOK_SHARES
+    action = bpy.data.actions.new(f"{agent_name} look ahead")
+    action[LOCOMOTION_OF] = armature.name
+    channels = {}
+    for role, bone in (("chest", rest.chest), ("head", rest.head)):
+        if armature.pose.bones[bone].rotation_mode != "QUATERNION":
+            continue
+        matrix = armature.data.bones[bone].matrix_local
+        channels[bone] = (None, _turns(matrix, (0.0, 0.0, 1.0), shares[role] * look))
+    if not channels:
+        bpy.data.actions.remove(action)
+        return
+    _key_channels(action, frames, channels)
+    track = armature.animation_data.nla_tracks.new()
+    track.name = LOOK_AHEAD_TRACK
+    strip = track.strips.new("look ahead", int(frames[0]), action)
+    strip.blend_type = "COMBINE"
+    strip.extrapolation = "HOLD_FORWARD"
 
 
 def clips_of(rig, profile) -> Dict[str, rig_clips.Clip]:
@@ -466,9 +526,12 @@ def apply_plan(ff, plan, rigs: Dict[str, bpy.types.Object], scene,
     for i, (agent, armature, character) in enumerate(zip(plan.agents, armatures, cast)):
         _add_controls(armature, character.rest)
         walker = agent.character or plan.character
+        times = numpy.minimum((frames - frame_offset) / fps, agent.end_time())
+        facing, swing, look = ff.upper_body(agent, times, walker.preferred_speed)
         _write_action(armature, f"{agent.name} locomotion", frames,
-                      _locomotion(ff, agent, character.rest, frames, frame_offset, fps, walker.preferred_speed))
-        _upper_body(armature, agent, character.clips, fps, frame_offset, last_frame)
+                      _locomotion(ff, agent, character.rest, times, facing, walker.preferred_speed))
+        _upper_body(armature, agent, character.clips, fps, frame_offset, frames, swing)
+        _look_ahead(ff, armature, agent.name, character.rest, frames, look)
         _key_leaving(armature, agent, frame_offset, fps)
         if progress:
             progress((i + 1) / len(plan.agents))

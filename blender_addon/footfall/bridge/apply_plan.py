@@ -31,13 +31,13 @@ def _plan(ff, plan_filepath: str):
 
 
 def _remove(objects) -> None:
-    """Removes agents made by an earlier apply: objects, armatures, locomotion
+    """Removes agents made by an earlier apply: objects, armatures, their own
     actions (the meshes stay: they are the rig's)."""
     for obj in objects:
         data = obj.data if obj.type == "ARMATURE" else None
-        action = obj.animation_data.action if obj.animation_data else None
+        actions = animate.own_actions(obj)
         bpy.data.objects.remove(obj)
-        for block, blocks in ((data, bpy.data.armatures), (action, bpy.data.actions)):
+        for block, blocks in ((data, bpy.data.armatures), *((a, bpy.data.actions) for a in actions)):
             if block is not None and block.users == 0:
                 blocks.remove(block)
 
@@ -60,8 +60,7 @@ def run(context, plan_filepath: str = "", rig_name: str = ""):
     # Frees the agents' names (objects, armatures, actions) for the new instances.
     renamed = {}
     for obj in objects:
-        for block in (obj, obj.data if obj.type == "ARMATURE" else None,
-                      obj.animation_data.action if obj.animation_data else None):
+        for block in (obj, obj.data if obj.type == "ARMATURE" else None, *animate.own_actions(obj)):
             if block is not None and block not in renamed:
                 renamed[block] = block.name
                 block.name += " (replaced)"

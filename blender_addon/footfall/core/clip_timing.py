@@ -12,6 +12,8 @@ strikes. A stop and standing still play "idle".
 from dataclasses import dataclass
 from typing import List, Sequence
 
+import numpy
+
 
 @dataclass(frozen=True)
 class Step:
@@ -96,3 +98,15 @@ def strip_timing(section: Section, clip_start: float, clip_end: float, fps: floa
         scale=scale,
         repeat=repeat,
     )
+
+
+def fade(frames, frame_start: float, frame_end: float, blend_in: float, blend_out: float):
+    """A strip's influence at the frames from its blend in and out [frames],
+    as Blender's NLA fades a strip whose influence is not keyed."""
+    frames = numpy.asarray(frames, dtype=float)
+    influence = numpy.ones_like(frames)
+    if blend_in > 0:
+        influence = numpy.minimum(influence, (frames - frame_start) / blend_in)
+    if blend_out > 0:
+        influence = numpy.minimum(influence, (frame_end - frames) / blend_out)
+    return numpy.clip(influence, 0.0, 1.0)

@@ -5,6 +5,7 @@
 
 #include "animate/clips.hpp"
 #include "animate/section_timing.hpp"
+#include "footfall/animate/upper_body.hpp"
 
 namespace footfall::animate {
 
@@ -48,18 +49,6 @@ Mat4 frame_turn(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) from_t.m[i][j] = from.m[j][i];
   return frame(c, d) * from_t;
-}
-
-// The body's facing: between the feet; in a side step, across the step's
-// direction of travel, on the side the feet point to.
-double facing(const AgentPlan& plan, int step, const std::array<FootPose, 2>& feet) {
-  const double between = std::atan2(std::sin(feet[0].orientation) + std::sin(feet[1].orientation),
-                                    std::cos(feet[0].orientation) + std::cos(feet[1].orientation));
-  if (step < 0 || plan.footsteps[step].kind != StepKind::kSideStep) return between;
-  const Footstep& s = plan.footsteps[step];
-  double across = std::atan2(s.com_end.y - s.com_start.y, s.com_end.x - s.com_start.x) + kPi / 2;
-  if (std::cos(across - between) < 0) across -= kPi;
-  return across;
 }
 
 // The angle nearest `previous` that equals `angle` modulo a turn.
@@ -123,6 +112,13 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
   const Vec3 forward{std::cos(rig.forward_yaw), std::sin(rig.forward_yaw), 0.0};
   const Vec3 lateral = cross(forward, {0, 0, 1});  // the feet pitch about it
   const FootRoller roller(plan, character.preferred_speed);
+  const UpperBodyFollower follower(plan, character.preferred_speed);
+  // The chest and head turn about the world's up, seen from their rest frames.
+  const auto local_up = [&](int node) {
+    const Quat rest = decompose(rig.rest_world[node]).rotation;
+    return rotate({rest.w, -rest.x, -rest.y, -rest.z}, Vec3{0, 1, 0});
+  };
+  const Vec3 chest_up = local_up(rig.chest), head_up = local_up(rig.head);
   const SectionTiming timing(plan, rig.clips, times.empty() ? 0.0 : times.back(), fps);
   double body_yaw = 0, previous_yaw = 0;
   std::array<double, 2> foot_yaw{0, 0}, previous_foot{0, 0};
@@ -131,10 +127,7 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
     const double t = std::min(times[f], plan.end_time());
     const Vec2 com = com_at(plan, t).position;
     const std::array<FootPose, 2> feet = feet_at(plan, t);
-    const auto later = std::upper_bound(plan.footsteps.begin(), plan.footsteps.end(), t,
-                                        [](double time, const Footstep& s) { return time < s.start_time; });
-    const int step = static_cast<int>(later - plan.footsteps.begin()) - 1;
-    body_yaw = facing(plan, step, feet) - rig.forward_yaw;
+    body_yaw = body_facing(plan, t) - rig.forward_yaw;
     if (f > 0) body_yaw = unwrapped(body_yaw, previous_yaw);
     previous_yaw = body_yaw;
 
@@ -207,9 +200,18 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
       motion.frames[leg_slots[side][3]][f] = toe;
     }
 
-    const std::vector<ClipLayer> layers = timing.at(times[f]);
-    for (std::size_t i = 0; i < upper_slots.size(); ++i)
-      motion.frames[upper_slots[i]][f] = layered(layers, rig.upper_body[i], rig.rest_trs[rig.upper_body[i]]);
+    std::vector<ClipLayer> layers = timing.at(times[f]);
+    const double swing = follower.swing_at(t), look = follower.look_at(t);
+    for (ClipLayer& layer : layers)
+      if (layer.walk) layer.influence *= swing;
+    for (std::size_t i = 0; i < upper_slots.size(); ++i) {
+      const int node = rig.upper_body[i];
+      Trs pose = layered(layers, node, rig.rest_trs[node]);
+      // Turned on top of the clips, as the add-on's look-ahead track combines.
+      if (node == rig.chest) pose.rotation = normalized(pose.rotation * axis_angle(chest_up, kChestLook * look));
+      if (node == rig.head) pose.rotation = normalized(pose.rotation * axis_angle(head_up, kHeadLook * look));
+      motion.frames[upper_slots[i]][f] = pose;
+    }
   }
   return motion;
 }

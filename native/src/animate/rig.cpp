@@ -393,6 +393,8 @@ Rig Rig::from_model(tinygltf::Model model, const std::string& path, const RigPro
   const std::map<std::string, std::string> roles = bone_roles(*rig, joints, profile);
   const auto node_of = [&](const std::string& role) { return bone(*rig, joints, roles.at(role), "bones." + role); };
   rig->hips = node_of("hips");
+  rig->chest = node_of("chest");
+  rig->head = node_of("head");
   const char* sides[] = {"left", "right"};
   for (int side = 0; side < 2; ++side) {
     const std::string prefix = std::string(sides[side]) + ".";

@@ -66,6 +66,7 @@ struct RigData {
   /// joint with no name or a name another joint has too.
   std::vector<std::string> bone_names;
   int hips = -1;
+  int chest = -1, head = -1;       ///< turned toward the path ahead
   std::array<Leg, 2> legs;         ///< left, right
   std::array<int, 2> upper_arms{}, forearms{}, hands{};  ///< left, right
   double forward_yaw = 0;          ///< the rig's facing at rest, Z up [rad]

@@ -33,11 +33,19 @@ SectionTiming::SectionTiming(const AgentPlan& plan, const std::map<std::string, 
     sections.push_back({behavior_of(steps[first]), first, last});
     first = last + 1;
   }
-  std::vector<double> ends{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  // Track 0 plays "idle" throughout, under the sections' strips.
+  Strip base;
+  base.clip = &clips.at("idle");
+  base.end = std::max(scene_end, 0.0);
+  base.hold = true;
+  strips_.push_back(base);
+  constexpr double kNever = -std::numeric_limits<double>::infinity();
+  std::vector<double> ends{kNever, kNever, kNever};  // per track, where its last strip ends [s]
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const Section& section = sections[i];
     Strip strip;
     strip.clip = &clips.at(section.behavior);
+    strip.walk = section.behavior == "walk";
     const double start = steps[section.first].start_time, end = steps[section.last].end_time;
     const double lead = i > 0 ? kBlendSeconds : 0.0;
     const double tail = i + 1 < sections.size() ? kBlendSeconds : std::max(scene_end - end, 0.0);
@@ -60,12 +68,13 @@ SectionTiming::SectionTiming(const AgentPlan& plan, const std::map<std::string, 
       if (strip.offset < 0) strip.offset += cycle;
     }
     strip.end = strip.start + std::max(end + tail - strip.start, 1e-3 * cycle * strip.scale);
-    // Its track: A or B by turns, else the lowest free one above A, else a
-    // new one (Blender first places a strip at the whole frame below its start).
+    // Its track: A (1) or B (2) by turns, else the lowest free one above A,
+    // else a new one (Blender first places a strip at the whole frame below
+    // its start).
     const double start_frame = std::floor(strip.start * fps);
     int track = -1;
-    std::vector<int> candidates{static_cast<int>(i % 2)};
-    for (int k = 1; k < tracks_; ++k) candidates.push_back(k);
+    std::vector<int> candidates{1 + static_cast<int>(i % 2)};
+    for (int k = 2; k < tracks_; ++k) candidates.push_back(k);
     for (int k : candidates)
       if (ends[k] * fps <= start_frame + 1e-9) {
         track = k;
@@ -73,26 +82,19 @@ SectionTiming::SectionTiming(const AgentPlan& plan, const std::map<std::string, 
       }
     if (track < 0) {
       track = tracks_++;
-      ends.push_back(0);
+      ends.push_back(kNever);
     }
     ends[track] = strip.end;
     strip.track = track;
     strip.hold = i + 1 == sections.size();
-    if (track > 0) {
-      // Strips above the lowest track fade in and out over what is below;
-      // the last holds its end, faded in only.
+    if (track > 1) {
+      // Strips above track A fade in and out over what is below; the last
+      // holds its end, faded in only.
       const double blend = std::min(kBlendSeconds, 0.5 * (strip.end - strip.start));
       strip.blend_in = blend;
       strip.blend_out = strip.hold ? 0.0 : blend;
     }
     strips_.push_back(strip);
-  }
-  if (strips_.empty()) {  // standing still throughout
-    Strip idle;
-    idle.clip = &clips.at("idle");
-    idle.end = std::max(scene_end, 0.0);
-    idle.hold = true;
-    strips_.push_back(idle);
   }
 }
 
@@ -107,7 +109,7 @@ std::vector<ClipLayer> SectionTiming::at(double t) const {
       if (strip.blend_out > 0) influence = std::min(influence, (strip.end - std::min(t, strip.end)) / strip.blend_out);
       double phase = std::fmod(strip.offset + local / strip.scale, strip.clip->cycle);
       if (phase < 0) phase += strip.clip->cycle;
-      layers.push_back({strip.clip, strip.clip->start + phase, std::clamp(influence, 0.0, 1.0)});
+      layers.push_back({strip.clip, strip.clip->start + phase, std::clamp(influence, 0.0, 1.0), strip.walk});
       break;
     }
   return layers;

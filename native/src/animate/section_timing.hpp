@@ -4,8 +4,10 @@
 // steps and phased so that the clip's right heel strike falls on the plan's.
 // Laid out as the add-on lays its NLA strips (bridge/animate.py with
 // core/clip_timing.py) and blended as Blender's NLA blends them, so that both
-// play the same motion: strips overlap their neighbours by kBlendSeconds on
-// two alternating tracks, the upper one fading in and out.
+// play the same motion: over a base track that plays "idle" throughout,
+// strips overlap their neighbours by kBlendSeconds on two alternating tracks,
+// the upper one fading in and out; a walking strip's influence is also the
+// share of its amplitude (UpperBodyFollower::swing_at).
 #pragma once
 
 #include <map>
@@ -25,6 +27,7 @@ struct ClipLayer {
   const Clip* clip = nullptr;
   double time = 0;  ///< [s] in the clip's animation
   double influence = 1;
+  bool walk = false;  ///< a walking section's strip
 };
 
 class SectionTiming {
@@ -43,11 +46,12 @@ class SectionTiming {
     int track = 0;
     double blend_in = 0, blend_out = 0;  ///< [s]
     bool hold = false;                   ///< the last: holds its end after it
+    bool walk = false;                   ///< a walking section's
     double scale = 1;                    ///< scene seconds per clip second
     double offset = 0;                   ///< [s] into the clip's cycle at `start`
   };
   std::vector<Strip> strips_;
-  int tracks_ = 2;
+  int tracks_ = 3;  ///< the idle base, then two for the sections by turns
 };
 
 }  // namespace footfall::animate

@@ -4,25 +4,10 @@
 
 #include "footfall/model/footstep.hpp"
 #include "footfall/plan/motion_check.hpp"
+#include "plan/action_plan.hpp"
 
 namespace footfall {
 namespace {
-
-// An agent standing at the origin facing +x that takes `actions` in turn.
-AgentPlan plan_of(const std::vector<FootstepAction>& actions) {
-  const CharacterParams character;
-  AgentPlan plan;
-  plan.name = "a";
-  plan.start = standing_state({0.0, 0.0}, 0.0, character);
-  FootstepState state = plan.start;
-  for (const FootstepAction& action : actions) {
-    const StepResult r = create_footstep(state, action, character);
-    EXPECT_TRUE(r.valid()) << to_string(r.validity);
-    plan.footsteps.push_back(r.step);
-    state = r.state;
-  }
-  return plan;
-}
 
 TEST(MotionCheck, FindsAJumpAndAFootThatSlides) {
   // A first walk from standing, told as one step (no start before it): its

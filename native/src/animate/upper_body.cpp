@@ -1,0 +1,59 @@
+#include "footfall/animate/upper_body.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace footfall::animate {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double wrapped(double angle) { return std::remainder(angle, 2 * kPi); }
+
+}  // namespace
+
+double body_facing(const AgentPlan& plan, double t) {
+  const std::array<FootPose, 2> feet = feet_at(plan, t);
+  const double between = std::atan2(std::sin(feet[0].orientation) + std::sin(feet[1].orientation),
+                                    std::cos(feet[0].orientation) + std::cos(feet[1].orientation));
+  const auto later = std::upper_bound(plan.footsteps.begin(), plan.footsteps.end(), t,
+                                      [](double time, const Footstep& s) { return time < s.start_time; });
+  if (later == plan.footsteps.begin()) return between;
+  const Footstep& step = *(later - 1);
+  if (step.kind != StepKind::kSideStep) return between;
+  double across = std::atan2(step.com_end.y - step.com_start.y, step.com_end.x - step.com_start.x) + kPi / 2;
+  if (std::cos(across - between) < 0) across -= kPi;
+  return across;
+}
+
+UpperBodyFollower::UpperBodyFollower(const AgentPlan& plan, double full_speed) : plan_(plan) {
+  for (const Footstep& s : plan.footsteps) {
+    if (s.kind != StepKind::kWalk && s.kind != StepKind::kStart) continue;
+    const double duration = std::max(s.end_time - s.start_time, 1e-9);
+    const double speed = length(s.com_end - s.com_start) / duration;
+    swing_times_.push_back(0.5 * (s.start_time + s.end_time));
+    swings_.push_back(std::clamp(speed / std::max(full_speed, 1e-9), kLeastSwing, 1.0));
+  }
+}
+
+double UpperBodyFollower::swing_at(double t) const {
+  if (swings_.empty()) return 1.0;
+  const auto later = std::upper_bound(swing_times_.begin(), swing_times_.end(), t);
+  if (later == swing_times_.begin()) return swings_.front();
+  if (later == swing_times_.end()) return swings_.back();
+  const std::size_t k = static_cast<std::size_t>(later - swing_times_.begin());
+  const double u = (t - swing_times_[k - 1]) / (swing_times_[k] - swing_times_[k - 1]);
+  return swings_[k - 1] + u * (swings_[k] - swings_[k - 1]);
+}
+
+double UpperBodyFollower::look_at(double t) const {
+  const double end = plan_.end_time();
+  const double now = body_facing(plan_, std::min(t, end));
+  double sum = 0;
+  for (int k = 1; k <= kLookSamples; ++k)
+    sum += wrapped(body_facing(plan_, std::min(t + kLookAhead * k / kLookSamples, end)) - now);
+  return std::clamp(sum / kLookSamples, -kMostLook, kMostLook);
+}
+
+}  // namespace footfall::animate
