@@ -62,3 +62,13 @@ def test_a_clips_own_heel_strike_falls_on_the_right_heel_strikes(strike):
             cycle = clip_end - clip_start
             off = (frame - clip_start - strike * cycle + cycle / 2) % cycle - cycle / 2
             assert off == pytest.approx(0.0, abs=1e-9)
+
+
+def test_fades_as_blenders_nla_fades_a_strip():
+    from footfall.core.clip_timing import fade
+
+    frames = [10, 12, 14, 20, 26, 28, 30]
+    # A strip from frame 10 to 30 that blends in and out over 4 frames.
+    assert list(fade(frames, 10.0, 30.0, 4.0, 4.0)) == [0.0, 0.5, 1.0, 1.0, 1.0, 0.5, 0.0]
+    # Without blends it plays at full influence throughout.
+    assert list(fade(frames, 10.0, 30.0, 0.0, 0.0)) == [1.0] * 7
