@@ -2,7 +2,8 @@
 // 1000 x 1000 m scenes with 2,000 and 10,000 random boxes of 1-6 m, and a
 // room-scale scene. Build, path queries over the whole domain at radii
 // 0.25-3 m, the funnel alone, point obstacles inserted and removed, and boxes
-// moved. Run: build/bench/footfall_navmesh_bench
+// moved; and the hostile cases: one polygon of many vertices, and many
+// overlapping boxes. Run: build/bench/footfall_navmesh_bench
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -127,6 +128,64 @@ void BM_MoveBox(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_MoveBox)->Arg(2000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// A circle of radius 20 m as one polygon of `range(0)` vertices (a
+/// footprint read from a fine mesh), in a 100 m square: the mesh built.
+std::vector<Vec2> fine_circle(int vertices) {
+  std::vector<Vec2> circle;
+  for (int k = 0; k < vertices; ++k) circle.push_back(20.0 * unit(2 * kPi * k / vertices));
+  return circle;
+}
+
+void BM_BuildOnePolygon(benchmark::State& state) {
+  const std::vector<Vec2> circle = fine_circle(static_cast<int>(state.range(0)));
+  std::size_t triangles = 0;
+  for (auto _ : state) {
+    NavMesh mesh({-50, -50}, {50, 50});
+    mesh.add_polygon(circle);
+    triangles = mesh.triangle_count();
+    benchmark::DoNotOptimize(triangles);
+  }
+  state.counters["triangles"] = static_cast<double>(triangles);
+}
+BENCHMARK(BM_BuildOnePolygon)->Arg(1000)->Arg(4000)->Arg(16000)->Arg(64000)->Unit(benchmark::kMillisecond);
+
+/// A path past that circle for a disc of 0.3 m, from one side to the other.
+void BM_PathRoundOnePolygon(benchmark::State& state) {
+  NavMesh mesh({-50, -50}, {50, 50});
+  mesh.add_polygon(fine_circle(static_cast<int>(state.range(0))));
+  const PathQuery query{{-40, 0.5}, {40, -0.5}, 0.3, 0.01};
+  double length = 0;
+  for (auto _ : state) {
+    length = mesh.find_path(query).length;
+    benchmark::DoNotOptimize(length);
+  }
+  state.counters["length"] = length;
+}
+BENCHMARK(BM_PathRoundOnePolygon)->Arg(1000)->Arg(4000)->Arg(16000)->Arg(64000)->Unit(benchmark::kMillisecond);
+
+/// `range(0)` boxes of 5 m placed at random in a square of 40 m, most of
+/// them overlapping others (as one SteerSuite obstacleRegion makes them).
+void BM_BuildOverlappingBoxes(benchmark::State& state) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> at(-20.0, 15.0);
+  std::vector<std::vector<Vec2>> boxes;
+  for (int i = 0; i < state.range(0); ++i) {
+    const Vec2 low{at(rng), at(rng)};
+    boxes.push_back({low, low + Vec2{5, 0}, low + Vec2{5, 5}, low + Vec2{0, 5}});
+  }
+  std::size_t triangles = 0;
+  for (auto _ : state) {
+    NavMesh mesh({-30, -30}, {30, 30});
+    for (const auto& box : boxes) mesh.add_polygon(box);
+    triangles = mesh.triangle_count();
+    benchmark::DoNotOptimize(triangles);
+  }
+  state.counters["triangles"] = static_cast<double>(triangles);
+}
+BENCHMARK(BM_BuildOverlappingBoxes)->Arg(250)->Arg(500)->Arg(2000)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace footfall

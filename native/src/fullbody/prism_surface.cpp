@@ -1,61 +1,76 @@
 // Footfall — prism surfaces.
 #include "fullbody/prism_surface.hpp"
 
-#include <numeric>
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+
+#include <queue>
 
 namespace footfall::detail {
 namespace {
 
-double signed_area(const std::vector<Vec2>& polygon) {
-  double area = 0;
-  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
-    area += cross(polygon[j], polygon[i]);
-  return 0.5 * area;
-}
-
-bool inside_triangle(Vec2 p, Vec2 a, Vec2 b, Vec2 c) {
-  return cross(b - a, p - a) >= 0 && cross(c - b, p - b) >= 0 && cross(a - c, p - c) >= 0;
-}
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using FaceBase = CGAL::Constrained_triangulation_face_base_2<
+    Kernel, CGAL::Triangulation_face_base_with_info_2<int, Kernel>>;
+using Tds = CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_2<Kernel>, FaceBase>;
+using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
 
 }  // namespace
 
-std::vector<std::array<int, 3>> triangulate_polygon(const std::vector<Vec2>& polygon) {
-  std::vector<std::array<int, 3>> result;
-  std::vector<int> left(polygon.size());
-  std::iota(left.begin(), left.end(), 0);
-  if (signed_area(polygon) < 0) std::reverse(left.begin(), left.end());  // counter-clockwise
-  while (left.size() > 3) {
-    bool clipped = false;
-    for (std::size_t i = 0; i < left.size() && !clipped; ++i) {
-      const int a = left[(i + left.size() - 1) % left.size()], b = left[i],
-                c = left[(i + 1) % left.size()];
-      if (cross(polygon[b] - polygon[a], polygon[c] - polygon[b]) <= 0) continue;  // reflex
-      bool ear = true;
-      for (const int other : left) {
-        if (other == a || other == b || other == c) continue;
-        if (inside_triangle(polygon[other], polygon[a], polygon[b], polygon[c])) ear = false;
-        if (!ear) break;
-      }
-      if (!ear) continue;
-      result.push_back({a, b, c});
-      left.erase(left.begin() + static_cast<long>(i));
-      clipped = true;
-    }
-    if (!clipped) break;
+std::vector<std::array<Vec2, 3>> triangulate_polygon(const std::vector<Vec2>& polygon) {
+  Cdt cdt;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec2 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
+    if (!(a == b)) cdt.insert_constraint(Cdt::Point(a.x, a.y), Cdt::Point(b.x, b.y));
   }
-  for (std::size_t i = 1; i + 1 < left.size(); ++i) result.push_back({left[0], left[i], left[i + 1]});
+  // Each face's depth: how many outline edges lie between it and the outside.
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
+  std::queue<Cdt::Face_handle> now, deeper;
+  cdt.infinite_face()->info() = 0;
+  now.push(cdt.infinite_face());
+  for (int depth = 0; !now.empty(); ++depth) {
+    while (!now.empty()) {
+      const Cdt::Face_handle f = now.front();
+      now.pop();
+      for (int e = 0; e < 3; ++e) {
+        const Cdt::Face_handle next = f->neighbor(e);
+        if (next->info() >= 0) continue;
+        if (cdt.is_constrained({f, e})) {
+          deeper.push(next);
+        } else {
+          next->info() = depth;
+          now.push(next);
+        }
+      }
+    }
+    while (!deeper.empty()) {
+      const Cdt::Face_handle f = deeper.front();
+      deeper.pop();
+      if (f->info() >= 0) continue;
+      f->info() = depth + 1;
+      now.push(f);
+    }
+  }
+  std::vector<std::array<Vec2, 3>> result;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (f->info() % 2 == 0) continue;
+    std::array<Vec2, 3> corners;
+    for (int k = 0; k < 3; ++k) corners[k] = {f->vertex(k)->point().x(), f->vertex(k)->point().y()};
+    result.push_back(corners);
+  }
   return result;
 }
 
 std::vector<std::array<Vec3, 3>> prism_surface(const Obstacle& prism) {
   const std::vector<Vec2>& polygon = prism.polygon;
-  const auto at = [&](int i, double z) { return Vec3{polygon[i].x, polygon[i].y, z}; };
+  const auto at = [](Vec2 p, double z) { return Vec3{p.x, p.y, z}; };
   std::vector<std::array<Vec3, 3>> result;
-  const int n = static_cast<int>(polygon.size());
-  for (int i = 0; i < n; ++i) {
-    const int j = (i + 1) % n;
-    result.push_back({at(i, prism.base), at(j, prism.base), at(j, prism.height)});
-    result.push_back({at(i, prism.base), at(j, prism.height), at(i, prism.height)});
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 a = polygon[i], b = polygon[(i + 1) % n];
+    result.push_back({at(a, prism.base), at(b, prism.base), at(b, prism.height)});
+    result.push_back({at(a, prism.base), at(b, prism.height), at(a, prism.height)});
   }
   for (const auto& t : triangulate_polygon(polygon)) {
     result.push_back({at(t[0], prism.base), at(t[1], prism.base), at(t[2], prism.base)});

@@ -10,9 +10,12 @@
 #include <tuple>
 #include <utility>
 
+#include <CGAL/Polygon_2_algorithms.h>
+
 #include "navmesh/face_numbers.hpp"
 #include "navmesh/navmesh_impl.hpp"
 #include "navmesh/obstacle_distance.hpp"
+#include "navmesh/outline_simplify.hpp"
 
 namespace footfall {
 namespace {
@@ -377,6 +380,12 @@ int NavMesh::add_polygon(const std::vector<Vec2>& polygon, const std::string& na
   std::vector<Point> points;
   points.reserve(cleaned.size());
   for (Vec2 p : cleaned) points.push_back(to_point(p));
+  // A detailed outline (a footprint from a fine mesh) enters a little larger
+  // and with fewer vertices; one that crosses itself enters as it is.
+  if (points.size() > kSimplifyAbove && CGAL::is_simple_2(points.begin(), points.end(), Kernel())) {
+    points.clear();
+    for (Vec2 p : simplify_outward(cleaned, kOutlineTolerance)) points.push_back(to_point(p));
+  }
   NavMeshState::Obstacle obstacle;
   obstacle.constraint = insert_outline(m.cdt, m.hints, points);
   const std::vector<Vertex> touched = constraint_vertices(m.cdt, obstacle.constraint);
