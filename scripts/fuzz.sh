@@ -17,7 +17,7 @@ cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang
   -DFOOTFALL_BUILD_BENCHMARKS=OFF >/dev/null
 shift $(($# > 0 ? 1 : 0))
 targets=("$@")
-((${#targets[@]})) || targets=(fuzz_scenario_json fuzz_steersuite_xml fuzz_plan_json fuzz_rig_gltf)
+((${#targets[@]})) || targets=(fuzz_scenario_json fuzz_steersuite_xml fuzz_plan_json fuzz_rig_gltf fuzz_rig_profile)
 cmake --build "$build_dir" -j "$(nproc)" --target "${targets[@]}"
 
 status=0
