@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "footfall/crowd/scenario.hpp"
 #include "footfall/scenes/box_scenes.hpp"
 #include "navmesh/channel_funnel.hpp"
 #include "footfall/navmesh/navmesh.hpp"
@@ -166,26 +167,28 @@ void BM_PathRoundOnePolygon(benchmark::State& state) {
 }
 BENCHMARK(BM_PathRoundOnePolygon)->Arg(1000)->Arg(4000)->Arg(16000)->Arg(64000)->Unit(benchmark::kMillisecond);
 
-/// `range(0)` boxes of 5 m placed at random in a square of 40 m, most of
-/// them overlapping others (as one SteerSuite obstacleRegion makes them).
+/// A scenario's mesh (navmesh_of) of `range(0)` boxes of 5 m placed at
+/// random in a square of `range(1)` m, most overlapping others (as one
+/// SteerSuite obstacleRegion makes them).
 void BM_BuildOverlappingBoxes(benchmark::State& state) {
   std::mt19937 rng(11);
-  std::uniform_real_distribution<double> at(-20.0, 15.0);
-  std::vector<std::vector<Vec2>> boxes;
+  std::uniform_real_distribution<double> at(0.0, static_cast<double>(state.range(1)) - 5.0);
+  Scenario scenario;
   for (int i = 0; i < state.range(0); ++i) {
     const Vec2 low{at(rng), at(rng)};
-    boxes.push_back({low, low + Vec2{5, 0}, low + Vec2{5, 5}, low + Vec2{0, 5}});
+    scenario.obstacles.push_back({{low, low + Vec2{5, 0}, low + Vec2{5, 5}, low + Vec2{0, 5}}, 2.0, 0.0, {}});
   }
   std::size_t triangles = 0;
   for (auto _ : state) {
-    NavMesh mesh({-30, -30}, {30, 30});
-    for (const auto& box : boxes) mesh.add_polygon(box);
+    const NavMesh mesh = navmesh_of(scenario);
     triangles = mesh.triangle_count();
     benchmark::DoNotOptimize(triangles);
   }
   state.counters["triangles"] = static_cast<double>(triangles);
 }
-BENCHMARK(BM_BuildOverlappingBoxes)->Arg(250)->Arg(500)->Arg(2000)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BuildOverlappingBoxes)
+    ->ArgsProduct({{250, 500, 2000}, {11, 20, 40}})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace footfall

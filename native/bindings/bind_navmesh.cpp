@@ -40,6 +40,9 @@ void bind_navmesh(py::module_& m) {
       .def(py::init<Vec2, Vec2>(), py::arg("min_corner"), py::arg("max_corner"))
       .def("add_polygon", &NavMesh::add_polygon, py::arg("polygon"), py::arg("name") = "",
            "Adds a polygon obstacle [m]; returns its id.")
+      .def("add_region", &NavMesh::add_region, py::arg("outlines"), py::arg("holes"), py::arg("name") = "",
+           "Adds one obstacle covering the area inside its outlines and outside its holes (lists of "
+           "polygons [m]); returns its id.")
       .def("add_point", &NavMesh::add_point, py::arg("point"), py::arg("name") = "",
            "Adds a point obstacle [m]; returns its id.")
       .def("remove", &NavMesh::remove, py::arg("id"), "Removes an obstacle (IndexError if unknown).")

@@ -38,6 +38,18 @@ def test_navmesh_updates_and_queries(ff):
         mesh.add_polygon([(1, 1), (float("nan"), 1), (2, 2)], "box")
 
 
+def test_a_region_with_a_hole(ff):
+    mesh = ff.NavMesh((0, 0), (10, 10))
+    ring = mesh.add_region([[(2, 2), (8, 2), (8, 8), (2, 8)]], [[(3, 3), (7, 3), (7, 7), (3, 7)]], "ring")
+    assert mesh.clearance((5, 5)) == pytest.approx(2.0)  # in the hole, 2 m from the ring
+    assert mesh.clearance((2.5, 5)) == 0.0
+    assert mesh.find_path((5, 5), (9, 9), 0.3)["status"] == "no_path"
+    mesh.remove(ring)
+    assert mesh.find_path((5, 5), (9, 9), 0.3)["status"] == "found"
+    with pytest.raises(ValueError, match="ring vertex 1"):
+        mesh.add_region([[(1, 1), (float("nan"), 1), (2, 2)]], [], "ring")
+
+
 def test_triangles_for_drawing(ff):
     mesh = ff.NavMesh((0, 0), (10, 10))
     mesh.add_point((5, 5))

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "footfall/fullbody/step_body_test.hpp"
 #include "footfall/model/footstep.hpp"
 #include "footfall/planner/planner.hpp"
+#include "navmesh/outline_union.hpp"
 #include "util/field_path.hpp"
 #include "util/quoted.hpp"
 
@@ -165,11 +167,21 @@ NavMesh navmesh_of(const Scenario& scenario, double margin) {
   const auto inside = [](double v) { return std::clamp(v, -kMaxCoordinate, kMaxCoordinate); };
   NavMesh mesh({inside(lo.x - margin), inside(lo.y - margin)},
                {inside(hi.x + margin), inside(hi.y + margin)});
-  // Obstacle i gets id i; one wholly above the head (no footprint) blocks nothing.
+  // Obstacle i gets id i; one wholly above the head (no footprint) blocks
+  // nothing. Overlapping ones enter as their union, under the first one's id.
+  std::vector<int> merged_into(footprints.size(), -1);
+  std::map<int, Region> regions;
+  for (OverlapGroup& group : overlapping_groups(footprints)) {
+    for (int i : group.members) merged_into[i] = group.members.front();
+    regions[group.members.front()] = std::move(group.region);
+  }
   for (std::size_t i = 0; i < footprints.size(); ++i) {
     const std::string name = "obstacles[" + std::to_string(i) + "]";
-    if (footprints[i].empty())
+    const int first = merged_into[i];
+    if (footprints[i].empty() || (first >= 0 && first != static_cast<int>(i)))
       mesh.add_empty();
+    else if (first >= 0)
+      mesh.add_region(regions[first].outlines, regions[first].holes, name);
     else
       mesh.add_polygon(footprints[i], name);
   }

@@ -368,31 +368,60 @@ NavMesh::~NavMesh() = default;
 NavMesh::NavMesh(NavMesh&&) noexcept = default;
 NavMesh& NavMesh::operator=(NavMesh&&) noexcept = default;
 
-int NavMesh::add_polygon(const std::vector<Vec2>& polygon, const std::string& name) {
-  NavMeshState& m = *impl_;
-  std::vector<Vec2> cleaned =
-      clip_to_rectangle(clean_polygon(polygon, name), m.min_corner, m.max_corner);
-  if (cleaned.size() == 1) return add_point(cleaned.front(), name);
-  if (cleaned.empty()) return add_empty();  // wholly outside: blocks nothing, keeps its id
-  // Counter-clockwise, so that overlapping obstacles add up instead of
-  // cancelling (the non-zero rule per obstacle).
-  if (twice_signed_area(cleaned) < 0) std::reverse(cleaned.begin(), cleaned.end());
+Cdt::Constraint_id NavMeshState::add_ring(const std::vector<Point>& points) {
+  const Cdt::Constraint_id ring = insert_outline(cdt, hints, points);
+  const std::vector<Vertex> touched = constraint_vertices(cdt, ring);
+  for (Vertex v : touched) hints.keep(cdt, v);
+  forget_windings(touched);
+  shift_enclosed(ring, +1);
+  repair_windings(touched);
+  return ring;
+}
+
+namespace {
+
+/// A ring as the mesh takes it: checked, clipped to the domain, turned
+/// counter-clockwise (`ccw`) or clockwise. A detailed counter-clockwise
+/// outline (a footprint from a fine mesh) enters a little larger and with
+/// fewer vertices; one that crosses itself enters as it is.
+std::vector<Point> ring_points(const NavMeshState& m, const std::vector<Vec2>& ring, const std::string& name,
+                               bool ccw) {
+  std::vector<Vec2> cleaned = clip_to_rectangle(clean_polygon(ring, name), m.min_corner, m.max_corner);
+  if ((twice_signed_area(cleaned) < 0) == ccw) std::reverse(cleaned.begin(), cleaned.end());
   std::vector<Point> points;
   points.reserve(cleaned.size());
   for (Vec2 p : cleaned) points.push_back(to_point(p));
-  // A detailed outline (a footprint from a fine mesh) enters a little larger
-  // and with fewer vertices; one that crosses itself enters as it is.
-  if (points.size() > kSimplifyAbove && CGAL::is_simple_2(points.begin(), points.end(), Kernel())) {
+  if (ccw && points.size() > kSimplifyAbove && CGAL::is_simple_2(points.begin(), points.end(), Kernel())) {
     points.clear();
     for (Vec2 p : simplify_outward(cleaned, kOutlineTolerance)) points.push_back(to_point(p));
   }
+  return points;
+}
+
+}  // namespace
+
+int NavMesh::add_polygon(const std::vector<Vec2>& polygon, const std::string& name) {
+  NavMeshState& m = *impl_;
+  // Counter-clockwise, so that overlapping obstacles add up instead of
+  // cancelling (the non-zero rule per obstacle).
+  const std::vector<Point> points = ring_points(m, polygon, name, true);
+  if (points.size() == 1) return add_point(to_vec(points.front()), name);
+  if (points.empty()) return add_empty();  // wholly outside: blocks nothing, keeps its id
   NavMeshState::Obstacle obstacle;
-  obstacle.constraint = insert_outline(m.cdt, m.hints, points);
-  const std::vector<Vertex> touched = constraint_vertices(m.cdt, obstacle.constraint);
-  for (Vertex v : touched) m.hints.keep(m.cdt, v);
-  m.forget_windings(touched);
-  m.shift_enclosed(obstacle.constraint, +1);
-  m.repair_windings(touched);
+  obstacle.rings.push_back(m.add_ring(points));
+  m.obstacles.emplace(m.next_id, std::move(obstacle));
+  return m.next_id++;
+}
+
+int NavMesh::add_region(const std::vector<std::vector<Vec2>>& outlines, const std::vector<std::vector<Vec2>>& holes,
+                        const std::string& name) {
+  NavMeshState& m = *impl_;
+  NavMeshState::Obstacle obstacle;
+  for (const bool outer : {true, false})
+    for (const std::vector<Vec2>& ring : outer ? outlines : holes) {
+      const std::vector<Point> points = ring_points(m, ring, name, outer);
+      if (points.size() >= 3) obstacle.rings.push_back(m.add_ring(points));
+    }
   m.obstacles.emplace(m.next_id, std::move(obstacle));
   return m.next_id++;
 }
@@ -429,11 +458,13 @@ void NavMesh::remove(int id) {
   const NavMeshState::Obstacle obstacle = std::move(found->second);
   m.obstacles.erase(found);
   std::vector<Vertex> touched;
-  if (obstacle.constraint != nullptr) {
-    touched = constraint_vertices(m.cdt, obstacle.constraint);
-    m.shift_enclosed(obstacle.constraint, -1);
-    m.cdt.remove_constraint(obstacle.constraint);
-  } else if (obstacle.point != Vertex()) {
+  for (auto ring = obstacle.rings.rbegin(); ring != obstacle.rings.rend(); ++ring) {
+    const std::vector<Vertex> on_ring = constraint_vertices(m.cdt, *ring);
+    touched.insert(touched.end(), on_ring.begin(), on_ring.end());
+    m.shift_enclosed(*ring, -1);
+    m.cdt.remove_constraint(*ring);
+  }
+  if (obstacle.point != Vertex()) {
     obstacle.point->info().points -= 1;
     touched = {obstacle.point};
   }

@@ -15,8 +15,10 @@ namespace footfall {
 struct NavMeshState {
   /// One obstacle as the caller gave it.
   struct Obstacle {
-    Cdt::Constraint_id constraint = nullptr;  ///< Polygons, walls and segments.
-    Vertex point;                             ///< Point obstacles (null outside the domain).
+    /// Its closed outlines: a polygon's, a wall's or a segment's one; a
+    /// region's outer outlines and holes.
+    std::vector<Cdt::Constraint_id> rings;
+    Vertex point;  ///< Point obstacles (null outside the domain).
   };
 
   NavMeshState(Vec2 lo, Vec2 hi) : min_corner(lo), max_corner(hi), hints(lo, hi) {}
@@ -43,6 +45,9 @@ struct NavMeshState {
   /// Adds `sign` times the winding number of the closed `constraint` to the
   /// faces it encloses.
   void shift_enclosed(Cdt::Constraint_id constraint, int sign);
+  /// Inserts a closed outline (its vertices in order, the first not repeated)
+  /// and shifts the faces it encloses by its winding number.
+  Cdt::Constraint_id add_ring(const std::vector<Point>& points);
   /// Removes a vertex that no constraint and no point obstacle uses any more,
   /// giving the faces that fill its hole the winding number around it.
   void remove_if_orphan(Vertex v);

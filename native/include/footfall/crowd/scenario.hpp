@@ -33,7 +33,10 @@ Plan plan_scenario(const Scenario& scenario, const RunControl& control = {});
 
 /// The navigation mesh of a scenario. The domain is the bounding box of its
 /// obstacles, agent positions and goals, grown by `margin` on every side (up
-/// to kMaxCoordinate); obstacle i gets id i. [m] [margin > 0]
+/// /// to kMaxCoordinate); obstacle i gets id i. Obstacles whose footprints
+/// overlap (simple polygons whose areas share more than a boundary) enter as
+/// one region, their union, under the id of the first of them; the ids of
+/// the others block nothing. [m] [margin > 0]
 NavMesh navmesh_of(const Scenario& scenario, double margin = 5.0);
 
 }  // namespace footfall

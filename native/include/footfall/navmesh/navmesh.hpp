@@ -82,6 +82,13 @@ class NavMesh {
   /// std::invalid_argument naming `name` (or "polygon") and the vertex if a
   /// coordinate is NaN, infinite or beyond kMaxCoordinate.
   int add_polygon(const std::vector<Vec2>& polygon, const std::string& name = "");
+  /// Adds a region as one obstacle and returns its id: the area inside its
+  /// `outlines` (polygons as add_polygon takes them; a detailed one enters
+  /// simplified) and outside its `holes` (as they are; a hole is open to
+  /// whatever lies in it). Those of fewer than three distinct vertices in
+  /// the domain are left out. Throws like add_polygon.
+  int add_region(const std::vector<std::vector<Vec2>>& outlines, const std::vector<std::vector<Vec2>>& holes,
+                 const std::string& name = "");
   /// Adds a point obstacle and returns its id (outside the domain it blocks
   /// nothing). Throws like add_polygon.
   int add_point(Vec2 point, const std::string& name = "");
