@@ -130,8 +130,6 @@ void BM_MoveBox(benchmark::State& state) {
 }
 BENCHMARK(BM_MoveBox)->Arg(2000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
-constexpr double kPi = 3.14159265358979323846;
-
 /// A circle of radius 20 m as one polygon of `range(0)` vertices (a
 /// footprint read from a fine mesh), in a 100 m square: the mesh built.
 std::vector<Vec2> fine_circle(int vertices) {

@@ -113,12 +113,14 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
   const Vec3 lateral = cross(forward, {0, 0, 1});  // the feet pitch about it
   const FootRoller roller(plan, character.preferred_speed);
   const UpperBodyFollower follower(plan, character.preferred_speed);
-  // The chest and head turn about the world's up, seen from their rest frames.
-  const auto local_up = [&](int node) {
+  // A direction of the plan's world (Z up) as a node's rest frame sees it:
+  // the toes bend about the side axis, the chest and head turn about the up.
+  const auto at_rest = [&](int node, Vec3 direction) {
     const Quat rest = decompose(rig.rest_world[node]).rotation;
-    return rotate({rest.w, -rest.x, -rest.y, -rest.z}, Vec3{0, 1, 0});
+    return rotate({rest.w, -rest.x, -rest.y, -rest.z}, to_y_up(direction));
   };
-  const Vec3 chest_up = local_up(rig.chest), head_up = local_up(rig.head);
+  const std::array<Vec3, 2> toe_axes{at_rest(rig.legs[0].toe, lateral), at_rest(rig.legs[1].toe, lateral)};
+  const Vec3 chest_up = at_rest(rig.chest, {0, 0, 1}), head_up = at_rest(rig.head, {0, 0, 1});
   const SectionTiming timing(plan, rig.clips, times.empty() ? 0.0 : times.back(), fps);
   double body_yaw = 0, previous_yaw = 0;
   std::array<double, 2> foot_yaw{0, 0}, previous_foot{0, 0};
@@ -193,10 +195,8 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
       motion.frames[leg_slots[side][1]][f] = rotated_rest(rig.rest_trs[leg.shin], local_under(thigh_world, shin_world));
       motion.frames[leg_slots[side][2]][f] = rotated_rest(rig.rest_trs[leg.foot], local_under(shin_world, foot_world));
       // The toe bends back as the heel rises, staying flat on the ground.
-      const Quat toe_world = decompose(rig.rest_world[leg.toe]).rotation;
-      const Vec3 axis = rotate({toe_world.w, -toe_world.x, -toe_world.y, -toe_world.z}, to_y_up(lateral));
       Trs toe = rig.rest_trs[leg.toe];
-      toe.rotation = toe.rotation * axis_angle(axis, -std::min(rolls[side].pitch, 0.0));
+      toe.rotation = toe.rotation * axis_angle(toe_axes[side], -std::min(rolls[side].pitch, 0.0));
       motion.frames[leg_slots[side][3]][f] = toe;
     }
 

@@ -5,14 +5,6 @@
 
 namespace footfall::animate {
 
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-double wrapped(double angle) { return std::remainder(angle, 2 * kPi); }
-
-}  // namespace
-
 double body_facing(const AgentPlan& plan, double t) {
   const std::array<FootPose, 2> feet = feet_at(plan, t);
   const double between = std::atan2(std::sin(feet[0].orientation) + std::sin(feet[1].orientation),
@@ -52,7 +44,7 @@ double UpperBodyFollower::look_at(double t) const {
   const double now = body_facing(plan_, std::min(t, end));
   double sum = 0;
   for (int k = 1; k <= kLookSamples; ++k)
-    sum += wrapped(body_facing(plan_, std::min(t + kLookAhead * k / kLookSamples, end)) - now);
+    sum += wrap_angle(body_facing(plan_, std::min(t + kLookAhead * k / kLookSamples, end)) - now);
   return std::clamp(sum / kLookSamples, -kMostLook, kMostLook);
 }
 

@@ -12,8 +12,6 @@
 namespace footfall {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Inside or on the boundary of a polygon (crossing rule, boundary inclusive).
 bool holds(const std::vector<Vec2>& polygon, Vec2 p) {
   bool inside = false;
