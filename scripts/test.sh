@@ -23,7 +23,6 @@ BUILD_DIR=build-tsan scripts/build.sh -DFOOTFALL_TSAN=ON -DFOOTFALL_BUILD_PYTHON
   -DFOOTFALL_BUILD_BENCHMARKS=OFF
 setarch "$(uname -m)" -R ctest --test-dir build-tsan --output-on-failure -L native
 
-# Coverage-guided fuzzing of every reader, 20 s a target, replaying the seed
-# and regression corpus first (the navigation mesh's target has an open
-# finding: tests/fuzz/open-findings/README.md).
+# Coverage-guided fuzzing of every reader and of the navigation mesh's
+# updates, 20 s a target, replaying the seed and regression corpus first.
 scripts/fuzz.sh 20

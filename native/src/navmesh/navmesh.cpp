@@ -178,7 +178,7 @@ Cdt::Constraint_id insert_outline(Cdt& cdt, const LocateHints& hints,
     along.insert(along.end(), pass.begin(), std::prev(pass.end()));  // the next pass starts there
   }
   const Cdt::Constraint_id constraint = cdt.insert_polyline(along, true, hints.near(along.front()));
-  for (const auto& [edge, copy] : edges) cdt.remove_constraint(copy);
+  for (const auto& [edge, copy] : edges) cdt.remove_polyline(copy);
   return constraint;
 }
 
@@ -462,7 +462,7 @@ void NavMesh::remove(int id) {
     const std::vector<Vertex> on_ring = constraint_vertices(m.cdt, *ring);
     touched.insert(touched.end(), on_ring.begin(), on_ring.end());
     m.shift_enclosed(*ring, -1);
-    m.cdt.remove_constraint(*ring);
+    m.cdt.remove_polyline(*ring);
   }
   if (obstacle.point != Vertex()) {
     obstacle.point->info().points -= 1;

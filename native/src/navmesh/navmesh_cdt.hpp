@@ -1,7 +1,7 @@
 // Footfall — the navigation mesh's triangulation: CGAL's constrained Delaunay
-// triangulation (exact predicates) with the constraint hierarchy that gives
-// every obstacle an id, per-face winding numbers, and polylines inserted from
-// a located start.
+// triangulation (exact predicates, crossings rounded from exact ones) with the
+// constraint hierarchy that gives every obstacle an id, per-face winding
+// numbers, and polylines inserted from a located start and removed safely.
 #pragma once
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -23,6 +23,22 @@ namespace footfall {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_2;
 
+/// The triangulation's geometry: the kernel's, except where two constraints
+/// cross. The kernel's crossing point can be off by an ulp even where the
+/// exact one is a double (two grid-aligned box edges crossing at (4, 7.5)
+/// come out at y = 7.5000000000000009); an edge later drawn to the exact
+/// point then runs beside a vertex a hair away instead of through it, and
+/// the outlines no longer follow each other. So crossings are computed
+/// exactly and rounded: exact wherever a double can hold them.
+struct CdtTraits : Kernel {
+  struct Intersect_2 {
+    using Segment = Kernel::Segment_2;
+    boost::optional<boost::variant<Point, Segment>> operator()(const Segment& a,
+                                                               const Segment& b) const;
+  };
+  Intersect_2 intersect_2_object() const { return {}; }
+};
+
 /// Per face: the winding number of the domain (+1 inside) plus that of every
 /// obstacle (-1 inside each), so a face is walkable exactly when it is 1.
 struct FaceInfo {
@@ -35,13 +51,13 @@ struct VertexInfo {
   int points = 0;
 };
 
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, Kernel>;
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, CdtTraits>;
 using FaceBase =
-    CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel,
-                                              CGAL::Constrained_triangulation_face_base_2<Kernel>>;
+    CGAL::Triangulation_face_base_with_info_2<FaceInfo, CdtTraits,
+                                              CGAL::Constrained_triangulation_face_base_2<CdtTraits>>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 using CdtBase = CGAL::Constrained_triangulation_plus_2<
-    CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>>;
+    CGAL::Constrained_Delaunay_triangulation_2<CdtTraits, Tds, CGAL::Exact_predicates_tag>>;
 
 }  // namespace footfall
 
@@ -94,6 +110,25 @@ class Cdt : public CdtBase {
       insert_subconstraint(vertices[j], vertices[j + 1]);
     }
     return id;
+  }
+
+  /// Removes the constraint `id` as CdtBase::remove_constraint does, with two
+  /// pieces of its outline skipped: a vertex joined to itself (where another
+  /// constraint runs along this one, CGAL 5.5's hierarchy can list a vertex
+  /// twice in a row) and a piece no longer an edge (a retraced piece whose
+  /// first pass's removal flipped it away). CGAL's own removal assumes both
+  /// away and then works on an arbitrary edge.
+  void remove_polyline(Constraint_id id) {
+    const std::vector<Vertex_handle> vertices(vertices_in_constraint_begin(id),
+                                              vertices_in_constraint_end(id));
+    hierarchy.remove_constraint(id);
+    for (std::size_t j = 0; j + 1 < vertices.size(); ++j) {
+      const Vertex_handle a = vertices[j], b = vertices[j + 1];
+      Face_handle f;
+      int i;
+      if (a != b && !is_subconstraint(a, b) && Triangulation::is_edge(a, b, f, i))
+        Triangulation::remove_constrained_edge(f, i);
+    }
   }
 };
 

@@ -146,6 +146,27 @@ TEST(NavMesh, UpdatesBesideNearlyCollinearEdgesKeepFreeFacesFree) {
   EXPECT_EQ(path(mesh, {1, 1}, {7, 1}, 0.2).status, PathStatus::kFound);
 }
 
+// Two box edges crossing at (4, 7.5), a point a double holds: CGAL's kernel
+// put the crossing at y = 7.5000000000000009, the next box's corner at the
+// exact point beside it, and a later removal looked for an edge that was not
+// there (undefined behaviour: in a release build this test never ended).
+// Found by fuzz_navmesh_updates.
+TEST(NavMesh, ALaterCornerOnACrossingMeetsItExactly) {
+  NavMesh mesh({0, 0}, {8, 8});
+  const int tall = mesh.add_polygon(box({3, 6.5}, {4, 8}));
+  mesh.add_polygon(box({2.5, 7.5}, {4.5, 8.5}));                   // crosses it at y = 7.5
+  const int narrow = mesh.add_polygon(box({2.5, 7.5}, {4, 9.5}));  // a corner on the crossing
+  mesh.remove(tall);
+  mesh.add_polygon(box({3.5, 6.5}, {4.5, 8}));
+  mesh.remove(narrow);
+  NavMesh rebuilt({0, 0}, {8, 8});
+  rebuilt.add_polygon(box({2.5, 7.5}, {4.5, 8.5}));
+  rebuilt.add_polygon(box({3.5, 6.5}, {4.5, 8}));
+  for (double x = 0.25; x < 8; x += 0.5)
+    for (double y = 0.25; y < 8; y += 0.5)
+      ASSERT_NEAR(mesh.clearance({x, y}), rebuilt.clearance({x, y}), 1e-9) << x << ", " << y;
+}
+
 TEST(NavMesh, SelfIntersectingPolygonBlocksBothLobes) {
   NavMesh mesh({0, 0}, {10, 10});
   mesh.add_polygon({{2, 2}, {8, 8}, {8, 2}, {2, 8}});  // a bow tie
