@@ -1,4 +1,7 @@
 #include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
 #include <optional>
 
 #include "bindings.hpp"
@@ -21,10 +24,11 @@ struct CancelFlag {
   std::atomic<bool> flag{false};
 };
 
-// Runs plan_scenario without the GIL; the progress callback takes it back.
-// An exception raised by the callback cancels the run and is re-raised.
-Plan plan_with_callbacks(const Scenario& scenario, const py::object& progress, CancelFlag* cancel,
-                         int threads) {
+// Runs `run` (plan_scenario or replan_agents) without the GIL; the progress
+// callback takes it back. An exception raised by the callback cancels the
+// run and is re-raised.
+Plan plan_with_callbacks(const std::function<Plan(const RunControl&)>& run,
+                         const py::object& progress, CancelFlag* cancel, int threads) {
   CancelFlag own;
   CancelFlag& flag = cancel != nullptr ? *cancel : own;
   std::optional<py::error_already_set> error;
@@ -46,7 +50,7 @@ Plan plan_with_callbacks(const Scenario& scenario, const py::object& progress, C
   Plan plan;
   {
     py::gil_scoped_release release;
-    plan = plan_scenario(scenario, control);
+    plan = run(control);
   }
   if (error) throw *error;
   return plan;
@@ -85,11 +89,31 @@ void bind_scenario(py::module_& m) {
       .def_readonly("agents", &Plan::agents)
       .def_readonly("character", &Plan::character)
       .def_readonly("status", &Plan::status);
-  m.def("plan_scenario", &plan_with_callbacks, py::arg("scenario"),
-        py::arg("progress") = py::none(), py::arg("cancel") = nullptr, py::arg("threads") = 1,
-        "Plans every agent together, without holding the GIL, on `threads` threads (1-64; the "
-        "plan is the same for any number). progress(fraction) is called at most a few times a "
-        "second; a set CancelFlag stops the run (status CANCELLED).");
+  m.def(
+      "plan_scenario",
+      [](const Scenario& scenario, const py::object& progress, CancelFlag* cancel, int threads) {
+        return plan_with_callbacks([&](const RunControl& c) { return plan_scenario(scenario, c); },
+                                   progress, cancel, threads);
+      },
+      py::arg("scenario"), py::arg("progress") = py::none(), py::arg("cancel") = nullptr,
+      py::arg("threads") = 1,
+      "Plans every agent together, without holding the GIL, on `threads` threads (1-64; the "
+      "plan is the same for any number). progress(fraction) is called at most a few times a "
+      "second; a set CancelFlag stops the run (status CANCELLED).");
+  m.def(
+      "replan_agents",
+      [](const Scenario& scenario, const Plan& fixed, const std::vector<std::string>& names,
+         const py::object& progress, CancelFlag* cancel, int threads) {
+        return plan_with_callbacks(
+            [&](const RunControl& c) { return replan_agents(scenario, fixed, names, c); }, progress,
+            cancel, threads);
+      },
+      py::arg("scenario"), py::arg("fixed"), py::arg("names"), py::arg("progress") = py::none(),
+      py::arg("cancel") = nullptr, py::arg("threads") = 1,
+      "Plans the agents named again among the others, which keep their plans in `fixed` (by "
+      "name); the plan lists every agent of the scenario. ValueError 'agents: ...' or 'fixed: "
+      "...' for no names, an unknown name, or an agent neither named nor in `fixed`. Otherwise "
+      "as plan_scenario.");
   m.def("plan_to_json", &plan_to_json, py::arg("plan"));
 
   py::class_<AgentMetrics>(m, "AgentMetrics", "One agent's figures (see metrics.hpp).")

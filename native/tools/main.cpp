@@ -15,6 +15,7 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "animate_command.hpp"
@@ -44,6 +45,9 @@ const char* const kUsage =
     "                                         plan every agent of a scenario (JSON, or SteerSuite\n"
     "                                         .xml) on N threads (default 1; same plan either way);\n"
     "                                         with --glb, also the crowd animated as in animate\n"
+    "       footfall plan SCENARIO --fixed PLAN --agents NAME,NAME -o OUT [--threads N] ...\n"
+    "                                         plan the named agents again among the others, which\n"
+    "                                         keep their plans in PLAN; OUT has every agent\n"
     "       footfall demo [-o PLAN] [--threads N] [--glb CROWD --rig RIG]\n"
     "                                         the built-in demo (default out/demo-plan.json)\n"
     "       footfall animate PLAN --rig RIG -o CROWD [--profile PROFILE] [--fps N]\n"
@@ -128,15 +132,34 @@ void print_metrics(const footfall::PlanMetrics& metrics, const footfall::BodyChe
       << ", composite02 " << metrics.composite02 << "\n";
 }
 
-// The options after the verb: "-o PATH", "--threads N", and the crowd's
-// "--glb PATH", "--rig RIG", "--profile PROFILE", "--fps N".
+// The options after the verb: "-o PATH", "--threads N", plan's "--fixed
+// PLAN" and "--agents NAME,NAME", and the crowd's "--glb PATH", "--rig RIG",
+// "--profile PROFILE", "--fps N".
 struct Options {
   std::string output;
   int threads = 1;
+  std::string fixed;
+  std::vector<std::string> agents;
   std::string glb;
   footfall::tools::AnimateArguments animate;
   bool animate_given = false;  ///< any of --rig, --profile, --fps
 };
+
+// The named agents planned again among the fixed plans of the others; the
+// core's "fixed" and "agents" fields are named as the flags and file.
+footfall::Plan replan(const footfall::Scenario& scenario, const Options& options,
+                      const footfall::RunControl& control) {
+  const footfall::Plan fixed = footfall::load_plan(options.fixed);
+  try {
+    return footfall::replan_agents(scenario, fixed, options.agents, control);
+  } catch (const std::invalid_argument& error) {
+    const std::string what = error.what();
+    for (const auto& [field, shown] : {std::pair<std::string, std::string>{"fixed: ", options.fixed + ": "},
+                                       {"agents: ", "--agents: "}})
+      if (what.rfind(field, 0) == 0) throw std::invalid_argument(shown + what.substr(field.size()));
+    throw;
+  }
+}
 
 // Plans (showing progress when standard error is a terminal), writes the plan
 // atomically (creating the folder), prints the table; with --glb, writes the
@@ -156,7 +179,8 @@ int plan_and_write(const footfall::Scenario& scenario, const Options& options) {
   double search_seconds = 0.0;
   control.search_seconds = &search_seconds;
   const auto begin = std::chrono::steady_clock::now();
-  const footfall::Plan plan = footfall::plan_scenario(scenario, control);
+  const footfall::Plan plan = options.fixed.empty() ? footfall::plan_scenario(scenario, control)
+                                                    : replan(scenario, options, control);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   if (terminal) std::cerr << "\r             \r" << std::flush;
@@ -206,6 +230,18 @@ double parse_number(const std::string& flag, const std::string& text) {
   return value;
 }
 
+// Names separated by commas, none empty, or a usage error naming the flag.
+std::vector<std::string> parse_names(const std::string& flag, const std::string& text) {
+  std::vector<std::string> names;
+  std::size_t from = 0;
+  for (std::size_t comma = text.find(','); ; comma = text.find(',', from)) {
+    names.push_back(text.substr(from, comma == std::string::npos ? comma : comma - from));
+    if (names.back().empty()) throw UsageError(flag + ": an empty name in " + user_text(text));
+    if (comma == std::string::npos) return names;
+    from = comma + 1;
+  }
+}
+
 // Reads the options after the verb; returns the positional arguments.
 std::vector<std::string> parse_arguments(int argc, char** argv, Options& options) {
   std::vector<std::string> positional;
@@ -217,6 +253,12 @@ std::vector<std::string> parse_arguments(int argc, char** argv, Options& options
     } else if (arg == "--threads") {
       if (i + 1 >= argc) throw UsageError("--threads needs a number");
       options.threads = parse_whole(arg, argv[++i], 1, 64);
+    } else if (arg == "--fixed") {
+      if (i + 1 >= argc) throw UsageError("--fixed needs a plan file");
+      options.fixed = argv[++i];
+    } else if (arg == "--agents") {
+      if (i + 1 >= argc) throw UsageError("--agents needs agent names, separated by commas");
+      options.agents = parse_names(arg, argv[++i]);
     } else if (arg == "--glb" || arg == "--rig" || arg == "--profile") {
       if (i + 1 >= argc) throw UsageError(arg + " needs a file name");
       std::string& value = arg == "--glb" ? options.glb : arg == "--rig" ? options.animate.rig : options.animate.profile;
@@ -307,12 +349,16 @@ int run(int argc, char** argv) {
     if (positional.size() != 1) throw UsageError("plan takes one scenario file");
     if (options.output.empty()) throw UsageError("plan needs -o PLAN");
     check_crowd_options(options, "plan");
+    if (options.fixed.empty() != options.agents.empty())
+      throw UsageError("plan: --fixed PLAN and --agents NAME,NAME go together");
     return plan_and_write(footfall::load_scenario_file(positional[0]), options);
   }
   if (verb == "demo") {
     Options options;
     options.output = "out/demo-plan.json";
     if (!parse_arguments(argc, argv, options).empty()) throw UsageError("demo takes no file");
+    if (!options.fixed.empty() || !options.agents.empty())
+      throw UsageError("demo: --fixed and --agents are plan's");
     check_crowd_options(options, "demo");
     return plan_and_write(footfall::demo_scenario(), options);
   }
@@ -320,7 +366,7 @@ int run(int argc, char** argv) {
     Options options;
     const auto positional = parse_arguments(argc, argv, options);
     if (positional.size() != 1 || !options.output.empty() || !options.glb.empty() ||
-        options.animate_given)
+        options.animate_given || !options.fixed.empty() || !options.agents.empty())
       throw UsageError("metrics takes one plan file");
     const footfall::Plan plan = footfall::load_plan(positional[0]);
     print_metrics(footfall::measure_plan(plan), footfall::check_body(plan), std::cout);
@@ -333,6 +379,8 @@ int run(int argc, char** argv) {
     if (options.output.empty() || options.animate.rig.empty())
       throw UsageError("animate needs --rig RIG and -o CROWD");
     if (!options.glb.empty()) throw UsageError("animate writes -o CROWD; --glb is plan's");
+    if (!options.fixed.empty() || !options.agents.empty())
+      throw UsageError("animate: --fixed and --agents are plan's");
     footfall::tools::animate_and_write(footfall::load_plan(positional[0]), options.animate,
                                        options.output, std::cout);
     return 0;

@@ -93,6 +93,9 @@ def test_usage_errors_exit_2(cli):
      "--to: must be within 1e9 m of the origin, got '1e10,0'"),
     (["path", "s.json", "--from", "0,0", "--to", "1,0", "--radius", "-1"], "--radius: must be >= 0, got '-1'"),
     (["pl\x1b[31man\nfootfall: ok"], "unknown command 'pl\\x1b[31man\\nfootfall: ok'"),
+    (["plan", "s.json", "-o", "p.json", "--fixed", "f.json"], "plan: --fixed PLAN and --agents NAME,NAME go together"),
+    (["plan", "s.json", "-o", "p.json", "--fixed", "f.json", "--agents", "ann,,bo"], "--agents: an empty name in 'ann,,bo'"),
+    (["metrics", "p.json", "--agents", "ann"], "metrics takes one plan file"),
 ])
 def test_a_usage_error_is_one_line_that_names_the_flag_and_value(cli, tmp_path, args, message):
     result = run(cli, *args, cwd=tmp_path)
@@ -163,3 +166,39 @@ def test_metrics_of_the_demo(cli, tmp_path):
     assert "composite01" in result.stdout and "walker" in result.stdout
     missing = run(cli, "metrics", str(tmp_path / "none.json"))
     assert missing.returncode == 2 and "cannot open the file" in missing.stderr
+
+
+def test_plan_again_the_named_agents_among_the_fixed_plans_of_the_others(cli, tmp_path):
+    """`plan --fixed PLAN --agents NAMES`: the others' plans are copied as they
+    are, the named agents are planned again, and errors name the file or flag."""
+    walkers = [{"name": "ann", "position": [0, 0], "goals": [[8, 0]]},
+               {"name": "bo", "position": [4, -4], "goals": [[4, 4]]},
+               {"name": "cy", "position": [0, 3], "goals": [[8, 3]]}]
+    scenario = tmp_path / "three.json"
+    scenario.write_text(scenario_json(agents=walkers))
+    first = tmp_path / "first.json"
+    assert run(cli, "plan", str(scenario), "-o", str(first)).returncode == 0
+    walkers[0]["goals"] = [[8, 1]]  # ann's goal moved: only she is planned again
+    scenario.write_text(scenario_json(agents=walkers))
+    again = tmp_path / "again.json"
+    result = run(cli, "plan", str(scenario), "--fixed", str(first), "--agents", "ann", "-o", str(again))
+    assert result.returncode == 0, result.stderr
+    before, after = json.loads(first.read_text())["agents"], json.loads(again.read_text())["agents"]
+    assert [a["name"] for a in after] == ["ann", "bo", "cy"]
+    assert after[1:] == before[1:]
+    assert after[0]["status"] == "reached"
+    assert after[0]["footsteps"][-1]["com_end"][1] == pytest.approx(1, abs=0.25)  # it was at 0
+    assert "five-circle overlaps: 0" in run(cli, "metrics", str(again)).stdout
+
+    missing = run(cli, "plan", str(scenario), "--fixed", str(again), "--agents", "dee", "-o", str(tmp_path / "x.json"))
+    assert missing.returncode == 2
+    assert missing.stderr.splitlines() == ["footfall: --agents: 'dee' is not an agent of the scenario"]
+    only_ann = tmp_path / "ann.json"
+    plan = json.loads(again.read_text())
+    plan["agents"] = plan["agents"][:1]
+    only_ann.write_text(json.dumps(plan))
+    unplanned = run(cli, "plan", str(scenario), "--fixed", str(only_ann), "--agents", "ann", "-o", str(tmp_path / "x.json"))
+    assert unplanned.returncode == 2
+    assert unplanned.stderr.splitlines() == [
+        f"footfall: {only_ann}: has no plan for agent 'bo', which is not among the agents to plan"]
+    assert not (tmp_path / "x.json").exists()

@@ -131,6 +131,23 @@ def test_threads_do_not_change_the_plan(ff):
         ff.plan_scenario(scenario, threads=0)
 
 
+def test_replan_agents_keeps_the_others_plans(ff):
+    scenario = ff.demo_scenario()
+    scenario.agents = [ff.AgentSpec(f"a{i}", (0.0, -3.0 + 2.0 * i), 0.0, [(11.0, 3.0 - 2.0 * i)])
+                       for i in range(3)]
+    first = ff.plan_scenario(scenario)
+    scenario.agents[1].goals = [(11.0, 0.0)]
+    again = ff.replan_agents(scenario, first, ["a1"], threads=2)
+    assert [a.name for a in again.agents] == ["a0", "a1", "a2"]
+    assert again.agents[1].status == ff.AgentStatus.REACHED
+    assert ff.measure_plan(again).overlaps == 0
+    for i in (0, 2):  # kept as they were
+        assert again.agents[i].footsteps[-1].end_time == first.agents[i].footsteps[-1].end_time
+        assert len(again.agents[i].footsteps) == len(first.agents[i].footsteps)
+    with pytest.raises(ValueError, match="agents: 'a9' is not an agent of the scenario"):
+        ff.replan_agents(scenario, first, ["a9"])
+
+
 def test_progress_and_cancel(ff):
     scenario = ff.demo_scenario()
     scenario.agents = [ff.AgentSpec(f"a{i}", (0.0, -4.5 + 1.5 * i), 0.0, [(11.0, 0.3)])

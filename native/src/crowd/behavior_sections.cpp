@@ -10,11 +10,17 @@
 namespace footfall::detail {
 
 void plan_sections(const Scenario& scenario, const CollisionScene& scene,
-                   const CharacterPlanners& planners, std::vector<AgentSpec>& agents) {
+                   const CharacterPlanners& planners, std::vector<AgentSpec>& agents,
+                   const std::vector<const AgentPlan*>& fixed) {
   // A planner per body. It puts point obstacles into its mesh while it
   // works: a mesh of its own, not the one the agents share.
   std::map<const BodyModel*, std::pair<NavMesh, std::unique_ptr<BehavioralPlanner>>> by_body;
-  for (AgentSpec& agent : agents) {
+  for (std::size_t i = 0; i < agents.size(); ++i) {
+    AgentSpec& agent = agents[i];
+    if (!fixed.empty() && fixed[i] != nullptr) {
+      agent.sections = fixed[i]->sections;
+      continue;
+    }
     const BodyModel& body = planners.body(agent);
     auto found = by_body.find(&body);
     if (found == by_body.end()) {

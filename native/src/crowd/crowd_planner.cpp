@@ -468,6 +468,21 @@ bool nothing_new(const std::vector<Walker>& walkers, std::size_t i, const Snapsh
   return true;
 }
 
+/// Walker `w` keeps `plan` whole (plan_agents' `fixed`): done from the
+/// start, standing where the plan ends once it has walked it.
+void hold_fixed(Walker& w, const AgentPlan& plan) {
+  const std::shared_ptr<const CharacterParams> character = w.plan.character;
+  w.plan = plan;
+  w.plan.character = character;  // the run's, as for every walker
+  FootstepState end = w.plan.start;
+  for (const Footstep& step : w.plan.footsteps) end = state_after(end, step);
+  w.state = w.rested = end;
+  w.bounds = std::make_shared<const PlanBounds>(w.plan, w.planner->character());
+  w.goal = w.spec->goals.size();
+  w.improved_at = end.time;  // moving until then, as one that arrived then
+  w.done = true;
+}
+
 /// How far the walker is: its goals reached, and the way to the current one.
 double progress_of(const Walker& w) {
   if (w.done) return 1.0;
@@ -508,10 +523,14 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
 
 std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
                                    const std::vector<const FootstepPlanner*>& planners,
-                                   const NavMesh* mesh, const RunControl& control) {
+                                   const NavMesh* mesh, const RunControl& control,
+                                   const std::vector<const AgentPlan*>& fixed) {
   if (planners.size() != agents.size() ||
       std::find(planners.begin(), planners.end(), nullptr) != planners.end())
     throw std::invalid_argument("plan_agents: give one planner per agent");
+  if (!fixed.empty() && fixed.size() != agents.size())
+    throw std::invalid_argument("plan_agents: give no fixed plans or one (or null) per agent");
+  const auto is_fixed = [&](std::size_t i) { return !fixed.empty() && fixed[i] != nullptr; };
   for (const AgentSpec& agent : agents) check_agent(agent);
   if (control.threads < 1 || control.threads > 64)
     throw std::invalid_argument("threads must be between 1 and 64");
@@ -535,6 +554,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     w.bounds = std::make_shared<const PlanBounds>(w.plan, w.planner->character());
     w.start_at = agents[i].start_delay;
     w.deadline = w.start_at + time_limit_of(agents[i], w.planner->character(), params);
+    if (is_fixed(i)) hold_fixed(w, *fixed[i]);
   }
   std::vector<PlanWalk> walks;
   for (const Walker& w : walkers) walks.emplace_back(w.plan);
@@ -694,7 +714,12 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
   }
   if (control.progress && !control.cancelled()) control.progress(1.0);
   std::vector<AgentPlan> plans;
-  for (Walker& w : walkers) {
+  for (std::size_t i = 0; i < walkers.size(); ++i) {
+    if (is_fixed(i)) {
+      plans.push_back(*fixed[i]);
+      continue;
+    }
+    Walker& w = walkers[i];
     w.plan.stuck_at = w.resting > 0 ? w.rested.com : w.state.com;
     choose_foot_orientations(w.plan.footsteps, w.plan.start.foot_orientation,
                              w.planner->character());

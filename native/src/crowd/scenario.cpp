@@ -128,7 +128,12 @@ void validate(const Scenario& scenario) {
   check_standing_apart(scenario, planners);
 }
 
-Plan plan_scenario(const Scenario& scenario, const RunControl& control) {
+namespace {
+
+/// plan_scenario, with the agents that `fixed` (empty, or one per agent)
+/// gives a plan keeping it.
+Plan plan_among(const Scenario& scenario, const RunControl& control,
+                const std::vector<const AgentPlan*>& fixed) {
   validate(scenario);
   const CollisionScene scene(scenario.obstacles);
   const detail::CharacterPlanners planners(scenario, &scene);
@@ -137,12 +142,45 @@ Plan plan_scenario(const Scenario& scenario, const RunControl& control) {
   plan.character = scenario.character;
   plan.obstacles = scenario.obstacles;
   std::vector<AgentSpec> agents = scenario.agents;
-  detail::plan_sections(scenario, scene, planners, agents);
+  detail::plan_sections(scenario, scene, planners, agents, fixed);
   std::vector<const FootstepPlanner*> each;
   for (const AgentSpec& agent : agents) each.push_back(&planners.planner(agent));
-  plan.agents = plan_agents(agents, each, &mesh, control);
+  plan.agents = plan_agents(agents, each, &mesh, control, fixed);
   if (control.cancelled()) plan.status = Status::kCancelled;
   return plan;
+}
+
+}  // namespace
+
+Plan plan_scenario(const Scenario& scenario, const RunControl& control) {
+  return plan_among(scenario, control, {});
+}
+
+Plan replan_agents(const Scenario& scenario, const Plan& fixed,
+                   const std::vector<std::string>& names, const RunControl& control) {
+  if (names.empty()) throw std::invalid_argument("agents: name at least one agent to plan");
+  std::set<std::string> chosen;
+  for (const std::string& name : names) {
+    const bool known = std::any_of(scenario.agents.begin(), scenario.agents.end(),
+                                   [&](const AgentSpec& agent) { return agent.name == name; });
+    if (!known) fail("agents", user_text(name) + " is not an agent of the scenario");
+    chosen.insert(name);
+  }
+  std::map<std::string, const AgentPlan*> planned;
+  for (const AgentPlan& agent : fixed.agents) planned.emplace(agent.name, &agent);
+  std::vector<const AgentPlan*> each;
+  for (const AgentSpec& agent : scenario.agents) {
+    if (chosen.count(agent.name) > 0) {
+      each.push_back(nullptr);
+      continue;
+    }
+    const auto found = planned.find(agent.name);
+    if (found == planned.end())
+      fail("fixed", "has no plan for agent " + user_text(agent.name) +
+                        ", which is not among the agents to plan");
+    each.push_back(found->second);
+  }
+  return plan_among(scenario, control, each);
 }
 
 NavMesh navmesh_of(const Scenario& scenario, double margin) {

@@ -91,10 +91,15 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
 /// The same with a planner per agent: agent i searches with planners[i],
 /// made for its own character (plan_scenario makes one per character), and
 /// every check of one agent's body against another's takes each one's own.
-/// The planners' PlannerParams are the first one's.
+/// The planners' PlannerParams are the first one's. Where `fixed` (empty, or
+/// one per agent) gives agent i a plan, the agent keeps that plan as it is:
+/// the others plan among it as among an agent that has finished planning
+/// (it walks its plan, asked to make room by none), and its plan comes back
+/// unchanged.
 std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
                                    const std::vector<const FootstepPlanner*>& planners,
-                                   const NavMesh* mesh = nullptr, const RunControl& control = {});
+                                   const NavMesh* mesh = nullptr, const RunControl& control = {},
+                                   const std::vector<const AgentPlan*>& fixed = {});
 
 /// One agent's walk alone (plan_agents with no one else).
 AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,

@@ -31,6 +31,15 @@ void validate(const Scenario& scenario);
 /// whatever the number of threads.
 Plan plan_scenario(const Scenario& scenario, const RunControl& control = {});
 
+/// Plans the agents of `scenario` named in `names` again, among the others,
+/// which keep their plans in `fixed` (found by name) as they are: plan_agents
+/// with those plans fixed. The plan lists every agent of the scenario, in
+/// its order. Throws std::invalid_argument ("agents: ..." or "fixed: ...")
+/// for no names, a name that is no agent of the scenario, or an agent
+/// neither named nor planned in `fixed`.
+Plan replan_agents(const Scenario& scenario, const Plan& fixed,
+                   const std::vector<std::string>& names, const RunControl& control = {});
+
 /// The navigation mesh of a scenario. The domain is the bounding box of its
 /// obstacles, agent positions and goals, grown by `margin` on every side (up
 /// /// to kMaxCoordinate); obstacle i gets id i. Obstacles whose footprints
