@@ -338,6 +338,66 @@ def test_applying_again_replaces_the_crowd():
     check(not [o for o in bpy.data.objects if "(replaced)" in o.name], "replaced agents were left")
 
 
+def select_only(*objects):
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(obj in objects)
+
+
+def test_replanning_the_selected_agents_updates_only_their_rigs():
+    """plan(selected_only=True) plans the selected agents again among the
+    others' stored plans, which stay as they were; the next apply() makes
+    their rigs again and keeps the others'. With none selected, or an agent
+    the stored plan lacks left out, it refuses and changes nothing."""
+    from footfall.bridge import animate, plan_store, scene_build
+
+    fresh_scene_with_rig()
+    scene = bpy.context.scene
+    scene_build.build(scene, {"format": "footfall-scenario", "version": 1, "agents": [
+        {"name": "ann", "position": [0, 0], "goals": [[8, 0]]},
+        {"name": "bob", "position": [4, -4], "goals": [[4, 4]]},
+        {"name": "cy", "position": [0, 3], "goals": [[8, 3]]}]}, "three")
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+    check(bpy.ops.footfall.apply() == {"FINISHED"}, "apply failed")
+    before = {a["name"]: a for a in json.loads(plan_store.load())["agents"]}
+    crowd = bpy.data.collections[animate.CROWD_COLLECTION]
+    rigs = {o.name: o.as_pointer() for o in crowd.objects if o.type == "ARMATURE"}
+
+    bpy.data.objects["ann goal 1"].matrix_world = mathutils.Matrix.Translation((8, 1, 0))
+    select_only(bpy.data.objects["ann goal 1"])  # her goal stands for her
+    check(bpy.ops.footfall.plan(selected_only=True) == {"FINISHED"}, "plan of the selected failed")
+    after = {a["name"]: a for a in json.loads(plan_store.load())["agents"]}
+    check(after["bob"] == before["bob"] and after["cy"] == before["cy"], "the others' plans changed")
+    ann_end = after["ann"]["footsteps"][-1]["com_end"]
+    check(abs(ann_end[1] - 1) < 0.25 and abs(before["ann"]["footsteps"][-1]["com_end"][1]) < 0.25,
+          f"ann was not planned to her new goal: she ends at {ann_end}")
+    check(plan_store.pending(scene) == ["ann"], f"pending: {plan_store.pending(scene)}")
+
+    check(bpy.ops.footfall.apply() == {"FINISHED"}, "apply failed")
+    now = {o.name: o.as_pointer() for o in crowd.objects if o.type == "ARMATURE"}
+    check(sorted(now) == ["ann", "bob", "cy"], f"armatures: {sorted(now)}")
+    check(now["bob"] == rigs["bob"] and now["cy"] == rigs["cy"], "the others' rigs were made again")
+    check(now["ann"] != rigs["ann"], "ann's rig was not made again")
+    check(not [o for o in bpy.data.objects if "(replaced)" in o.name], "replaced objects were left")
+    check(len([a for a in bpy.data.actions if a.name.endswith("locomotion")]) == 3, "locomotion actions")
+    scene.frame_set(scene.frame_end)
+    hips = evaluated("ann").matrix_world @ evaluated("ann").pose.bones[imported_rig()[1].bones["hips"]].head
+    check(math.dist(hips.xy, ann_end) < 0.15, f"ann's hips end at {tuple(hips.xy)}, her plan at {ann_end}")
+    check(plan_store.pending(scene) == [], f"pending after apply: {plan_store.pending(scene)}")
+
+    stored = plan_store.load()
+    select_only()
+    expect_error(bpy.ops.footfall.plan, "No agents selected", selected_only=True)
+    new = bpy.data.objects.new("dee", None)
+    new.location = (0, -3, 0)
+    bpy.data.collections["Footfall Agents"].objects.link(new)
+    goal = bpy.data.objects.new("dee goal", None)
+    goal.parent, goal.location = new, (0, -2, 0)
+    bpy.data.collections["Footfall Agents"].objects.link(goal)
+    select_only(bpy.data.objects["ann (agent)"])
+    expect_error(bpy.ops.footfall.plan, "the stored plan has no plan for agent 'dee'", selected_only=True)
+    check(plan_store.load() == stored and plan_store.pending(scene) == [], "a refused plan changed the stored one")
+
+
 def expect_valid_gltf(path):
     """The Khronos glTF validator finds no error in the file."""
     import subprocess
@@ -821,7 +881,8 @@ def test_a_leaving_agent_walks_off_and_disappears():
 run([test_feet_and_pelvis_follow_the_plan, test_on_the_demo_no_stance_foot_moves, test_feet_roll_from_heel_to_toe, test_arms_swing_opposite_to_the_legs,
      test_arms_swing_as_far_as_the_steps_are_fast, test_the_head_and_chest_look_into_a_turn, test_behaviours_play_their_clips,
      test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was,
-     test_applying_again_replaces_the_crowd, test_a_crowd_with_short_waits_applies,
+     test_applying_again_replaces_the_crowd, test_replanning_the_selected_agents_updates_only_their_rigs,
+     test_a_crowd_with_short_waits_applies,
      test_a_sheared_pose_is_refused_by_name, test_a_leaving_agent_walks_off_and_disappears,
      test_rigs_with_object_and_parent_transforms_walk_upright_on_the_plan, test_rigs_of_other_origins_walk_on_the_plan,
      test_instances_and_animations_carry_the_agents_names])

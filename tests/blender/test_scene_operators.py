@@ -425,7 +425,8 @@ def test_failing_operators_report_and_cancel():
                                       "agents": [{"name": "dan", "position": [1], "goals": [[3, 3]]}]})
     failures = (
         (scene_operators.FOOTFALL_OT_load_scenario, {"filepath": bad}, "bad-position.json: agents[0].position"),
-        (scene_operators.FOOTFALL_OT_plan, {}, "No agents to plan"),
+        (scene_operators.FOOTFALL_OT_plan, {"selected_only": False}, "No agents to plan"),
+        (scene_operators.FOOTFALL_OT_plan, {"selected_only": True}, "No agents selected"),
         (operators.FOOTFALL_OT_import_rig, {"filepath": str(TMP / "missing.glb"), "armature": ""},
          "missing.glb: no such file"),
         (operators.FOOTFALL_OT_import_rig, {"filepath": "", "armature": "Sphere"},

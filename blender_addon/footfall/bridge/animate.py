@@ -17,7 +17,7 @@ the toe bends as the heel rises.
 
 import math
 from dataclasses import dataclass, field
-from typing import Callable, Dict, List, Optional
+from typing import Callable, Dict, List, Optional, Set
 
 import bpy
 import numpy
@@ -501,9 +501,11 @@ def _character(rig) -> _Character:
 
 
 def apply_plan(ff, plan, rigs: Dict[str, bpy.types.Object], scene,
-               progress: Optional[Callable[[float], None]] = None) -> List[bpy.types.Object]:
+               progress: Optional[Callable[[float], None]] = None,
+               only: Optional[Set[str]] = None) -> List[bpy.types.Object]:
     """Animates one instance of each agent's rig (`rigs`: agent name -> rig)
-    per agent of `plan`; returns the armatures.
+    per agent of `plan` (of those named in `only`, if given); returns the
+    armatures.
 
     Frame `scene.frame_start` is time 0; the scene's frame range is extended to
     the end of the longest plan.
@@ -520,10 +522,11 @@ def apply_plan(ff, plan, rigs: Dict[str, bpy.types.Object], scene,
     for rig in rigs.values():
         if rig.name not in characters:
             characters[rig.name] = _character(rig)
-    cast = [characters[rigs[agent.name].name] for agent in plan.agents]
-    armatures = [_instance(agent.name, c.template, c.rig, collection) for agent, c in zip(plan.agents, cast)]
+    agents = [agent for agent in plan.agents if only is None or agent.name in only]
+    cast = [characters[rigs[agent.name].name] for agent in agents]
+    armatures = [_instance(agent.name, c.template, c.rig, collection) for agent, c in zip(agents, cast)]
     bpy.context.view_layer.update()  # new armature objects get their poses here, all at once
-    for i, (agent, armature, character) in enumerate(zip(plan.agents, armatures, cast)):
+    for i, (agent, armature, character) in enumerate(zip(agents, armatures, cast)):
         _add_controls(armature, character.rest)
         walker = agent.character or plan.character
         times = numpy.minimum((frames - frame_offset) / fps, agent.end_time())
@@ -534,7 +537,7 @@ def apply_plan(ff, plan, rigs: Dict[str, bpy.types.Object], scene,
         _look_ahead(ff, armature, agent.name, character.rest, frames, look)
         _key_leaving(armature, agent, frame_offset, fps)
         if progress:
-            progress((i + 1) / len(plan.agents))
+            progress((i + 1) / len(agents))
     for character in characters.values():
         bpy.data.armatures.remove(character.template)
     scene.frame_end = max(scene.frame_end, int(last_frame))

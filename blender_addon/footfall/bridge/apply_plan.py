@@ -1,6 +1,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The Apply operator's work: find the plan and the rig, animate, and on any
-failure remove everything the attempt created."""
+failure remove everything the attempt created. After Plan of the selected
+agents, Apply of the stored plan animates only the agents planned again, and
+keeps the rigs of the others."""
+
+from typing import Optional, Set
 
 import bpy
 
@@ -42,9 +46,34 @@ def _remove(objects) -> None:
                 blocks.remove(block)
 
 
+def _top(obj):
+    """The object at the top of `obj`'s parents: an agent's armature in the crowd."""
+    while obj.parent is not None:
+        obj = obj.parent
+    return obj
+
+
+def _to_animate(scene, plan, crowd_objects, whole: bool) -> Optional[Set[str]]:
+    """The agents of `plan` to animate: those planned again since the last
+    Apply of the stored plan, if the others all have their rigs in the crowd;
+    None: every agent (`whole`, nothing pending, or a rig missing)."""
+    from . import plan_store
+
+    pending = None if whole else plan_store.pending(scene)
+    if not pending:
+        return None
+    animated = {obj.name for obj in crowd_objects if obj.type == "ARMATURE"}
+    if any(agent.name not in animated for agent in plan.agents if agent.name not in pending):
+        return None
+    return set(pending)
+
+
 def run(context, plan_filepath: str = "", rig_name: str = ""):
     """Animates the plan on instances of the rig, replacing the agents of an
-    earlier apply once the new ones are made; returns their armatures."""
+    earlier apply once the new ones are made (only those planned again, after
+    a Plan of the selected agents); returns their armatures."""
+    from . import plan_store
+
     ff = native.load()
     plan = _plan(ff, plan_filepath)
     if not plan.agents:
@@ -57,6 +86,10 @@ def run(context, plan_filepath: str = "", rig_name: str = ""):
         bpy.ops.object.mode_set(mode="OBJECT")
     crowd = bpy.data.collections.get(animate.CROWD_COLLECTION)
     objects = list(crowd.objects) if crowd else []
+    only = _to_animate(context.scene, plan, objects, whole=bool(plan_filepath or rig_name))
+    if only is not None:  # the others' rigs stay; those of agents no longer planned go
+        planned = {agent.name for agent in plan.agents}
+        objects = [obj for obj in objects if _top(obj).name in only or _top(obj).name not in planned]
     # Frees the agents' names (objects, armatures, actions) for the new instances.
     renamed = {}
     for obj in objects:
@@ -68,6 +101,8 @@ def run(context, plan_filepath: str = "", rig_name: str = ""):
     # "NAME (agent)" and keeps the name as a property (scene_extract.agent_name).
     named = []
     for agent in plan.agents:
+        if only is not None and agent.name not in only:
+            continue
         holder = bpy.data.objects.get(agent.name)
         if holder is not None and holder.type == "EMPTY" and holder not in renamed:
             renamed[holder] = holder.name
@@ -80,7 +115,7 @@ def run(context, plan_filepath: str = "", rig_name: str = ""):
     window_manager.progress_begin(0, 100)
     try:
         armatures = animate.apply_plan(ff, plan, rigs, context.scene,
-                                       lambda f: window_manager.progress_update(int(100 * f)))
+                                       lambda f: window_manager.progress_update(int(100 * f)), only)
     except Exception:
         datablocks.remove_new(before)
         for block, name in renamed.items():
@@ -92,4 +127,8 @@ def run(context, plan_filepath: str = "", rig_name: str = ""):
         window_manager.progress_end()
     _remove(objects)
     rig_clips.remove_unused_copies()
+    if plan_filepath:
+        plan_store.mark_planned(context.scene)  # the crowd is not the stored plan's
+    else:
+        plan_store.mark_applied(context.scene)
     return armatures

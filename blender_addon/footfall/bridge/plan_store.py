@@ -6,11 +6,17 @@ plan's JSON is mostly digits: it packs to about a fifth.
 
 Files saved before keep the plain JSON in a Text named "footfall_plan.json";
 it is read as such, and replaced by the packed one at the next Plan.
+
+The scene's property "footfall_replanned" (JSON text) lists the agents
+planned again (Plan with selected_only) since the last Apply of the stored
+plan, which the next Apply animates alone; without it (a Plan of every agent
+since), Apply animates every agent.
 """
 
 import base64
+import json
 import zlib
-from typing import Optional
+from typing import Iterable, List, Optional
 
 import bpy
 
@@ -20,6 +26,7 @@ TEXT_NAME = "footfall_plan"
 PLAIN_TEXT_NAME = "footfall_plan.json"  # the plain JSON of older files
 HEADER = "footfall-plan zlib base64 1"  # the packed text's first line
 OUTCOME = "footfall_plan_outcome"  # the scene's property: what the last Plan reached, for the panel
+REPLANNED = "footfall_replanned"  # the scene's property: agents planned again since the last Apply
 LINE = 76
 
 
@@ -64,3 +71,22 @@ def load_plan():
     text was edited into an invalid plan."""
     text = load()
     return None if text is None else native.load().parse_plan(text, TEXT_NAME)
+
+
+def pending(scene) -> Optional[List[str]]:
+    """The agents whose plans changed since the last Apply, or None when all
+    may have (a Plan of every agent, or no Apply recorded)."""
+    return json.loads(scene[REPLANNED]) if REPLANNED in scene else None
+
+
+def mark_planned(scene, names: Optional[Iterable[str]] = None) -> None:
+    """Records a Plan: of the agents `names`, or with None of every agent."""
+    if names is None:
+        scene.pop(REPLANNED, None)
+    elif REPLANNED in scene:  # else every agent is pending already
+        scene[REPLANNED] = json.dumps(sorted(set(pending(scene)) | set(names)))
+
+
+def mark_applied(scene) -> None:
+    """Records an Apply of the whole stored plan: nothing is pending."""
+    scene[REPLANNED] = "[]"

@@ -118,3 +118,12 @@ def plan(document: dict, source: str = "<scene>", progress=None, cancel=None):
     """Validates and plans a document; returns the native Plan."""
     core = native.load()
     return core.plan_scenario(parse(document, source), progress=progress, cancel=cancel)
+
+
+def replan(document: dict, fixed, names, source: str = "<scene>", progress=None, cancel=None):
+    """Validates a document and plans the agents `names` again among the
+    others, which keep their plans in `fixed` (a native Plan); returns the
+    native Plan of every agent. ValueError "agents: ..." or "fixed: ..." names
+    an unknown agent, or one neither named nor in `fixed`."""
+    core = native.load()
+    return core.replan_agents(parse(document, source), fixed, list(names), progress=progress, cancel=cancel)

@@ -46,7 +46,7 @@ class FOOTFALL_OT_import_rig(bpy.types.Operator, ImportHelper):
 
 class FOOTFALL_OT_apply(bpy.types.Operator):
     """Animate one instance of the imported rig per agent, from the stored plan or a plan file,
-    replacing the agents of an earlier Apply"""
+    replacing the agents of an earlier Apply (after Plan of the selected agents, only theirs)"""
 
     bl_idname = "footfall.apply"
     bl_label = "Apply Plan"

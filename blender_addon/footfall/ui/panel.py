@@ -26,6 +26,8 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
         self.layout.label(text=native.status())
         self.layout.operator("footfall.load_scenario", icon="FILE_FOLDER")
         self.layout.operator("footfall.plan", icon="TRACKING")
+        again = self.layout.operator("footfall.plan", text="Plan Selected Again", icon="RESTRICT_SELECT_OFF")
+        again.selected_only = True
         from ..bridge.plan_store import OUTCOME
 
         if OUTCOME in context.scene:

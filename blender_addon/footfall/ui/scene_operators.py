@@ -33,12 +33,24 @@ class FOOTFALL_OT_load_scenario(bpy.types.Operator, ImportHelper):
         return {"FINISHED"}
 
 
-def _plan_scene(context):
-    """Plans the scene with a progress bar; returns the plan and the seconds it took.
-    Raises SceneError naming the object or field at fault."""
+def _stored_plan():
+    """The stored plan (native), which the agents not selected keep."""
+    from ..bridge import plan_store
+    from ..bridge.scene_extract import SceneError
+
+    fixed = plan_store.load_plan()  # a ValueError names a damaged Text
+    if fixed is None:
+        raise SceneError("No stored plan for the agents not selected to keep: plan every agent first")
+    return fixed
+
+
+def _plan_scene(context, names=None):
+    """Plans the scene with a progress bar (only the agents `names`, the
+    others keeping their stored plans, if given); returns the plan and the
+    seconds it took. Raises SceneError naming the object or field at fault."""
     from ..bridge import agent_rigs
     from ..bridge.scene_extract import AGENTS, SceneError, read
-    from ..core.scenario import plan
+    from ..core.scenario import plan, replan
 
     extracted = read(context.scene)
     # The rigs' sizes set the strides; the scene's and agents' own overrides win.
@@ -49,41 +61,68 @@ def _plan_scene(context):
     if not document["agents"]:
         raise SceneError(f"No agents to plan: add empties to the collection '{AGENTS}', "
                          "or load a scenario (docs/blender-scenes.md)")
+    fixed = None if names is None else _stored_plan()
     window_manager = context.window_manager
     window_manager.progress_begin(0, 100)
     start = time.perf_counter()
+
+    def progress(fraction):
+        window_manager.progress_update(round(100 * fraction))
+
     try:
-        result = plan(document, "scene", progress=lambda f: window_manager.progress_update(round(100 * f)))
+        if names is None:
+            result = plan(document, "scene", progress=progress)
+        else:
+            result = replan(document, fixed, names, "scene", progress=progress)
     except ValueError as error:
-        raise SceneError(extracted.locate(str(error))) from error
+        message = str(error).replace("fixed: has no plan", "the stored plan has no plan", 1)
+        raise SceneError(extracted.locate(message)) from error
     finally:
         window_manager.progress_end()
     return result, time.perf_counter() - start
 
 
 class FOOTFALL_OT_plan(bpy.types.Operator):
-    """Plan the footsteps of every agent in the scene and store the plan in this file"""
+    """Plan the footsteps of every agent in the scene (or of the selected ones, among the stored plans of
+    the others) and store the plan in this file"""
 
     bl_idname = "footfall.plan"
     bl_label = "Plan"
     bl_options = {"REGISTER", "UNDO"}
 
+    selected_only: bpy.props.BoolProperty(
+        name="Selected Only",
+        description="Plan only the selected agents (their empties, goals or animated rigs) again; the others keep "
+                    "their stored plans, and the next Apply animates only those planned again",
+        default=False,
+    )
+
     def execute(self, context):
         from ..bridge import plan_store
+        from ..bridge.scene_extract import SceneError
+        from ..bridge.selection import selected_agents
 
         try:
-            result, seconds = _plan_scene(context)
+            names = None
+            if self.selected_only:
+                names = selected_agents(context.scene, context.selected_objects)
+                if not names:
+                    raise SceneError("No agents selected: select agents (their empties, goals or animated rigs) "
+                                     "to plan again")
+            result, seconds = _plan_scene(context, names)
         except (ValueError, native.CoreMissingError) as error:
             return report_and_cancel(self, error)
         from ..core.plan_report import outcome
 
         ff = native.load()
         plan_store.store(ff.plan_to_json(result))
+        plan_store.mark_planned(context.scene, names)
         said = outcome([(a.name, a.status == ff.AgentStatus.REACHED, a.reason) for a in result.agents])
         context.scene[plan_store.OUTCOME] = said
         steps = sum(len(agent.footsteps) for agent in result.agents)
         level = "INFO" if all(a.status == ff.AgentStatus.REACHED for a in result.agents) else "WARNING"
-        self.report({level}, f"{said}; {steps} footsteps, planned in {seconds:.2f} s; stored in the Text "
+        again = f"planned {', '.join(map(repr, names))} again among the others; " if names else ""
+        self.report({level}, f"{again}{said}; {steps} footsteps, planned in {seconds:.2f} s; stored in the Text "
                              f"'{plan_store.TEXT_NAME}'")
         return {"FINISHED"}
 
