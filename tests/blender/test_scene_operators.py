@@ -1,5 +1,6 @@
-"""Blender background test: footfall.load_scenario and footfall.plan, the
-scene's conventions read back by scene_extract (loaded and hand-made), the
+"""Blender background test: footfall.load_scenario, footfall.plan and
+footfall.randomize_agents, the scene's conventions read back by
+scene_extract (loaded and hand-made), the
 plan stored in the .blend, and errors that leave the scene as it was.
 
 Run: blender -b --factory-startup -noaudio --python-exit-code 1 --python tests/blender/test_scene_operators.py
@@ -318,6 +319,48 @@ def test_an_agents_own_speed_and_start():
     check(extract()["agents"][0].get("goal_wait") == 3.0, "footfall_wait not read")
 
 
+def test_randomize_draws_speeds_and_rigs_for_the_selected_agents():
+    """randomize_agents sets footfall_speed (and with vary_rig, footfall_rig)
+    on the selected agents only, within the range, the same for the same
+    seed; a bad range or no selection changes nothing; Plan walks with them."""
+    fresh_scene()
+    load_good_scenario()
+    alice, bob = bpy.data.objects["alice"], bpy.data.objects["bob"]
+
+    def drawn(seed, **options):
+        for obj in bpy.context.view_layer.objects:
+            obj.select_set(obj in (alice, bpy.data.objects["bob goal 2"]))  # a goal stands for its agent
+        check(bpy.ops.footfall.randomize_agents(seed=seed, **options) == {"FINISHED"}, "randomize failed")
+        return alice.get("footfall_speed"), bob.get("footfall_speed"), alice.get("footfall_rig")
+
+    first = drawn(7, speed_min=0.8, speed_max=1.0)
+    check(all(0.8 <= speed <= 1.0 for speed in first[:2]), f"speeds out of range: {first}")
+    check(drawn(7, speed_min=0.8, speed_max=1.0) == first, "the same seed drew other values")
+    check(drawn(8, speed_min=0.8, speed_max=1.0) != first, "another seed drew the same values")
+    check(first[2] is None, "a rig was drawn without vary_rig")
+    bob_speed = bob["footfall_speed"]
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(obj == alice)
+    check(bpy.ops.footfall.randomize_agents(seed=1) == {"FINISHED"}, "randomize failed")
+    check(bob["footfall_speed"] == bob_speed, "an agent not selected changed")
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan with drawn speeds failed")
+
+    before = inventory()
+    for options, fragment in (({"speed_min": 1.5, "speed_max": 1.0}, "Speed range 1.5-1 m/s"),
+                              ({"vary_rig": True}, "no rig is imported")):
+        message = operator_error(bpy.ops.footfall.randomize_agents, **options)
+        check(fragment in message, message)
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(False)
+    check("No agents selected" in operator_error(bpy.ops.footfall.randomize_agents), "no selection accepted")
+    check(inventory() == before, "a refused randomize changed the scene")
+
+    check(bpy.ops.footfall.import_rig(filepath=str(ROOT / "rigs" / "footfall_humanoid.glb")) == {"FINISHED"},
+          "rig import failed")
+    rig = bpy.context.scene.footfall_rig.name
+    check(drawn(3, vary_rig=True)[2] == rig and bob["footfall_rig"] == rig, "the rig was not drawn")
+
+
 def plain_value(value):
     return value.to_dict() if hasattr(value, "to_dict") else value.to_list() if hasattr(value, "to_list") else value
 
@@ -414,7 +457,7 @@ def test_failing_operators_report_and_cancel():
     """Every operator, of either module, fails alike: one ERROR report with the
     message, {'CANCELLED'} returned (bpy.ops raises on the report and hides what
     execute returned, so execute is called directly), and the scene as it was."""
-    from footfall.ui import operators, scene_operators
+    from footfall.ui import agent_operators, operators, scene_operators
 
     fresh_scene()
     bpy.ops.mesh.primitive_uv_sphere_add()  # something of the user's
@@ -427,6 +470,8 @@ def test_failing_operators_report_and_cancel():
         (scene_operators.FOOTFALL_OT_load_scenario, {"filepath": bad}, "bad-position.json: agents[0].position"),
         (scene_operators.FOOTFALL_OT_plan, {"selected_only": False}, "No agents to plan"),
         (scene_operators.FOOTFALL_OT_plan, {"selected_only": True}, "No agents selected"),
+        (agent_operators.FOOTFALL_OT_randomize_agents,
+         {"seed": 0, "speed_min": 1.1, "speed_max": 1.5, "vary_rig": False}, "No agents selected"),
         (operators.FOOTFALL_OT_import_rig, {"filepath": str(TMP / "missing.glb"), "armature": ""},
          "missing.glb: no such file"),
         (operators.FOOTFALL_OT_import_rig, {"filepath": "", "armature": "Sphere"},
@@ -471,6 +516,6 @@ def test_steersuite_case_loads():
 
 run([test_load_builds_the_conventions_and_extracts_back, test_hand_made_agents_and_obstacles_are_extracted,
      test_plan_is_stored_and_saved_with_the_file, test_the_plan_names_those_that_did_not_arrive,
-     test_an_agents_own_speed_and_start,
+     test_an_agents_own_speed_and_start, test_randomize_draws_speeds_and_rigs_for_the_selected_agents,
      test_errors_leave_the_scene_as_it_was,
      test_failing_operators_report_and_cancel, test_steersuite_case_loads])

@@ -33,6 +33,7 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
         if OUTCOME in context.scene:
             for line in context.scene[OUTCOME].split("; "):
                 self.layout.label(text=line)
+        self.layout.operator("footfall.randomize_agents", icon="MOD_NOISE")
         self.layout.operator("footfall.import_rig", icon="ARMATURE_DATA")
         self.layout.prop(context.scene, "footfall_rig")
         active = context.active_object
