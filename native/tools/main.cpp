@@ -145,11 +145,11 @@ struct Options {
   bool animate_given = false;  ///< any of --rig, --profile, --fps
 };
 
-// The named agents planned again among the fixed plans of the others; the
-// core's "fixed" and "agents" fields are named as the flags and file.
-footfall::Plan replan(const footfall::Scenario& scenario, const Options& options,
-                      const footfall::RunControl& control) {
-  const footfall::Plan fixed = footfall::load_plan(options.fixed);
+// The named agents planned again among the others' plans in `fixed` (read
+// from --fixed); the core's "fixed" and "agents" fields are named as the
+// file and the flag.
+footfall::Plan replan(const footfall::Scenario& scenario, const footfall::Plan& fixed,
+                      const Options& options, const footfall::RunControl& control) {
   try {
     return footfall::replan_agents(scenario, fixed, options.agents, control);
   } catch (const std::invalid_argument& error) {
@@ -178,9 +178,11 @@ int plan_and_write(const footfall::Scenario& scenario, const Options& options) {
   }
   double search_seconds = 0.0;
   control.search_seconds = &search_seconds;
+  const footfall::Plan fixed =
+      options.fixed.empty() ? footfall::Plan{} : footfall::load_plan(options.fixed);
   const auto begin = std::chrono::steady_clock::now();
   const footfall::Plan plan = options.fixed.empty() ? footfall::plan_scenario(scenario, control)
-                                                    : replan(scenario, options, control);
+                                                    : replan(scenario, fixed, options, control);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   if (terminal) std::cerr << "\r             \r" << std::flush;
