@@ -272,7 +272,8 @@ def test_plan_is_stored_and_saved_with_the_file():
 
 
 def test_the_plan_names_those_that_did_not_arrive():
-    """An agent out of time is named, with its reason, in the report and on the panel."""
+    """An agent out of time is named, with its reason, in the report and on
+    the panel, and select_unreached selects it alone."""
     from footfall.bridge import plan_store
 
     fresh_scene()
@@ -281,6 +282,10 @@ def test_the_plan_names_those_that_did_not_arrive():
     check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan did not finish")
     said = bpy.context.scene[plan_store.OUTCOME]
     check(said == "1/2 agents reached their goals; not there: 'bob' (time limit)", said)
+    bpy.data.objects["alice"].select_set(True)
+    check(bpy.ops.footfall.select_unreached() == {"FINISHED"}, "select_unreached failed")
+    selected = sorted(o.name for o in bpy.context.selected_objects)
+    check(selected == ["bob"], f"selected: {selected}")
 
 
 def test_an_agents_own_speed_and_start():
@@ -472,6 +477,7 @@ def test_failing_operators_report_and_cancel():
         (scene_operators.FOOTFALL_OT_plan, {"selected_only": True}, "No agents selected"),
         (agent_operators.FOOTFALL_OT_randomize_agents,
          {"seed": 0, "speed_min": 1.1, "speed_max": 1.5, "vary_rig": False}, "No agents selected"),
+        (agent_operators.FOOTFALL_OT_select_unreached, {}, "No plan: run Plan first"),
         (operators.FOOTFALL_OT_import_rig, {"filepath": str(TMP / "missing.glb"), "armature": ""},
          "missing.glb: no such file"),
         (operators.FOOTFALL_OT_import_rig, {"filepath": "", "armature": "Sphere"},

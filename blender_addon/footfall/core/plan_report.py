@@ -5,6 +5,7 @@ goals, and which did not, and why."""
 from typing import Sequence, Tuple
 
 NAMED = 5  # agents named at most; the rest are counted
+NOT_THERE = "; not there: "  # where the outcome goes on to name those that did not arrive
 
 
 def outcome(agents: Sequence[Tuple[str, bool, str]]) -> str:
@@ -16,4 +17,4 @@ def outcome(agents: Sequence[Tuple[str, bool, str]]) -> str:
         return text
     named = ", ".join(f"'{name}' ({reason or 'partial'})" for name, reason in missing[:NAMED])
     more = f" and {len(missing) - NAMED} more" if len(missing) > NAMED else ""
-    return f"{text}; not there: {named}{more}"
+    return f"{text}{NOT_THERE}{named}{more}"

@@ -1,5 +1,6 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Operators on the agents themselves: variation drawn at random."""
+"""Operators on the agents themselves: variation drawn at random, and
+selecting those the stored plan did not bring to their goals."""
 
 import bpy
 
@@ -39,4 +40,33 @@ class FOOTFALL_OT_randomize_agents(bpy.types.Operator):
         return {"FINISHED"}
 
 
-classes = (FOOTFALL_OT_randomize_agents,)
+class FOOTFALL_OT_select_unreached(bpy.types.Operator):
+    """Select the agents that the stored plan does not bring to all their goals (and nothing else)"""
+
+    bl_idname = "footfall.select_unreached"
+    bl_label = "Select Those Not There"
+    bl_options = {"REGISTER", "UNDO"}
+
+    def execute(self, context):
+        from ..bridge import plan_store
+        from ..bridge.scene_extract import SceneError, agent_empties
+        from ..core import native
+
+        try:
+            plan = plan_store.load_plan()
+            if plan is None:
+                raise SceneError("No plan: run Plan first")
+            reached = native.load().AgentStatus.REACHED
+            empties = agent_empties(context.scene)
+            unreached = [empties[a.name] for a in plan.agents if a.status != reached and a.name in empties]
+        except ValueError as error:
+            return report_and_cancel(self, error)
+        for obj in context.view_layer.objects:
+            obj.select_set(obj in unreached)
+        if unreached:
+            context.view_layer.objects.active = unreached[0]
+        self.report({"INFO"}, f"Selected {len(unreached)} agents that do not reach their goals")
+        return {"FINISHED"}
+
+
+classes = (FOOTFALL_OT_randomize_agents, FOOTFALL_OT_select_unreached)

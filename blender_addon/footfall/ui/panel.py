@@ -29,10 +29,13 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
         again = self.layout.operator("footfall.plan", text="Plan Selected Again", icon="RESTRICT_SELECT_OFF")
         again.selected_only = True
         from ..bridge.plan_store import OUTCOME
+        from ..core.plan_report import NOT_THERE
 
         if OUTCOME in context.scene:
             for line in context.scene[OUTCOME].split("; "):
                 self.layout.label(text=line)
+            if NOT_THERE in context.scene[OUTCOME]:
+                self.layout.operator("footfall.select_unreached", icon="RESTRICT_SELECT_OFF")
         self.layout.operator("footfall.randomize_agents", icon="MOD_NOISE")
         self.layout.operator("footfall.import_rig", icon="ARMATURE_DATA")
         self.layout.prop(context.scene, "footfall_rig")
