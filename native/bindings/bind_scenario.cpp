@@ -1,8 +1,8 @@
 #include <atomic>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
-#include <optional>
 
 #include "bindings.hpp"
 #include "footfall/crowd/scenario.hpp"

@@ -9,7 +9,7 @@ from typing import Optional, Set
 import bpy
 
 from ..core import native
-from . import agent_rigs, animate, datablocks, rig_clips, scene_extract
+from . import agent_rigs, animate, datablocks, plan_store, rig_clips, scene_extract
 
 
 class ApplyError(ValueError):
@@ -23,8 +23,6 @@ def _plan(ff, plan_filepath: str):
             return ff.load_plan(path)
         except ValueError as error:
             raise ApplyError(str(error)) from error
-    from . import plan_store
-
     try:
         plan = plan_store.load_plan()
     except ValueError as error:
@@ -57,8 +55,6 @@ def _to_animate(scene, plan, crowd_objects, whole: bool) -> Optional[Set[str]]:
     """The agents of `plan` to animate: those planned again since the last
     Apply of the stored plan, if the others all have their rigs in the crowd;
     None: every agent (`whole`, nothing pending, or a rig missing)."""
-    from . import plan_store
-
     pending = None if whole else plan_store.pending(scene)
     if not pending:
         return None
@@ -72,8 +68,6 @@ def run(context, plan_filepath: str = "", rig_name: str = ""):
     """Animates the plan on instances of the rig, replacing the agents of an
     earlier apply once the new ones are made (only those planned again, after
     a Plan of the selected agents); returns their armatures."""
-    from . import plan_store
-
     ff = native.load()
     plan = _plan(ff, plan_filepath)
     if not plan.agents:
