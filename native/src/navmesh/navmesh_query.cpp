@@ -65,6 +65,8 @@ constexpr int kPocketFlood = 2048;
 /// Dominated nodes kept per edge when a search is run again because a
 /// channel it offered failed for the disc.
 constexpr int kRivalsOnRetry = 4;
+/// Share of a gate within which a clipped interval's end is taken to be the gate's.
+constexpr double kEndSnap = 1e-9;
 /// Rounding allowance when comparing a measured clearance with the radius. [m]
 constexpr double kClearanceSlack = 1e-9;
 
@@ -303,6 +305,11 @@ class ChannelSearch {
   }
 
   void push_part(int index, int exit, const Gate& gate, double t0, double t1, Vec2 root, double g) {
+    // A part clipped at a gate's end up to rounding ends there: a path may
+    // turn at that end, and admit() drops a path that turns there separately
+    // as no shorter (on a grid, roots and gate ends are often collinear).
+    if (t0 <= kEndSnap) t0 = 0.0;
+    if (t1 >= 1.0 - kEndSnap) t1 = 1.0;
     const Vec2 d = gate.right - gate.left;
     push(index, exit, {gate.left + t0 * d, gate.left + t1 * d}, t0 == 0.0, t1 == 1.0, root, g);
   }
