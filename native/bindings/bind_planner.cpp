@@ -38,7 +38,19 @@ void bind_planner(py::module_& m) {
       .def_readwrite("polygon", &Obstacle::polygon)
       .def_readwrite("height", &Obstacle::height)
       .def_readwrite("base", &Obstacle::base)
-      .def_property_readonly("is_mesh", &Obstacle::is_mesh);
+      .def_property_readonly("is_mesh", &Obstacle::is_mesh)
+      .def_property_readonly(
+          "mesh_vertices",
+          [](const Obstacle& obstacle) {
+            std::vector<std::array<double, 3>> vertices;
+            vertices.reserve(obstacle.mesh.vertices.size());
+            for (const Vec3& v : obstacle.mesh.vertices) vertices.push_back({v.x, v.y, v.z});
+            return vertices;
+          },
+          "A mesh obstacle's vertices [[x, y, z], ...] [m] (empty for a prism).")
+      .def_property_readonly(
+          "mesh_triangles", [](const Obstacle& obstacle) { return obstacle.mesh.triangles; },
+          "A mesh obstacle's triangles [[i, j, k], ...] (empty for a prism).");
 
   py::class_<ObstacleMap>(m, "ObstacleMap", "Static obstacles indexed for circle queries.")
       .def(py::init<std::vector<Obstacle>>(), py::arg("obstacles"))

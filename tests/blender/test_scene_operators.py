@@ -55,9 +55,13 @@ def write(name, content):
 
 
 def extract():
+    return read().document
+
+
+def read():
     from footfall.bridge import scene_extract
 
-    return scene_extract.extract(bpy.context.scene)
+    return scene_extract.read(bpy.context.scene)
 
 
 def world_vertices(obj):
@@ -84,9 +88,26 @@ def boundary_distance(point, polygon):
     return min(to_segment(a, b) for a, b in zip(polygon, polygon[1:] + polygon[:1]))
 
 
-def check_union(expected, polygons, x_range, y_range, step=0.1):
-    """Every sample point (not on an expected edge) is inside the union of
-    `polygons` exactly if it is inside one of the `expected` polygons."""
+def footprints(obstacles):
+    """Whether a point lies inside the footprint of one of the document's
+    `obstacles`, as the core sees them."""
+    from footfall.core import native
+
+    core = native.load()
+    parsed = core.parse_scenario(json.dumps({"format": "footfall-scenario", "version": 1, "obstacles": obstacles,
+                                             "agents": []}), "extracted")
+    footprint_map = core.ObstacleMap(parsed.obstacles)
+    return lambda p: any(footprint_map.contains(i, p) for i in range(len(obstacles)))
+
+
+def z_range(obstacles):
+    heights = [v[2] for o in obstacles for v in o["mesh"]["vertices"]]
+    return min(heights), max(heights)
+
+
+def check_union(expected, covered, x_range, y_range, step=0.1):
+    """Every sample point (not on an expected edge) is `covered` exactly if
+    it is inside one of the `expected` polygons."""
     count = 0
     for i in range(int((x_range[1] - x_range[0]) / step)):
         for j in range(int((y_range[1] - y_range[0]) / step)):
@@ -94,7 +115,7 @@ def check_union(expected, polygons, x_range, y_range, step=0.1):
             if min(boundary_distance(p, e) for e in expected) < 1e-4:
                 continue
             want = any(inside(p, e) for e in expected)
-            check(any(inside(p, q) for q in polygons) == want, f"{p}: inside the footprint should be {want}")
+            check(covered(p) == want, f"{p}: inside the footprint should be {want}")
             count += want
     check(count > 0, "no sample point inside the expected footprint")
 
@@ -158,9 +179,15 @@ def test_load_builds_the_conventions_and_extracts_back():
         check(abs(got["facing"] - FACINGS[got["name"]]) < 1e-6, f"{got['name']}: facing {got['facing']}")
         check(len(got["goals"]) == 2 and all(close(g, s) for g, s in zip(got["goals"], spec["goals"])),
               f"{got['name']}: goals {got['goals']}")
-    check_union([L_SHAPE, BOX], [o["polygon"] for o in document["obstacles"]], (0, 7), (-3, 5))
-    heights = sorted({round(o["height"], 6) for o in document["obstacles"]})
-    check(heights == [1.5, 2.0], heights)
+    check_union([L_SHAPE, BOX], footprints(document["obstacles"]), (0, 7), (-3, 5))
+    # One mesh obstacle per face (a wall per edge, the box's bottom and top),
+    # the L's concave bottom and top one per triangle.
+    faces = {name: [o for o, owner in zip(document["obstacles"], read().obstacle_objects) if owner == name]
+             for name in ("Obstacle 0", "Obstacle 1")}
+    check([len(faces["Obstacle 0"]), len(faces["Obstacle 1"])] == [3 * len(L_SHAPE) - 4, len(BOX) + 2],
+          {name: len(f) for name, f in faces.items()})
+    check(close(z_range(faces["Obstacle 0"]), (0, 1.5)) and close(z_range(faces["Obstacle 1"]), (0, 2.0)),
+          [z_range(f) for f in faces.values()])
     check(document["character"] == SCENARIO["character"], document.get("character"))
     check(document["planner"] == SCENARIO["planner"], document.get("planner"))
 
@@ -220,12 +247,12 @@ def test_hand_made_agents_and_obstacles_are_extracted():
 
     cube_points = world_vertices(cube)
     hull = convex_hull([(p.x, p.y) for p in cube_points])
-    cube_polygons = [o["polygon"] for o in document["obstacles"] if min(x for x, _ in o["polygon"]) < 8]
-    check_union([hull], cube_polygons, (2, 8), (2, 8))
-    check(all(abs(o["height"] - max(p.z for p in cube_points)) < 1e-6 for o in document["obstacles"]
-              if o["polygon"] in cube_polygons), "cube height")
-    arrayed_polygons = [o["polygon"] for o in document["obstacles"] if o["polygon"] not in cube_polygons]
-    check_union([[[9.5, -0.5], [11.5, -0.5], [11.5, 0.5], [9.5, 0.5]]], arrayed_polygons, (9, 12), (-1, 1))
+    covered = footprints(document["obstacles"])
+    check_union([hull], covered, (2, 8), (2, 8))
+    cube_faces = [o for o, owner in zip(document["obstacles"], read().obstacle_objects) if owner == cube.name]
+    check(close(z_range(cube_faces), (min(p.z for p in cube_points), max(p.z for p in cube_points))),
+          f"the cube's faces in world space: {z_range(cube_faces)}")
+    check_union([[[9.5, -0.5], [11.5, -0.5], [11.5, 0.5], [9.5, 0.5]]], covered, (9, 12), (-1, 1))
     check("character" not in document and "planner" not in document, "overrides without a property")
 
 
@@ -494,6 +521,55 @@ def test_failing_operators_report_and_cancel():
         check(inventory() == before, f"a failed {operator.bl_idname} changed the scene")
 
 
+CORRIDOR = {
+    "format": "footfall-scenario", "version": 1,
+    "obstacles": [
+        {"polygon": [[0, 1], [8, 1], [8, 1.3], [0, 1.3]], "height": 2.5},      # the corridor's walls
+        {"polygon": [[0, -1.3], [8, -1.3], [8, -1], [0, -1]], "height": 2.5},
+        {"polygon": [[3.8, -1], [4.2, -1], [4.2, 1], [3.8, 1]], "base": 2.1, "height": 2.3},  # a beam above the head
+        {"mesh": {"vertices": [[6, 0.5, 0], [6.4, 0.5, 0], [6.2, 0.9, 0], [6.2, 0.7, 0.8]],  # a tetrahedron
+                  "triangles": [[0, 2, 1], [0, 1, 3], [1, 2, 3], [2, 0, 3]]}},
+    ],
+    "agents": [{"name": "walker", "position": [0.5, 0], "goals": [[7.5, 0]]}],
+}
+
+
+def test_obstacles_keep_their_shape_in_3d():
+    """A beam above the head lets the corridor through, in the scene built
+    from a file and in what Plan reads back; a mesh obstacle keeps its
+    triangles; a vertical plane is a thin wall."""
+    fresh_scene()
+    check(bpy.ops.footfall.load_scenario(filepath=write("corridor.json", CORRIDOR)) == {"FINISHED"}, "load failed")
+    bpy.context.view_layer.update()
+    beam, tetrahedron = bpy.data.objects["Obstacle 2"], bpy.data.objects["Obstacle 3"]
+    beam_z = [p.z for p in world_vertices(beam)]
+    check(close((min(beam_z), max(beam_z)), (2.1, 2.3)), f"the beam from {min(beam_z)} to {max(beam_z)}")
+    given = CORRIDOR["obstacles"][3]["mesh"]
+    check(len(tetrahedron.data.polygons) == 4 and all(any(close(p, v) for p in world_vertices(tetrahedron))
+                                                         for v in given["vertices"]), "the mesh obstacle's shape")
+    scene = read()
+    beam_faces = [o for o, owner in zip(scene.document["obstacles"], scene.obstacle_objects) if owner == beam.name]
+    check(close(z_range(beam_faces), (2.1, 2.3)), f"the beam read from {z_range(beam_faces)}")
+    covered = footprints(scene.document["obstacles"])
+    check(covered((6.2, 0.65)) and not covered((6.2, 0.3)), "the tetrahedron's footprint")
+
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan did not finish")
+    from footfall.bridge import plan_store
+
+    def widest():  # how far from the corridor's middle the walker's feet go
+        walker = json.loads(plan_store.load())["agents"][0]
+        check(walker["status"] == "reached", f"walker: {walker['status']}")
+        return max(abs(step["foot_position"][1]) for step in walker["footsteps"])
+
+    check(widest() < 1, "the walker left the corridor: the beam blocked it")
+    # A single vertical plane across the corridor is a thin wall: the walker goes round the outside.
+    bpy.ops.mesh.primitive_plane_add(size=2.2, location=(5, 0, 1.1), rotation=(math.pi / 2, 0, math.pi / 2))
+    link_to(bpy.data.collections["Footfall Obstacles"], bpy.context.active_object)
+    bpy.context.view_layer.update()
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan did not finish")
+    check(widest() > 1.3, "the walker went through the wall")
+
+
 def test_steersuite_case_loads():
     """doorway-two-way: two agents facing each other, the walls of the door (Y-up mapped to Z-up)."""
     fresh_scene()
@@ -520,7 +596,7 @@ def test_steersuite_case_loads():
         check("Agent 'B': custom property 'footfall_leave_at_goal' must be true or false" in str(error), str(error))
 
 
-run([test_load_builds_the_conventions_and_extracts_back, test_hand_made_agents_and_obstacles_are_extracted,
+run([test_load_builds_the_conventions_and_extracts_back, test_obstacles_keep_their_shape_in_3d, test_hand_made_agents_and_obstacles_are_extracted,
      test_plan_is_stored_and_saved_with_the_file, test_the_plan_names_those_that_did_not_arrive,
      test_an_agents_own_speed_and_start, test_randomize_draws_speeds_and_rigs_for_the_selected_agents,
      test_errors_leave_the_scene_as_it_was,

@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Adding a scenario to the Blender scene (docs/blender-scenes.md).
 
-Each obstacle becomes a prism mesh "Obstacle N" in "Footfall Obstacles" (the
-polygon extruded from the ground to its height), each agent an ARROWS empty
+Each obstacle becomes a mesh "Obstacle N" in "Footfall Obstacles" (a prism's
+polygon extruded from its base to its height, or a mesh obstacle's
+triangles), each agent an ARROWS empty
 in "Footfall Agents" turned to its facing, with one SPHERE empty per goal
 parented to it. The file's "character" and "planner" overrides replace those
 of the same key in the scene's "footfall_overrides".
@@ -14,15 +15,15 @@ the scene is left exactly as it was.
 import json
 import math
 import pathlib
+from typing import Sequence
 
-import bmesh
 import bpy
 
 from ..core import native
 from ..core.scenario import document_of, parse
 from . import datablocks
-from .scene_extract import (AGENT_CHARACTER, AGENTS, GOAL_INDEX, GOAL_WAIT, START_DELAY, TIME_LIMIT, LEAVE_AT_GOAL, MIN_AREA, OBSTACLES, OVERRIDE_KEYS,
-                            OVERRIDES, collection_in, overrides, signed_area)
+from .scene_extract import (AGENT_CHARACTER, AGENTS, GOAL_INDEX, GOAL_WAIT, START_DELAY, TIME_LIMIT, LEAVE_AT_GOAL, OBSTACLES, OVERRIDE_KEYS,
+                            OVERRIDES, collection_in, overrides)
 
 AGENT_SIZE = 0.5  # [m] length of the agent empty's arrows
 GOAL_SIZE = 0.25  # [m] radius of the goal spheres
@@ -66,7 +67,7 @@ def build(scene, document: dict, source: str = "<scenario>") -> dict:
         for obstacle in complete["obstacles"]:
             while f"Obstacle {number}" in bpy.data.objects:
                 number += 1
-            _add_obstacle(f"Obstacle {number}", obstacle["polygon"], obstacle["height"], obstacles)
+            _add_obstacle(f"Obstacle {number}", obstacle, obstacles)
         for empty, agent in zip(empties, complete["agents"]):
             _add_goals(empty, agent, agents)
     except BaseException:
@@ -92,10 +93,6 @@ def _complete(scenario, document: dict) -> dict:
 
 def _check(document: dict, source: str) -> None:
     """Refuses what the core accepts but a scene cannot hold."""
-    for i, obstacle in enumerate(document["obstacles"]):
-        if abs(signed_area(obstacle["polygon"])) <= MIN_AREA:
-            raise ScenarioError(f"{source}: obstacles[{i}].polygon: encloses no area, so it would have no "
-                                "footprint in Blender (docs/blender-scenes.md)")
     for i, agent in enumerate(document["agents"]):
         name = agent["name"]
         if len(name.encode("utf-8")) > NAME_BYTES:
@@ -116,28 +113,40 @@ def _collection(scene, name: str, linked: list):
     return collection
 
 
-def _add_obstacle(name: str, polygon, height: float, collection) -> None:
-    """A prism: the polygon from z=0 to `height`, n-gon bottom and top,
-    normals outward; the origin at the bottom centre of its bounding box."""
-    ring = polygon if signed_area(polygon) > 0 else polygon[::-1]  # counter-clockwise
-    cx = (min(p[0] for p in ring) + max(p[0] for p in ring)) / 2
-    cy = (min(p[1] for p in ring) + max(p[1] for p in ring)) / 2
+def _add_obstacle(name: str, obstacle: dict, collection) -> None:
+    """A mesh object for an obstacle of the document: its mesh as given, or
+    its prism (the polygon from `base` to `height`, n-gon bottom and top,
+    normals outward); the origin at the bottom centre of its bounding box."""
+    if "mesh" in obstacle:
+        points = [tuple(v) for v in obstacle["mesh"]["vertices"]]
+        faces = [tuple(t) for t in obstacle["mesh"]["triangles"]]
+    else:
+        points, faces = _prism(obstacle["polygon"], obstacle.get("base", 0.0), obstacle["height"])
+    origin = [(min(p[axis] for p in points) + max(p[axis] for p in points)) / 2 for axis in (0, 1)]
+    origin.append(min(p[2] for p in points))
     mesh = bpy.data.meshes.new(name)
-    bm = bmesh.new()
-    try:
-        bottom = [bm.verts.new((x - cx, y - cy, 0.0)) for x, y in ring]
-        top = [bm.verts.new((x - cx, y - cy, height)) for x, y in ring]
-        bm.faces.new(reversed(bottom))
-        bm.faces.new(top)
-        count = len(ring)
-        for k in range(count):
-            bm.faces.new((bottom[k], bottom[(k + 1) % count], top[(k + 1) % count], top[k]))
-        bm.to_mesh(mesh)
-    finally:
-        bm.free()
+    mesh.from_pydata([tuple(c - o for c, o in zip(p, origin)) for p in points], [], faces)
+    mesh.validate()  # drops what Blender cannot hold (a triangle naming one vertex twice)
     obj = bpy.data.objects.new(name, mesh)
-    obj.location = (cx, cy, 0.0)
+    obj.location = origin
     collection.objects.link(obj)
+
+
+def _signed_area(polygon: Sequence[Sequence[float]]) -> float:
+    """Area of a polygon in the XY plane [m²]: positive counter-clockwise."""
+    count = len(polygon)
+    return 0.5 * sum(polygon[k][0] * polygon[(k + 1) % count][1] - polygon[(k + 1) % count][0] * polygon[k][1]
+                     for k in range(count))
+
+
+def _prism(polygon, base: float, height: float):
+    """The vertices and faces of `polygon` extruded from `base` to `height`."""
+    ring = polygon if _signed_area(polygon) > 0 else polygon[::-1]  # counter-clockwise
+    count = len(ring)
+    points = [(x, y, base) for x, y in ring] + [(x, y, height) for x, y in ring]
+    faces = [tuple(reversed(range(count))), tuple(range(count, 2 * count))]
+    faces += [(k, (k + 1) % count, count + (k + 1) % count, count + k) for k in range(count)]
+    return points, faces
 
 
 def _add_agent(agent: dict, collection):

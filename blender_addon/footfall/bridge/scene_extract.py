@@ -5,9 +5,9 @@
 Only objects in the two Footfall collections (or collections inside them)
 count, hidden ones included:
 
-- every MESH object in "Footfall Obstacles" gives one obstacle polygon per face
-  of its evaluated mesh (modifiers applied) whose projection onto the ground
-  (world XY) has an area; its height is the object's highest world Z;
+- every MESH object in "Footfall Obstacles" gives one mesh obstacle per face
+  of its evaluated mesh (modifiers applied), in world space: its footprint is
+  the face seen from above, its surface the face in 3-D;
 - every EMPTY in "Footfall Agents" whose parent is not an agent is an agent:
   its name (its custom property "footfall_agent_name" if it has one: Apply
   names the rig instance after the agent and the empty "NAME (agent)"),
@@ -31,9 +31,10 @@ import json
 import math
 import re
 from dataclasses import dataclass, field
-from typing import Dict, List, Sequence
+from typing import Dict, List
 
 import bpy
+import numpy as np
 
 from ..core.scenario import AgentInput, ObstacleInput, ScenarioInput, scenario_document
 
@@ -50,8 +51,6 @@ GOAL_WAIT = "footfall_wait"
 AGENT_RIG = "footfall_rig"
 OVERRIDES = "footfall_overrides"
 OVERRIDE_KEYS = ("character", "planner")
-MIN_AREA = 1e-8  # [m²] a face seen from above with less area is edge-on: no footprint
-MIN_HEIGHT = 0.01  # [m]
 
 
 class SceneError(ValueError):
@@ -60,8 +59,8 @@ class SceneError(ValueError):
 
 @dataclass(frozen=True)
 class SceneScenario:
-    """The scene as a scenario document, and for each obstacle polygon the
-    name of the object whose face it is."""
+    """The scene as a scenario document, and for each obstacle the name of
+    the object whose face it is."""
 
     document: dict
     obstacle_objects: List[str]
@@ -77,13 +76,6 @@ class SceneScenario:
             else:
                 notes.append(f"{kind}[{index}] is a face of '{self.obstacle_objects[int(index)]}'")
         return f"{message} ({'; '.join(notes)})" if notes else message
-
-
-def signed_area(polygon: Sequence[Sequence[float]]) -> float:
-    """Area of a polygon in the XY plane [m²]: positive counter-clockwise."""
-    count = len(polygon)
-    return 0.5 * sum(polygon[k][0] * polygon[(k + 1) % count][1] - polygon[(k + 1) % count][0] * polygon[k][1]
-                     for k in range(count))
 
 
 def collection_in(scene, name: str):
@@ -227,34 +219,69 @@ def _leaves(agent) -> bool:
     return bool(value)
 
 
-def _footprint(obj, depsgraph):
-    """The object's faces projected onto the ground that have an area, and its
-    highest world Z."""
+def _faces(obj, depsgraph) -> List[ObstacleInput]:
+    """The object's evaluated faces in world space, one mesh obstacle each
+    (a face whose outline seen from above is concave, one per triangle): the
+    core's footprint of a mesh is its hull, which is then the face's own
+    outline (a segment for a face on edge), and the full-body planner meets
+    the real surfaces in 3-D. Read in bulk."""
     evaluated = obj.evaluated_get(depsgraph)
     mesh = evaluated.to_mesh()
     try:
-        world = evaluated.matrix_world
-        points = [world @ vertex.co for vertex in mesh.vertices]
-        polygons = []
-        for face in mesh.polygons:
-            polygon = [_xy(points[k]) for k in face.vertices]
-            if abs(signed_area(polygon)) > MIN_AREA:
-                polygons.append(polygon)
-        top = max((p.z for p in points), default=0.0)
+        mesh.calc_loop_triangles()
+        corners = _read(mesh.loop_triangles, "vertices", 3, np.int32)
+        triangle_faces = _read(mesh.loop_triangles, "polygon_index", 1, np.int32)
+        loop_starts = _read(mesh.polygons, "loop_start", 1, np.int32)
+        loop_vertices = _read(mesh.loops, "vertex_index", 1, np.int32)
+        local = _read(mesh.vertices, "co", 3, np.float32)  # Blender keeps single precision
+        world = np.array(evaluated.matrix_world, dtype=np.float64)
     finally:
         evaluated.to_mesh_clear()
-    if not polygons:
-        raise SceneError(f"Obstacle '{obj.name}' has no footprint: none of its faces covers an area seen from "
-                         f"above (give a flat wall a thickness, e.g. with a Solidify modifier)")
-    return polygons, max(float(top), MIN_HEIGHT)
+    if len(triangle_faces) == 0:
+        raise SceneError(f"Obstacle '{obj.name}' has no faces: Footfall reads an obstacle's faces "
+                         f"(fill its outline, or give a wall a thickness)")
+    points = local.reshape(-1, 3).astype(np.float64) @ world[:3, :3].T + world[:3, 3]
+    convex = _convex_from_above(points[:, :2], loop_starts, loop_vertices)
+    # Triangles of a convex face share its key; those of a concave one get their own.
+    keys = np.where(convex[triangle_faces], triangle_faces, len(convex) + np.arange(len(triangle_faces)))
+    order = np.argsort(keys, kind="stable")
+    groups = np.split(corners.reshape(-1, 3)[order], np.flatnonzero(np.diff(keys[order])) + 1)
+    obstacles = []
+    for triangles in groups:
+        used, local_triangles = np.unique(triangles, return_inverse=True)
+        obstacles.append(ObstacleInput(mesh=(points[used].tolist(), local_triangles.reshape(-1, 3).tolist())))
+    return obstacles
+
+
+def _read(collection, attribute: str, width: int, dtype) -> np.ndarray:
+    values = np.empty(width * len(collection), dtype=dtype)
+    collection.foreach_get(attribute, values)
+    return values
+
+
+def _convex_from_above(xy: np.ndarray, loop_starts: np.ndarray, loop_vertices: np.ndarray) -> np.ndarray:
+    """Per face: true if its outline seen from above turns one way only (a
+    face on edge, all straight, counts as convex)."""
+    totals = np.diff(np.append(loop_starts, len(loop_vertices)))
+    face_of_loop = np.repeat(np.arange(len(loop_starts)), totals)
+    loop = np.arange(len(loop_vertices))
+    start, total = loop_starts[face_of_loop], totals[face_of_loop]
+    here = xy[loop_vertices]
+    ahead = xy[loop_vertices[start + (loop - start + 1) % total]] - here
+    behind = here - xy[loop_vertices[start + (loop - start - 1) % total]]
+    turn = behind[:, 0] * ahead[:, 1] - behind[:, 1] * ahead[:, 0]
+    slack = 1e-9 * np.linalg.norm(ahead, axis=1) * np.linalg.norm(behind, axis=1)
+    left = np.logical_or.reduceat(turn > slack, loop_starts)
+    right = np.logical_or.reduceat(turn < -slack, loop_starts)
+    return ~(left & right)
 
 
 def _obstacles(objects, depsgraph):
     obstacles, owners = [], []
     for obj in sorted((o for o in objects if o.type == "MESH"), key=lambda o: o.name):
-        polygons, height = _footprint(obj, depsgraph)
-        obstacles += [ObstacleInput(polygon, height) for polygon in polygons]
-        owners += [obj.name] * len(polygons)
+        faces = _faces(obj, depsgraph)
+        obstacles += faces
+        owners += [obj.name] * len(faces)
     return obstacles, owners
 
 

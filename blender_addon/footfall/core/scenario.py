@@ -37,10 +37,14 @@ class AgentInput:
 
 @dataclass(frozen=True)
 class ObstacleInput:
-    """A polygon [m] in the ground plane, extruded to `height` [m]."""
+    """A polygon [m] in the ground plane, extruded from `base` to `height` [m];
+    or, with `mesh` (vertices [[x, y, z], ...] [m], triangles [[i, j, k], ...]),
+    that shape instead, the polygon and heights unused."""
 
-    polygon: Sequence[Point]
+    polygon: Sequence[Point] = ()
     height: float = 2.0
+    base: float = 0.0
+    mesh: Optional[Tuple[Sequence[Sequence[float]], Sequence[Sequence[int]]]] = None
 
 
 @dataclass(frozen=True)
@@ -55,6 +59,24 @@ class ScenarioInput:
 
 def _point(p):
     return [float(p[0]), float(p[1])]
+
+
+def _obstacle_entry(obstacle: ObstacleInput) -> dict:
+    if obstacle.mesh is not None:
+        vertices, triangles = obstacle.mesh
+        return {"mesh": {"vertices": [[float(c) for c in v] for v in vertices],
+                         "triangles": [[int(k) for k in t] for t in triangles]}}
+    entry = {"polygon": [_point(p) for p in obstacle.polygon], "height": float(obstacle.height)}
+    if obstacle.base:
+        entry["base"] = float(obstacle.base)
+    return entry
+
+
+def obstacle_input(obstacle) -> ObstacleInput:
+    """The ObstacleInput of a native Obstacle (a prism or a mesh)."""
+    if obstacle.is_mesh:
+        return ObstacleInput(mesh=(obstacle.mesh_vertices, obstacle.mesh_triangles))
+    return ObstacleInput(obstacle.polygon, obstacle.height, obstacle.base)
 
 
 def scenario_document(scenario: ScenarioInput) -> dict:
@@ -82,10 +104,7 @@ def scenario_document(scenario: ScenarioInput) -> dict:
     document = {
         "format": "footfall-scenario",
         "version": 1,
-        "obstacles": [
-            {"polygon": [_point(p) for p in o.polygon], "height": float(o.height)}
-            for o in scenario.obstacles
-        ],
+        "obstacles": [_obstacle_entry(o) for o in scenario.obstacles],
         "agents": agents,
     }
     if scenario.character:
@@ -102,7 +121,7 @@ def document_of(scenario) -> dict:
         agents=[AgentInput(a.name, a.position, a.goals, a.facing, a.leave_at_goal, time_limit=a.time_limit or None,
                            start_delay=a.start_delay or None, goal_wait=a.goal_wait or None)
                 for a in scenario.agents],
-        obstacles=[ObstacleInput(o.polygon, o.height) for o in scenario.obstacles]))
+        obstacles=[obstacle_input(o) for o in scenario.obstacles]))
 
 
 def parse(document: dict, source: str = "<scene>"):
