@@ -53,7 +53,9 @@ void bind_planner(py::module_& m) {
           "A mesh obstacle's triangles [[i, j, k], ...] (empty for a prism).");
 
   py::class_<ObstacleMap>(m, "ObstacleMap", "Static obstacles indexed for circle queries.")
-      .def(py::init<std::vector<Obstacle>>(), py::arg("obstacles"))
+      .def(py::init<std::vector<Obstacle>, double>(), py::arg("obstacles"),
+           py::arg("cut_height") = std::numeric_limits<double>::infinity(),
+           "Footprints of the parts of `obstacles` below `cut_height` [m] (all of them by default).")
       .def("first_overlap",
            py::overload_cast<const Circle&>(&ObstacleMap::first_overlap, py::const_),
            py::arg("circle"))

@@ -393,6 +393,63 @@ def test_randomize_draws_speeds_and_rigs_for_the_selected_agents():
     check(drawn(3, vary_rig=True)[2] == rig and bob["footfall_rig"] == rig, "the rig was not drawn")
 
 
+def test_scatter_places_agents_clear_of_obstacles_and_each_other():
+    """scatter_agents: N agents in the selected mesh, goals in the active one,
+    clear of obstacles and of every agent, facing their goals; the same seed
+    places the same agents; a crowded region or a bad selection adds nothing."""
+    fresh_scene()
+    load_good_scenario()  # alice, bob and two obstacles, the L at (2-4, -1-2)
+    bpy.ops.mesh.primitive_plane_add(size=6, location=(3, 0.5, 0))
+    start = bpy.context.active_object
+    start.name = "start area"
+    bpy.ops.mesh.primitive_plane_add(size=4, location=(12, 0, 0))
+    goal = bpy.context.active_object
+    goal.name = "goal area"
+
+    def scatter(**options):
+        for obj in bpy.context.view_layer.objects:
+            obj.select_set(obj in (start, goal))
+        bpy.context.view_layer.objects.active = goal
+        return bpy.ops.footfall.scatter_agents(**options)
+
+    check(scatter(count=12, seed=4, spacing=0.9) == {"FINISHED"}, "scatter failed")
+    bpy.context.view_layer.update()
+    made = [bpy.data.objects[f"Agent {k}"] for k in range(1, 13)]
+    check("Agent 13" not in bpy.data.objects, "too many agents")
+    covered = footprints([o for o in extract()["obstacles"]])
+    everyone = made + [bpy.data.objects["alice"], bpy.data.objects["bob"]]
+    for agent in made:
+        p = agent.matrix_world.translation
+        check(0 <= p.x <= 6 and -2.5 <= p.y <= 3.5, f"{agent.name} at {p} is outside the start area")
+        check(not any(covered((p.x + 0.3 * math.cos(a), p.y + 0.3 * math.sin(a))) for a in range(0, 7)),
+              f"{agent.name} at {p} stands within 0.3 m of an obstacle")
+        check(min((p.xy - o.matrix_world.translation.xy).length for o in everyone if o is not agent) >= 0.9 - 1e-6,
+              f"{agent.name} stands nearer than 0.9 m to another agent")
+        (target,) = agent.children
+        q = target.matrix_world.translation
+        check(10 <= q.x <= 14 and -2 <= q.y <= 2, f"{agent.name}'s goal at {q} is outside the goal area")
+        check(abs(agent.rotation_euler.z - math.atan2(q.y - p.y, q.x - p.x)) < 1e-6, f"{agent.name} faces away")
+    placed = [tuple(a.location) for a in made]
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+
+    # The same seed in the same scene places the same agents.
+    for agent in made:
+        for obj in (*agent.children, agent):
+            bpy.data.objects.remove(obj)
+    check(scatter(count=12, seed=4, spacing=0.9) == {"FINISHED"}, "scatter failed")
+    check([tuple(bpy.data.objects[f"Agent {k}"].location) for k in range(1, 13)] == placed, "another placement")
+
+    before = inventory()
+    message = operator_error(scatter, count=200, seed=1, spacing=0.9)
+    check("Region 'start area' holds only" in message and "of 200 agents" in message, message)
+    message = operator_error(bpy.ops.footfall.scatter_agents, start_region="Obstacle 0", goal_region="goal area")
+    check("Region 'Obstacle 0' is an obstacle" in message, message)
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(False)
+    check("Select the mesh to scatter agents in" in operator_error(bpy.ops.footfall.scatter_agents), "no selection")
+    check(inventory() == before, "a refused scatter changed the scene")
+
+
 def plain_value(value):
     return value.to_dict() if hasattr(value, "to_dict") else value.to_list() if hasattr(value, "to_list") else value
 
@@ -599,5 +656,6 @@ def test_steersuite_case_loads():
 run([test_load_builds_the_conventions_and_extracts_back, test_obstacles_keep_their_shape_in_3d, test_hand_made_agents_and_obstacles_are_extracted,
      test_plan_is_stored_and_saved_with_the_file, test_the_plan_names_those_that_did_not_arrive,
      test_an_agents_own_speed_and_start, test_randomize_draws_speeds_and_rigs_for_the_selected_agents,
+     test_scatter_places_agents_clear_of_obstacles_and_each_other,
      test_errors_leave_the_scene_as_it_was,
      test_failing_operators_report_and_cancel, test_steersuite_case_loads])

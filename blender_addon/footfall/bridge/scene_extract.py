@@ -285,12 +285,23 @@ def _obstacles(objects, depsgraph):
     return obstacles, owners
 
 
-def read(scene) -> SceneScenario:
-    """The scene as a scenario document, with the objects behind its
-    obstacles. Raises SceneError naming the object that cannot be read."""
+def _depsgraph(scene):
     depsgraph = bpy.context.evaluated_depsgraph_get()
     if depsgraph.scene != scene:
         raise SceneError(f"Scene '{scene.name}' is not the active scene; only the active scene can be read")
+    return depsgraph
+
+
+def read_obstacles(scene):
+    """The scene's obstacles (ObstacleInput), and for each the name of the
+    object whose face it is."""
+    return _obstacles(_members(scene, OBSTACLES), _depsgraph(scene))
+
+
+def read(scene) -> SceneScenario:
+    """The scene as a scenario document, with the objects behind its
+    obstacles. Raises SceneError naming the object that cannot be read."""
+    depsgraph = _depsgraph(scene)
     obstacles, owners = _obstacles(_members(scene, OBSTACLES), depsgraph)
     members = _members(scene, AGENTS)
     agents = _agents(members, depsgraph)

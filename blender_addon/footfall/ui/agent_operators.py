@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""Operators on the agents themselves: variation drawn at random, and
-selecting those the stored plan did not bring to their goals."""
+"""Operators on the agents themselves: agents scattered over a region,
+variation drawn at random, and selecting those the stored plan did not
+bring to their goals."""
 
 import bpy
 
@@ -40,6 +41,60 @@ class FOOTFALL_OT_randomize_agents(bpy.types.Operator):
         return {"FINISHED"}
 
 
+class FOOTFALL_OT_scatter_agents(bpy.types.Operator):
+    """Add agents at random in the selected mesh, each with a goal in the active one, clear of obstacles and of each other"""
+
+    bl_idname = "footfall.scatter_agents"
+    bl_label = "Scatter Agents"
+    bl_options = {"REGISTER", "UNDO"}
+
+    count: bpy.props.IntProperty(name="Count", description="How many agents to add", default=10, min=1,
+                                 max=10000)
+    seed: bpy.props.IntProperty(name="Seed", description="The same seed places the same agents", default=0)
+    spacing: bpy.props.FloatProperty(name="Spacing", description="Least distance between two agents, and between "
+                                     "two goals (m)", default=0.8, min=0.1, max=100.0, unit="LENGTH")
+    start_region: bpy.props.StringProperty(name="Start Region", description="Mesh the agents stand in (empty: "
+                                           "the selected mesh that is not active)")
+    goal_region: bpy.props.StringProperty(name="Goal Region", description="Mesh their goals lie in (empty: the "
+                                          "active mesh)")
+    prefix: bpy.props.StringProperty(name="Name", description="Agents are named NAME 1, NAME 2, ...",
+                                     default="Agent")
+
+    def execute(self, context):
+        from ..bridge import agent_scatter
+        from ..bridge.scene_extract import SceneError
+
+        try:
+            start, goal = self._regions(context)
+            names = agent_scatter.scatter(context.scene, start, goal, self.count, self.seed, self.spacing,
+                                          self.prefix)
+        except SceneError as error:
+            return report_and_cancel(self, error)
+        self.report({"INFO"}, f"Added {len(names)} agents in '{start.name}' with goals in '{goal.name}'")
+        return {"FINISHED"}
+
+    def _regions(self, context):
+        from ..bridge.scene_extract import SceneError
+
+        def named(name):
+            if name not in bpy.data.objects:
+                raise SceneError(f"No object named '{name}' to scatter agents in")
+            return bpy.data.objects[name]
+
+        meshes = [o for o in context.selected_objects if o.type == "MESH"]
+        active = context.view_layer.objects.active
+        goal = named(self.goal_region) if self.goal_region else (active if active in meshes else None)
+        others = [o for o in meshes if o is not goal]
+        if self.start_region:
+            start = named(self.start_region)
+        else:
+            start = others[0] if len(others) == 1 else (goal if not others else None)
+        if start is None or goal is None:
+            raise SceneError("Select the mesh to scatter agents in, then shift-select the mesh for their goals "
+                             "(or one mesh for both)")
+        return start, goal
+
+
 class FOOTFALL_OT_select_unreached(bpy.types.Operator):
     """Select the agents that the stored plan does not bring to all their goals (and nothing else)"""
 
@@ -69,4 +124,4 @@ class FOOTFALL_OT_select_unreached(bpy.types.Operator):
         return {"FINISHED"}
 
 
-classes = (FOOTFALL_OT_randomize_agents, FOOTFALL_OT_select_unreached)
+classes = (FOOTFALL_OT_scatter_agents, FOOTFALL_OT_randomize_agents, FOOTFALL_OT_select_unreached)

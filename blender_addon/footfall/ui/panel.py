@@ -36,6 +36,7 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
                 self.layout.label(text=line)
             if NOT_THERE in context.scene[OUTCOME]:
                 self.layout.operator("footfall.select_unreached", icon="RESTRICT_SELECT_OFF")
+        self.layout.operator("footfall.scatter_agents", icon="PARTICLES")
         self.layout.operator("footfall.randomize_agents", icon="MOD_NOISE")
         self.layout.operator("footfall.import_rig", icon="ARMATURE_DATA")
         self.layout.prop(context.scene, "footfall_rig")

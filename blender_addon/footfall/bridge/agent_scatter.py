@@ -1,0 +1,125 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Agents scattered at random: N agents standing in one region (a mesh seen
+from above), each with a goal in a second region, clear of the obstacles
+(their parts below the body's height) and of every agent, new or already in
+the scene. The same seed, regions and scene give the same agents."""
+
+import math
+from typing import List
+
+import bpy
+import numpy as np
+
+from ..core import native
+from . import scene_build
+from .scene_extract import SceneError, agent_empties, overrides, read_obstacles
+
+TRIES_PER_AGENT = 200  # draws before a crowded region is given up
+
+
+def scatter(scene, start_region, goal_region, count: int, seed: int, spacing: float, prefix: str) -> List[str]:
+    """Adds `count` agents named PREFIX 1, PREFIX 2, ... (the next free
+    numbers) standing in `start_region`, each facing its goal in
+    `goal_region` (mesh objects); agents stand, and goals lie, at least
+    `spacing` apart. Returns their names. Raises SceneError, changing nothing,
+    when a region is no mesh or is an obstacle, or holds fewer than `count`."""
+    obstacles, owners = read_obstacles(scene)
+    for role, region in (("start", start_region), ("goal", goal_region)):
+        if region is None or region.type != "MESH":
+            raise SceneError(f"The {role} region must be a mesh object (seen from above)")
+        if region.name in owners:
+            raise SceneError(f"Region '{region.name}' is an obstacle: a region is a mesh outside "
+                             f"'Footfall Obstacles' (a floor plane, say)")
+    core = native.load()
+    character = core.CharacterParams()
+    for key, value in overrides(scene).get("character", {}).items():
+        if key in ("torso_width", "body_height"):
+            setattr(character, key, value)
+    blocked = core.ObstacleMap([_native_obstacle(core, o) for o in obstacles], character.body_height)
+    clearance = max(spacing / 2, character.torso_width / 2)  # the standing body's shoulders
+    draw = np.random.default_rng(seed)
+    standing = [tuple(empty.matrix_world.translation.xy) for empty in agent_empties(scene).values()]
+    starts = _draw(draw, _triangles_from_above(start_region), count, spacing, clearance, blocked, core, standing,
+                   start_region.name)
+    goals = _draw(draw, _triangles_from_above(goal_region), count, spacing, clearance, blocked, core, [],
+                  goal_region.name)
+    names = _free_names(prefix, count)
+    document = {"format": "footfall-scenario", "version": 1, "agents": [
+        {"name": name, "position": list(start), "goals": [list(goal)],
+         "facing": math.atan2(goal[1] - start[1], goal[0] - start[0])}
+        for name, start, goal in zip(names, starts, goals)]}
+    try:
+        scene_build.build(scene, document, "scatter_agents")
+    except ValueError as error:  # what the core refuses: named, nothing added
+        raise SceneError(str(error)) from error
+    return names
+
+
+def _native_obstacle(core, obstacle):
+    if obstacle.mesh is not None:
+        return core.Obstacle.from_mesh(*obstacle.mesh)
+    return core.Obstacle(obstacle.polygon, obstacle.height, obstacle.base)
+
+
+def _triangles_from_above(region) -> np.ndarray:
+    """The region's evaluated triangles in world XY, shape (n, 3, 2), those
+    seen edge-on left out."""
+    evaluated = region.evaluated_get(bpy.context.evaluated_depsgraph_get())
+    mesh = evaluated.to_mesh()
+    try:
+        mesh.calc_loop_triangles()
+        corners = np.empty(3 * len(mesh.loop_triangles), dtype=np.int32)
+        mesh.loop_triangles.foreach_get("vertices", corners)
+        local = np.empty(3 * len(mesh.vertices), dtype=np.float32)
+        mesh.vertices.foreach_get("co", local)
+        world = np.array(evaluated.matrix_world, dtype=np.float64)
+    finally:
+        evaluated.to_mesh_clear()
+    points = (local.reshape(-1, 3).astype(np.float64) @ world[:3, :3].T + world[:3, 3])[:, :2]
+    triangles = points[corners].reshape(-1, 3, 2)
+    area = np.abs(_cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0]))
+    triangles = triangles[area > 1e-12]
+    if len(triangles) == 0:
+        raise SceneError(f"Region '{region.name}' covers no area seen from above")
+    return triangles
+
+
+def _cross(a, b):
+    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+
+
+def _draw(draw, triangles, count, spacing, clearance, blocked, core, taken, region_name):
+    """`count` points drawn uniformly over `triangles`, each clear of the
+    obstacles by `clearance` and `spacing` from the others and from `taken`."""
+    area = np.abs(_cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0]))
+    weights = area / area.sum()
+    points, others = [], list(taken)
+    for _ in range(TRIES_PER_AGENT * count):
+        if len(points) == count:
+            break
+        a, b, c = triangles[draw.choice(len(triangles), p=weights)]
+        u, v = draw.random(2)
+        if u + v > 1:
+            u, v = 1 - u, 1 - v
+        point = a + u * (b - a) + v * (c - a)
+        if any(math.dist(point, other) < spacing for other in others):
+            continue
+        if blocked.overlaps(core.Circle(tuple(point), clearance)):
+            continue
+        point = (round(float(point[0]), 6), round(float(point[1]), 6))
+        points.append(point)
+        others.append(point)
+    if len(points) < count:
+        raise SceneError(f"Region '{region_name}' holds only {len(points)} of {count} agents {spacing:g} m apart "
+                         f"and clear of the obstacles: fewer agents, less spacing or a larger region")
+    return points
+
+
+def _free_names(prefix: str, count: int) -> List[str]:
+    names, number = [], 1
+    while len(names) < count:
+        name = f"{prefix} {number}"
+        if name not in bpy.data.objects and f"{name} goal 1" not in bpy.data.objects:
+            names.append(name)
+        number += 1
+    return names
