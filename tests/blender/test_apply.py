@@ -752,6 +752,20 @@ def test_a_crowd_with_short_waits_applies():
         check(len(strips) == len(sections_of(agent)), f"{agent.name}: {len(strips)} strips")
 
 
+def test_a_strip_ending_a_hair_past_a_whole_frame_leaves_room():
+    """An agent of hallway-two-way whose first strip ends at frame 187 by the
+    clip timing but at 187.0000153 as Blender holds it (single precision):
+    the next strip, from frame 187, went on the same track and Blender
+    refused it, failing the whole Apply."""
+    from footfall.core import native
+
+    ff = native.load()
+    path = ROOT / "tests" / "data" / "plans" / "strip-ends-past-a-whole-frame.json"
+    _ff, plan, _path = applied(lambda _ff: (ff.load_plan(str(path)), path))
+    (agent,) = plan.agents
+    check(len(section_strips(agent.name)) == len(sections_of(agent)), "a section has no strip")
+
+
 def section_strips(name):
     """The NLA strips of an instance's sections (not its idle base or look-ahead)."""
     from footfall.bridge import animate
@@ -882,7 +896,7 @@ run([test_feet_and_pelvis_follow_the_plan, test_on_the_demo_no_stance_foot_moves
      test_arms_swing_as_far_as_the_steps_are_fast, test_the_head_and_chest_look_into_a_turn, test_behaviours_play_their_clips,
      test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was,
      test_applying_again_replaces_the_crowd, test_replanning_the_selected_agents_updates_only_their_rigs,
-     test_a_crowd_with_short_waits_applies,
+     test_a_crowd_with_short_waits_applies, test_a_strip_ending_a_hair_past_a_whole_frame_leaves_room,
      test_a_sheared_pose_is_refused_by_name, test_a_leaving_agent_walks_off_and_disappears,
      test_rigs_with_object_and_parent_transforms_walk_upright_on_the_plan, test_rigs_of_other_origins_walk_on_the_plan,
      test_instances_and_animations_carry_the_agents_names])

@@ -383,14 +383,13 @@ def _upper_body(armature, agent, clips: Dict[str, rig_clips.Clip], fps: float, f
         tracks[-1].name = f"{UPPER_BODY_TRACK} {name}"
         ends.append(-math.inf)
 
-    def track_for(i: int, start: float, end: float) -> int:
+    def track_for(i: int, start: float) -> int:
         """Strip i's track: A or B by turns, else the lowest free one above A, else a new one."""
         # Blender first places the strip at the whole frame below its start.
         k = next((k for k in [1 + i % 2, *range(2, len(tracks))] if ends[k] <= math.floor(start)), None)
         if k is None:
             add_track(chr(ord("A") + len(tracks) - 1))
             k = len(tracks) - 1
-        ends[k] = end
         return k
 
     add_track("idle")
@@ -408,13 +407,13 @@ def _upper_body(armature, agent, clips: Dict[str, rig_clips.Clip], fps: float, f
         tail = BLEND_SECONDS if i < len(sections) - 1 else (last_frame - frame_offset) / fps - section.end
         timing = clip_timing.strip_timing(section, clip.first, clip.first + clip.cycle_frames, fps, frame_offset,
                                           lead, max(tail, 0.0), clip.cycle.strike)
-        length = (timing.action_frame_end - timing.action_frame_start) * timing.scale * timing.repeat
-        k = track_for(i, timing.frame_start, timing.frame_start + length)
+        k = track_for(i, timing.frame_start)
         strip = tracks[k].strips.new(f"{section.behavior} {i}", int(timing.frame_start), clip.action)
         # The start first: Blender 3.4 moves only the start; scale and repeat then set the end.
         strip.frame_start = timing.frame_start
         strip.action_frame_start, strip.action_frame_end = timing.action_frame_start, timing.action_frame_end
         strip.scale, strip.repeat = timing.scale, timing.repeat
+        ends[k] = strip.frame_end  # as Blender holds it (single precision: 187 can end at 187.0000153)
         last = i == len(sections) - 1
         strip.extrapolation = "HOLD_FORWARD" if last else "NOTHING"
         # Strips above track A fade in and out over what is below; the last
