@@ -1,5 +1,5 @@
 // Rigs and the animated crowd as glTF: footfall._native.detect_bones,
-// split_side, foot_roll, upper_body, find_gait_cycle, animate_gltf.
+// split_side, foot_roll, upper_body, keys_to_keep, find_gait_cycle, animate_gltf.
 #include <pybind11/numpy.h>
 
 #include "bindings.hpp"
@@ -7,8 +7,10 @@
 #include "footfall/animate/crowd_gltf.hpp"
 #include "footfall/animate/foot_roll.hpp"
 #include "footfall/animate/gait_cycle.hpp"
+#include "footfall/animate/key_thinning.hpp"
 #include "footfall/animate/upper_body.hpp"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 
@@ -107,6 +109,35 @@ void bind_animate(py::module_& m) {
       "How the upper body follows an agent's plan at `times` [s]: (facing, swing, look) arrays: the "
       "body's facing [rad], the share of the walking clip's amplitude, and the look angle [rad] the "
       "chest and head turn by (LOOK_SHARES of it each, the head on top of the chest).");
+  m.def(
+      "keys_to_keep",
+      [](const py::array_t<double, py::array::c_style | py::array::forcecast>& times,
+         const py::array_t<double, py::array::c_style | py::array::forcecast>& values,
+         const std::vector<double>& tolerance, bool cubic) {
+        if (times.ndim() != 1 || values.ndim() < 1 || values.ndim() > 2 || values.shape(0) != times.shape(0))
+          throw std::invalid_argument("keys_to_keep: times must be (n,) and values (n,) or (n, channels)");
+        const std::vector<double> t(times.data(), times.data() + times.size());
+        const std::vector<double> v(values.data(), values.data() + values.size());
+        std::vector<double> tol = tolerance;
+        const auto channels = static_cast<std::size_t>(values.ndim() == 2 ? values.shape(1) : 1);
+        if (tol.size() == 1) tol.assign(channels, tolerance[0]);
+        if (tol.size() != channels)
+          throw std::invalid_argument("keys_to_keep: one tolerance, or one per channel");
+        const animate::ThinnedKeys keys =
+            animate::keys_to_keep(t, v, tol, cubic ? animate::KeyCurve::kCubic : animate::KeyCurve::kLinear);
+        const auto kept_count = static_cast<py::ssize_t>(keys.kept.size());
+        py::array_t<std::int64_t> kept(kept_count);
+        for (py::ssize_t i = 0; i < kept_count; ++i) kept.mutable_at(i) = static_cast<std::int64_t>(keys.kept[i]);
+        py::array_t<double> slopes({kept_count, static_cast<py::ssize_t>(channels)});
+        std::copy(keys.slopes.begin(), keys.slopes.end(), slopes.mutable_data());
+        return py::make_tuple(kept, slopes);
+      },
+      py::arg("times"), py::arg("values"), py::arg("tolerance"), py::arg("cubic") = true,
+      "(kept, slopes): the indices of the samples to key (the first and the last among them) and "
+      "their slopes (kept, channels), so that cubic Hermite curves between them (Bezier keys with "
+      "handles a third of the way along the slopes), or with cubic=False straight lines, pass "
+      "within `tolerance` (one number, or one per channel) of every sample, and through those that "
+      "stand still: `times` (n,) increasing, `values` (n,) or (n, channels).");
   m.def(
       "find_gait_cycle",
       [](const std::vector<double>& feet, const std::vector<double>& hands, double leg_length) {

@@ -15,6 +15,7 @@ the foot flat; the foot rolls heel to toe about it (core/foot_roll.py), and
 the toe bends as the heel rises.
 """
 
+import functools
 import math
 from dataclasses import dataclass, field
 from typing import Callable, Dict, List, Optional, Set
@@ -23,7 +24,7 @@ import bpy
 import numpy
 from mathutils import Matrix, Vector
 
-from ..core import clip_cycle, clip_timing, foot_roll
+from ..core import clip_cycle, clip_timing, foot_roll, native
 from . import action_curves, procedural_clips, rig_clips
 from .rig_import import foot_points, profile_of
 
@@ -38,6 +39,11 @@ REACH = 0.995  # share of the leg's length the hips may stretch it to (a locked 
 BLEND_SECONDS = 0.25  # cross-fade between the clips of two sections
 UPPER_BODY_TRACK = "Footfall upper body"  # the NLA tracks of the sections' clips: "... idle", "... A", ...
 LOOK_AHEAD_TRACK = "Footfall look ahead"
+# How near the keys' lines pass to the motion sampled at every frame (keys_to_keep: a crowd
+# keyed at every frame was 30 million keys).
+KEY_TOLERANCE = {"location": 5e-4, "rotation_quaternion": 5e-4}  # [m], and per quaternion component
+POLE_TOLERANCE = 5e-3  # [m] a knee pole half a metre ahead only aims the knee
+LINEAR, BEZIER, HANDLE_FREE = 1, 2, 0  # KeyframePoint.interpolation and handle type values for foreach_set
 
 
 @dataclass
@@ -250,17 +256,51 @@ def _write_action(armature, name: str, frames, channels) -> bpy.types.Action:
 
 
 def _key_channels(action, frames, channels) -> None:
-    """Keys the bones' channels at every frame: channels maps a bone to its
-    (locations, quaternions or None) arrays."""
+    """Keys the bones' channels, sampled at every frame, with the keys whose
+    curves (Bezier; straight in Blender 3.4) pass within KEY_TOLERANCE of
+    every sample and through those that stand still: channels maps a bone to
+    its (locations, quaternions or None) arrays."""
     for bone, arrays in channels.items():
         for path, values in zip(("location", "rotation_quaternion"), arrays):
             if values is None:
                 continue
+            tolerance = POLE_TOLERANCE if bone.startswith(POLE.format("")) else KEY_TOLERANCE[path]
+            cubic = _free_handles_set_in_bulk()
+            kept, slopes = native.load().keys_to_keep(frames, values, [tolerance], cubic=cubic)
+            at = frames[kept]
+            # Handles a third of the way to the neighbouring keys, along the
+            # slope: each Bezier segment is then the cubic keys_to_keep checked.
+            before = numpy.diff(at, prepend=at[0] - 1.0) / 3.0
+            after = numpy.diff(at, append=at[-1] + 1.0) / 3.0
+            free = numpy.full(len(kept), HANDLE_FREE)
             for index in range(values.shape[1]):
                 curve = action_curves.curve(action, f'pose.bones["{bone}"].{path}', index, bone)
-                curve.keyframe_points.add(len(frames))
-                curve.keyframe_points.foreach_set("co", numpy.column_stack((frames, values[:, index])).ravel())
+                points = curve.keyframe_points
+                points.add(len(kept))
+                value, slope = values[kept, index], slopes[:, index]
+                points.foreach_set("co", numpy.column_stack((at, value)).ravel())
+                if cubic:
+                    points.foreach_set("handle_left_type", free)
+                    points.foreach_set("handle_right_type", free)
+                    points.foreach_set("handle_left", numpy.column_stack((at - before, value - slope * before)).ravel())
+                    points.foreach_set("handle_right", numpy.column_stack((at + after, value + slope * after)).ravel())
+                points.foreach_set("interpolation", numpy.full(len(kept), BEZIER if cubic else LINEAR))
                 curve.update()
+
+
+@functools.lru_cache(maxsize=None)
+def _free_handles_set_in_bulk() -> bool:
+    """Whether this Blender sets keys' handle types with foreach_set (3.4
+    leaves them automatic, which would bend the curves keys_to_keep checked:
+    there the keys are straight, and more)."""
+    action = bpy.data.actions.new("footfall handle check")
+    try:
+        points = action_curves.curve(action, "location", 0, "check").keyframe_points
+        points.add(1)
+        points.foreach_set("handle_left_type", [HANDLE_FREE])
+        return points[0].handle_left_type == "FREE"
+    finally:
+        bpy.data.actions.remove(action)
 
 
 def _step_arrays(ff, steps) -> foot_roll.Steps:
