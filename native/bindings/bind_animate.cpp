@@ -113,7 +113,7 @@ void bind_animate(py::module_& m) {
       "keys_to_keep",
       [](const py::array_t<double, py::array::c_style | py::array::forcecast>& times,
          const py::array_t<double, py::array::c_style | py::array::forcecast>& values,
-         const std::vector<double>& tolerance, bool cubic) {
+         const std::vector<double>& tolerance, bool cubic, const std::vector<double>& scale) {
         if (times.ndim() != 1 || values.ndim() < 1 || values.ndim() > 2 || values.shape(0) != times.shape(0))
           throw std::invalid_argument("keys_to_keep: times must be (n,) and values (n,) or (n, channels)");
         const std::vector<double> t(times.data(), times.data() + times.size());
@@ -123,8 +123,12 @@ void bind_animate(py::module_& m) {
         if (tol.size() == 1) tol.assign(channels, tolerance[0]);
         if (tol.size() != channels)
           throw std::invalid_argument("keys_to_keep: one tolerance, or one per channel");
-        const animate::ThinnedKeys keys =
-            animate::keys_to_keep(t, v, tol, cubic ? animate::KeyCurve::kCubic : animate::KeyCurve::kLinear);
+        animate::ThinnedKeys keys;
+        {
+          py::gil_scoped_release release;  // so that callers may thin several motions at once
+          keys = animate::keys_to_keep(t, v, tol, cubic ? animate::KeyCurve::kCubic : animate::KeyCurve::kLinear,
+                                       scale);
+        }
         const auto kept_count = static_cast<py::ssize_t>(keys.kept.size());
         py::array_t<std::int64_t> kept(kept_count);
         for (py::ssize_t i = 0; i < kept_count; ++i) kept.mutable_at(i) = static_cast<std::int64_t>(keys.kept[i]);
@@ -133,11 +137,13 @@ void bind_animate(py::module_& m) {
         return py::make_tuple(kept, slopes);
       },
       py::arg("times"), py::arg("values"), py::arg("tolerance"), py::arg("cubic") = true,
+      py::arg("scale") = std::vector<double>{},
       "(kept, slopes): the indices of the samples to key (the first and the last among them) and "
       "their slopes (kept, channels), so that cubic Hermite curves between them (Bezier keys with "
       "handles a third of the way along the slopes), or with cubic=False straight lines, pass "
-      "within `tolerance` (one number, or one per channel) of every sample, and through those that "
-      "stand still: `times` (n,) increasing, `values` (n,) or (n, channels).");
+      "within `tolerance` (one number, or one per channel; times `scale[i]` at sample i, if given) "
+      "of every sample, and through those that stand still: `times` (n,) increasing, `values` (n,) "
+      "or (n, channels).");
   m.def(
       "find_gait_cycle",
       [](const std::vector<double>& feet, const std::vector<double>& hands, double leg_length) {

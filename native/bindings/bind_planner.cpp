@@ -3,6 +3,8 @@
 #include <memory>
 #include <optional>
 
+#include <pybind11/numpy.h>
+
 #include "bindings.hpp"
 #include "footfall/crowd/crowd_planner.hpp"
 #include "footfall/plan/plan.hpp"
@@ -197,6 +199,41 @@ void bind_planner(py::module_& m) {
   m.def("com_at", py::overload_cast<const AgentPlan&, double>(&com_at), py::arg("plan"),
         py::arg("t"));
   m.def("feet_at", &feet_at, py::arg("plan"), py::arg("t"), "Both feet at time t, [left, right].");
+  m.def(
+      "sample_motion",
+      [](const AgentPlan& plan, const py::array_t<double, py::array::c_style | py::array::forcecast>& times) {
+        const py::ssize_t count = times.size();
+        py::array_t<double> com({count, py::ssize_t{2}}), feet({count, py::ssize_t{2}, py::ssize_t{2}});
+        py::array_t<double> yaw({count, py::ssize_t{2}}), lift({count, py::ssize_t{2}});
+        py::array_t<bool> planted({count, py::ssize_t{2}});
+        auto c = com.mutable_unchecked<2>();
+        auto f = feet.mutable_unchecked<3>();
+        auto y = yaw.mutable_unchecked<2>();
+        auto l = lift.mutable_unchecked<2>();
+        auto p = planted.mutable_unchecked<2>();
+        const double* t = times.data();
+        {
+          py::gil_scoped_release release;
+          for (py::ssize_t i = 0; i < count; ++i) {
+            const Vec2 at = com_at(plan, t[i]).position;
+            c(i, 0) = at.x;
+            c(i, 1) = at.y;
+            const std::array<FootPose, 2> both = feet_at(plan, t[i]);
+            for (py::ssize_t side = 0; side < 2; ++side) {
+              const FootPose& foot = both[static_cast<std::size_t>(side)];
+              f(i, side, 0) = foot.position.x;
+              f(i, side, 1) = foot.position.y;
+              y(i, side) = foot.orientation;
+              l(i, side) = foot.lift;
+              p(i, side) = foot.planted;
+            }
+          }
+        }
+        return py::make_tuple(com, feet, yaw, lift, planted);
+      },
+      py::arg("plan"), py::arg("times"),
+      "com_at and feet_at at every one of `times` [s], as arrays: (com (n, 2), feet (n, 2, 2), "
+      "their orientations (n, 2), lifts (n, 2), planted (n, 2)), feet [left, right].");
   m.def("facing_at", &facing_at, py::arg("plan"), py::arg("t"));
   m.def("collision_circles",
         py::overload_cast<const AgentPlan&, const CharacterParams&, double>(&collision_circles),

@@ -20,6 +20,19 @@ def test_demo_plans_to_the_goal(ff):
     assert len(feet) == 2 and not all(f.planted for f in feet)
 
 
+def test_sample_motion_is_com_at_and_feet_at_at_every_time(ff):
+    walker = ff.plan_scenario(ff.demo_scenario()).agents[0]
+    times = [-1.0, 0.0, walker.footsteps[2].start_time + 0.1, walker.end_time() / 2, walker.end_time() + 3]
+    com, feet, yaw, lift, planted = ff.sample_motion(walker, times)
+    assert com.shape == (5, 2) and feet.shape == (5, 2, 2) and planted.dtype == bool
+    for i, t in enumerate(times):
+        assert tuple(com[i]) == tuple(ff.com_at(walker, t).position)
+        for side, pose in enumerate(ff.feet_at(walker, t)):
+            assert tuple(feet[i, side]) == tuple(pose.position)
+            assert (yaw[i, side], lift[i, side], planted[i, side]) == (pose.orientation, pose.lift, pose.planted)
+    assert not planted[2].all()  # a foot swings in the third step
+
+
 def test_create_footstep_from_python(ff):
     character = ff.CharacterParams()
     start = ff.standing_state((0.0, 0.0), 0.0, character)

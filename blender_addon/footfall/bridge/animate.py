@@ -17,8 +17,10 @@ the toe bends as the heel rises.
 
 import functools
 import math
+import os
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
-from typing import Callable, Dict, List, Optional, Set
+from typing import Callable, Dict, List, NamedTuple, Optional, Set, Tuple
 
 import bpy
 import numpy
@@ -39,11 +41,13 @@ REACH = 0.995  # share of the leg's length the hips may stretch it to (a locked 
 BLEND_SECONDS = 0.25  # cross-fade between the clips of two sections
 UPPER_BODY_TRACK = "Footfall upper body"  # the NLA tracks of the sections' clips: "... idle", "... A", ...
 LOOK_AHEAD_TRACK = "Footfall look ahead"
-# How near the keys' lines pass to the motion sampled at every frame (keys_to_keep: a crowd
-# keyed at every frame was 30 million keys).
-KEY_TOLERANCE = {"location": 5e-4, "rotation_quaternion": 5e-4}  # [m], and per quaternion component
-POLE_TOLERANCE = 5e-3  # [m] a knee pole half a metre ahead only aims the knee
-LINEAR, BEZIER, HANDLE_FREE = 1, 2, 0  # KeyframePoint.interpolation and handle type values for foreach_set
+# How near the keys' curves pass to the motion sampled at every frame (keys_to_keep; a crowd
+# keyed at every frame was 34 million keys): [m], and per quaternion component.
+KEY_TOLERANCE = (5e-4, 5e-4)
+POLE_TOLERANCE = (5e-3, 5e-4)  # a knee pole half a metre ahead only aims the knee
+SWING_LOOSENESS = 6.0  # a foot in the air, moving fast, is keyed within 3 mm
+_THREADS = ThreadPoolExecutor(max_workers=os.cpu_count() or 1, thread_name_prefix="footfall keys")
+LINEAR, HANDLE_FREE = 1, 0  # KeyframePoint.interpolation and handle type values for foreach_set
 
 
 @dataclass
@@ -245,9 +249,20 @@ def _pose_arrays(rest: Matrix, positions, yaws=None):
     return locations, quaternions
 
 
-def _write_action(armature, name: str, frames, channels) -> bpy.types.Action:
-    """A new active action with a key at every frame: channels maps a bone
-    to its (locations, quaternions or None) arrays."""
+class Keyed(NamedTuple):
+    """A bone's motion sampled at every frame, to key: location and
+    quaternion arrays (one row per frame; None: not keyed), how near the keys
+    must stay to them ([m], per quaternion component), and where that may be
+    looser (a factor per frame)."""
+
+    locations: Optional[numpy.ndarray]
+    quaternions: Optional[numpy.ndarray]
+    tolerance: Tuple[float, float] = KEY_TOLERANCE
+    looseness: Optional[numpy.ndarray] = None
+
+
+def _write_action(armature, name: str, frames, channels: Dict[str, Keyed]) -> bpy.types.Action:
+    """A new active action keying each bone's motion in `channels`."""
     action = bpy.data.actions.new(name)
     action[LOCOMOTION_OF] = armature.name  # not a clip of the rig (rig_clips.actions_of)
     _key_channels(action, frames, channels)
@@ -255,37 +270,50 @@ def _write_action(armature, name: str, frames, channels) -> bpy.types.Action:
     return action
 
 
-def _key_channels(action, frames, channels) -> None:
-    """Keys the bones' channels, sampled at every frame, with the keys whose
-    curves (Bezier; straight in Blender 3.4) pass within KEY_TOLERANCE of
-    every sample and through those that stand still: channels maps a bone to
-    its (locations, quaternions or None) arrays."""
-    for bone, arrays in channels.items():
-        for path, values in zip(("location", "rotation_quaternion"), arrays):
-            if values is None:
-                continue
-            tolerance = POLE_TOLERANCE if bone.startswith(POLE.format("")) else KEY_TOLERANCE[path]
-            cubic = _free_handles_set_in_bulk()
-            kept, slopes = native.load().keys_to_keep(frames, values, [tolerance], cubic=cubic)
-            at = frames[kept]
-            # Handles a third of the way to the neighbouring keys, along the
-            # slope: each Bezier segment is then the cubic keys_to_keep checked.
-            before = numpy.diff(at, prepend=at[0] - 1.0) / 3.0
-            after = numpy.diff(at, append=at[-1] + 1.0) / 3.0
-            free = numpy.full(len(kept), HANDLE_FREE)
-            for index in range(values.shape[1]):
-                curve = action_curves.curve(action, f'pose.bones["{bone}"].{path}', index, bone)
-                points = curve.keyframe_points
-                points.add(len(kept))
-                value, slope = values[kept, index], slopes[:, index]
-                points.foreach_set("co", numpy.column_stack((at, value)).ravel())
-                if cubic:
-                    points.foreach_set("handle_left_type", free)
-                    points.foreach_set("handle_right_type", free)
-                    points.foreach_set("handle_left", numpy.column_stack((at - before, value - slope * before)).ravel())
-                    points.foreach_set("handle_right", numpy.column_stack((at + after, value + slope * after)).ravel())
-                points.foreach_set("interpolation", numpy.full(len(kept), BEZIER if cubic else LINEAR))
-                curve.update()
+def _key_channels(action, frames, channels: Dict[str, Keyed]) -> None:
+    """Keys each bone's motion with the keys whose curves (Bezier; straight
+    in Blender 3.4) pass within its tolerance of every frame's sample and
+    through those that stand still."""
+    cubic = _free_handles_set_in_bulk()
+    motions = [(bone, path, values, tolerance, [] if keyed.looseness is None else keyed.looseness)
+               for bone, keyed in channels.items()
+               for path, values, tolerance in zip(("location", "rotation_quaternion"),
+                                                  (keyed.locations, keyed.quaternions), keyed.tolerance)
+               if values is not None]
+    thin = native.load().keys_to_keep
+    # The core thins them on every core at once; Blender's data is written from this thread only.
+    thinned = _THREADS.map(lambda m: thin(frames, m[2], [m[3]], cubic=cubic, scale=m[4]), motions)
+    for (bone, path, values, _, _), (kept, slopes) in zip(motions, thinned):
+        at = frames[kept]
+        # Bezier handles a third of the way to the neighbouring keys, along
+        # the slope: each segment is then the cubic keys_to_keep checked.
+        reach = (numpy.diff(at, prepend=at[0] - 1.0) / 3.0, numpy.diff(at, append=at[-1] + 1.0) / 3.0)
+        for index in range(values.shape[1]):
+            curve = action_curves.curve(action, f'pose.bones["{bone}"].{path}', index, bone)
+            _write_keys(curve.keyframe_points, at, values[kept, index], slopes[:, index], reach if cubic else None)
+            curve.update()
+
+
+def _pairs(x, y) -> numpy.ndarray:
+    pairs = numpy.empty((len(x), 2))
+    pairs[:, 0], pairs[:, 1] = x, y
+    return pairs.ravel()
+
+
+def _write_keys(points, at, value, slope, reach) -> None:
+    """Adds keys at frames `at`: Bezier ones with free handles `reach`
+    (before, after) frames away along `slope`, or with reach None straight ones."""
+    points.add(len(at))
+    points.foreach_set("co", _pairs(at, value))
+    if reach is None:
+        points.foreach_set("interpolation", numpy.full(len(at), LINEAR))
+        return
+    before, after = reach
+    free = numpy.full(len(at), HANDLE_FREE)  # new keys are Bezier, their handles automatic
+    points.foreach_set("handle_left_type", free)
+    points.foreach_set("handle_right_type", free)
+    points.foreach_set("handle_left", _pairs(at - before, value - slope * before))
+    points.foreach_set("handle_right", _pairs(at + after, value + slope * after))
 
 
 @functools.lru_cache(maxsize=None)
@@ -319,18 +347,7 @@ def _locomotion(ff, agent, rest: RigRest, times, facing, full_speed: float):
     its plan the agent holds its last pose; one that leaves is hidden then,
     _key_leaving); `facing` is the body's there (ff.upper_body)."""
     count = len(times)
-    com = numpy.empty((count, 2))
-    feet_xy = numpy.empty((count, 2, 2))
-    feet_yaw = numpy.empty((count, 2))
-    lift = numpy.empty((count, 2))
-    planted = numpy.empty((count, 2), dtype=bool)
-    for i, t in enumerate(times):
-        com[i] = ff.com_at(agent, t).position
-        for side, foot in enumerate(ff.feet_at(agent, t)):
-            feet_xy[i, side] = foot.position
-            feet_yaw[i, side] = foot.orientation
-            lift[i, side] = foot.lift
-            planted[i, side] = foot.planted
+    com, feet_xy, feet_yaw, lift, planted = ff.sample_motion(agent, times)
     step_arrays = _step_arrays(ff, agent.footsteps)
     lateral = numpy.cross([math.cos(rest.forward_yaw), math.sin(rest.forward_yaw), 0.0], [0.0, 0.0, 1.0])
     body_yaw = numpy.unwrap(facing) - rest.forward_yaw
@@ -354,15 +371,17 @@ def _locomotion(ff, agent, rest: RigRest, times, facing, full_speed: float):
         foot_yaw = numpy.unwrap(feet_yaw[:, side]) - rest.forward_yaw
         locations, yawed = _pose_arrays(leg.foot_rest, ankles, foot_yaw)
         # Pitched about the rest's side axis first, then turned to the foot's yaw.
-        channels[IK_FOOT.format(suffix)] = (locations, _quaternion_product(
-            yawed, _turns(leg.foot_rest, lateral, pitch)))
-        channels[leg.toe] = (None, _turns(leg.toe_rest, lateral, -numpy.minimum(pitch, 0.0)))
+        swinging = numpy.where(planted[:, side], 1.0, SWING_LOOSENESS)
+        channels[IK_FOOT.format(suffix)] = Keyed(locations, _quaternion_product(
+            yawed, _turns(leg.foot_rest, lateral, pitch)), looseness=swinging)
+        channels[leg.toe] = Keyed(None, _turns(leg.toe_rest, lateral, -numpy.minimum(pitch, 0.0)),
+                                  looseness=swinging)
         ahead = numpy.array(leg.pole_rest.to_translation() - leg.ankle)  # the pole, seen from the ankle
         poles = flat + numpy.column_stack((numpy.cos(foot_yaw) * ahead[0] - numpy.sin(foot_yaw) * ahead[1],
                                              numpy.sin(foot_yaw) * ahead[0] + numpy.cos(foot_yaw) * ahead[1],
                                              numpy.full(count, ahead[2])))
-        channels[POLE.format(suffix)] = _pose_arrays(leg.pole_rest, poles)
-    channels[rest.hips] = _pose_arrays(rest.hips_rest, numpy.column_stack((com, height)), body_yaw)
+        channels[POLE.format(suffix)] = Keyed(*_pose_arrays(leg.pole_rest, poles), tolerance=POLE_TOLERANCE)
+    channels[rest.hips] = Keyed(*_pose_arrays(rest.hips_rest, numpy.column_stack((com, height)), body_yaw))
     return channels
 
 
@@ -495,7 +514,7 @@ def _look_ahead(ff, armature, agent_name: str, rest: RigRest, frames, look) -> N
         if armature.pose.bones[bone].rotation_mode != "QUATERNION":
             continue
         matrix = armature.data.bones[bone].matrix_local
-        channels[bone] = (None, _turns(matrix, (0.0, 0.0, 1.0), shares[role] * look))
+        channels[bone] = Keyed(None, _turns(matrix, (0.0, 0.0, 1.0), shares[role] * look))
     if not channels:
         bpy.data.actions.remove(action)
         return

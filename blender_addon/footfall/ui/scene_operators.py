@@ -115,7 +115,7 @@ class FOOTFALL_OT_plan(bpy.types.Operator):
         from ..core.plan_report import outcome
 
         ff = native.load()
-        plan_store.store(ff.plan_to_json(result))
+        plan_store.store(ff.plan_to_json(result), result)
         plan_store.mark_planned(context.scene, names)
         said = outcome([(a.name, a.status == ff.AgentStatus.REACHED, a.reason) for a in result.agents])
         context.scene[plan_store.OUTCOME] = said

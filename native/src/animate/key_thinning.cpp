@@ -48,8 +48,8 @@ bool is_still(const std::vector<double>& values, std::size_t channels, std::size
 // slopes, or straight) passes within the tolerance of every sample between
 // them (and keeps every still one).
 bool curve_fits(const std::vector<double>& times, const std::vector<double>& values,
-                const std::vector<double>& slopes, const std::vector<double>& tolerance, KeyCurve kind,
-                std::size_t a, std::size_t b) {
+                const std::vector<double>& slopes, const std::vector<double>& tolerance,
+                const std::vector<double>& sample_scale, KeyCurve kind, std::size_t a, std::size_t b) {
   const std::size_t channels = tolerance.size(), count = times.size();
   const double span = times[b] - times[a];
   for (std::size_t s = a + 1; s < b; ++s) {
@@ -61,7 +61,7 @@ bool curve_fits(const std::vector<double>& times, const std::vector<double>& val
       const double curve = from * values[a * channels + c] + leave * slopes[a * channels + c] +
                            to * values[b * channels + c] + arrive * slopes[b * channels + c];
       const double off = std::fabs(values[s * channels + c] - curve);
-      if (off > tolerance[c]) return false;
+      if (off > tolerance[c] * (sample_scale.empty() ? 1.0 : sample_scale[s])) return false;
       if (off > kStill * (1 + std::fabs(curve)) && is_still(values, channels, s, c, count)) return false;
     }
   }
@@ -71,13 +71,18 @@ bool curve_fits(const std::vector<double>& times, const std::vector<double>& val
 }  // namespace
 
 ThinnedKeys keys_to_keep(const std::vector<double>& times, const std::vector<double>& values,
-                         const std::vector<double>& tolerance, KeyCurve curve) {
+                         const std::vector<double>& tolerance, KeyCurve curve,
+                         const std::vector<double>& sample_scale) {
   const std::size_t count = times.size(), channels = tolerance.size();
   if (channels == 0) throw std::invalid_argument("keys_to_keep: needs at least one channel");
   if (values.size() != count * channels)
     throw std::invalid_argument("keys_to_keep: values must have one row of every channel per time");
   for (const double t : tolerance)
     if (!(std::isfinite(t) && t > 0.0)) throw std::invalid_argument("keys_to_keep: tolerances must be > 0");
+  if (!sample_scale.empty() && sample_scale.size() != count)
+    throw std::invalid_argument("keys_to_keep: one scale per sample, or none");
+  for (const double k : sample_scale)
+    if (!(std::isfinite(k) && k > 0.0)) throw std::invalid_argument("keys_to_keep: scales must be > 0");
   const std::vector<double> slopes = sample_slopes(times, values, channels);
   std::vector<std::size_t> kept(count);
   for (std::size_t i = 0; i < count; ++i) kept[i] = i;
@@ -88,7 +93,7 @@ ThinnedKeys keys_to_keep(const std::vector<double>& times, const std::vector<dou
     bool dropped = false;
     for (std::size_t m = 0; m < kept.size(); ++m) {
       const bool may_go = m >= first && (m - first) % 2 == 0 && m + 1 < kept.size();
-      if (may_go && curve_fits(times, values, slopes, tolerance, curve, kept[m - 1], kept[m + 1])) {
+      if (may_go && curve_fits(times, values, slopes, tolerance, sample_scale, curve, kept[m - 1], kept[m + 1])) {
         dropped = true;
         continue;
       }

@@ -74,6 +74,21 @@ TEST(KeyThinning, CubicKeysAreFewerThanStraightOnesForASmoothMotion) {
             keys_to_keep(frames(500), bob, {1e-4}, KeyCurve::kLinear).kept.size());
 }
 
+TEST(KeyThinning, AScaleLoosensTheFitWhereItIsLarge) {
+  std::vector<double> bob(400), scale(400, 1.0);
+  for (std::size_t i = 0; i < bob.size(); ++i) bob[i] = 0.03 * std::sin(static_cast<double>(i) / 4.0);
+  for (std::size_t i = 200; i < scale.size(); ++i) scale[i] = 10.0;
+  const ThinnedKeys keys = keys_to_keep(frames(400), bob, {1e-4}, KeyCurve::kCubic, scale);
+  std::size_t first_half = 0;
+  for (const std::size_t k : keys.kept) first_half += k < 200;
+  EXPECT_GT(first_half, keys.kept.size() - first_half + 10);
+  for (std::size_t i = 0; i < bob.size(); ++i)
+    ASSERT_LE(std::fabs(curve_at(bob, keys, 1, 0, static_cast<double>(i)) - bob[i]), 1e-4 * scale[i] * (1 + 1e-12));
+  EXPECT_THROW(keys_to_keep(frames(400), bob, {1e-4}, KeyCurve::kCubic, {1.0}), std::invalid_argument);
+  scale[7] = 0.0;
+  EXPECT_THROW(keys_to_keep(frames(400), bob, {1e-4}, KeyCurve::kCubic, scale), std::invalid_argument);
+}
+
 TEST(KeyThinning, RefusesMismatchedSizesAndBadTolerances) {
   EXPECT_THROW(keys_to_keep(frames(3), {0, 1}, {0.1}), std::invalid_argument);
   EXPECT_THROW(keys_to_keep(frames(2), {0, 1}, {}), std::invalid_argument);

@@ -22,20 +22,22 @@ struct ThinnedKeys {
 
 /// The samples to key so that the `curve`s between consecutive kept samples
 /// (cubic ones with their slopes) pass within `tolerance[c]` of every
-/// sample's channel c, and through every one that stands still (equal to the
+/// sample's channel c (times `sample_scale[s]` at sample s, if given: a
+/// looser fit where the motion is fast), and through every one that stands still (equal to the
 /// sample before or after it), up to rounding. The slopes are the samples' own: three-point, but 0
 /// where the motion turns or halts (so a stretch that stands still is
 /// exactly still between its ends) and at most three times the smaller
 /// secant beside it (Fritsch and Carlson's bound against overshoot).
 /// `times` has n increasing entries, `values` n rows of `tolerance.size()`
 /// channels (row-major). Throws std::invalid_argument for sizes that
-/// differ, no channel, or a tolerance that is not a finite number > 0.
+/// differ, no channel, or a tolerance or scale that is not a finite number > 0.
 ///
 /// Bottom up: every other kept sample is dropped at once where the curve over
 /// its two kept neighbours fits every sample between them, the odd ones and
 /// the even ones by turns, until neither drops any: about 2 log2(n) passes,
 /// each over the samples once.
 ThinnedKeys keys_to_keep(const std::vector<double>& times, const std::vector<double>& values,
-                         const std::vector<double>& tolerance, KeyCurve curve = KeyCurve::kCubic);
+                         const std::vector<double>& tolerance, KeyCurve curve = KeyCurve::kCubic,
+                         const std::vector<double>& sample_scale = {});
 
 }  // namespace footfall::animate
