@@ -450,6 +450,47 @@ def test_scatter_places_agents_clear_of_obstacles_and_each_other():
     check(inventory() == before, "a refused scatter changed the scene")
 
 
+def test_the_plan_is_out_of_date_once_the_scene_changes():
+    """Moving an obstacle, an agent or a goal, scattering or randomizing
+    marks the stored plan out of date; Plan makes it current; moving other
+    objects does not. The panel names the rig of the active agent."""
+    from footfall.bridge import plan_watch
+    from footfall.ui.panel import _own_rig
+
+    fresh_scene()
+    load_good_scenario()
+    scene = bpy.context.scene
+    check(not plan_watch.is_stale(scene), "out of date before any plan")
+    bpy.ops.mesh.primitive_cube_add(location=(20, 20, 0))  # not an obstacle
+    outsider = bpy.context.active_object
+
+    def planned():
+        check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+        bpy.context.view_layer.update()
+        check(not plan_watch.is_stale(scene), "out of date right after Plan")
+
+    planned()
+    outsider.location.x += 1
+    bpy.context.view_layer.update()
+    check(not plan_watch.is_stale(scene), "moving an object outside the Footfall collections made it out of date")
+    for obj in (bpy.data.objects["Obstacle 1"], bpy.data.objects["alice"], bpy.data.objects["bob goal 2"]):
+        obj.location.y += 0.2
+        bpy.context.view_layer.update()
+        check(plan_watch.is_stale(scene), f"moving '{obj.name}' left the plan current")
+        planned()
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(obj.name == "bob")
+    check(bpy.ops.footfall.randomize_agents(seed=2) == {"FINISHED"}, "randomize failed")
+    check(plan_watch.is_stale(scene), "new speeds left the plan current")
+
+    bpy.context.view_layer.objects.active = bpy.data.objects["bob"]
+    check(_own_rig(bpy.context) == "bob: the scene's rig (none yet)", _own_rig(bpy.context))
+    bpy.data.objects["bob"]["footfall_rig"] = "tall"
+    check(_own_rig(bpy.context) == "bob: rig 'tall' (footfall_rig)", _own_rig(bpy.context))
+    bpy.context.view_layer.objects.active = outsider
+    check(_own_rig(bpy.context) is None, "a rig named for an object that is no agent")
+
+
 def plain_value(value):
     return value.to_dict() if hasattr(value, "to_dict") else value.to_list() if hasattr(value, "to_list") else value
 
@@ -656,6 +697,6 @@ def test_steersuite_case_loads():
 run([test_load_builds_the_conventions_and_extracts_back, test_obstacles_keep_their_shape_in_3d, test_hand_made_agents_and_obstacles_are_extracted,
      test_plan_is_stored_and_saved_with_the_file, test_the_plan_names_those_that_did_not_arrive,
      test_an_agents_own_speed_and_start, test_randomize_draws_speeds_and_rigs_for_the_selected_agents,
-     test_scatter_places_agents_clear_of_obstacles_and_each_other,
+     test_scatter_places_agents_clear_of_obstacles_and_each_other, test_the_plan_is_out_of_date_once_the_scene_changes,
      test_errors_leave_the_scene_as_it_was,
      test_failing_operators_report_and_cancel, test_steersuite_case_loads])

@@ -24,7 +24,7 @@ class FOOTFALL_OT_randomize_agents(bpy.types.Operator):
                                      default=False)
 
     def execute(self, context):
-        from ..bridge import agent_variation, rig_import
+        from ..bridge import agent_variation, plan_watch, rig_import
         from ..bridge.scene_extract import SceneError
         from ..bridge.selection import selected_agents
 
@@ -37,6 +37,7 @@ class FOOTFALL_OT_randomize_agents(bpy.types.Operator):
                                               rigs)
         except SceneError as error:
             return report_and_cancel(self, error)
+        plan_watch.mark_stale(context.scene)
         self.report({"INFO"}, f"Drew {'speeds and rigs' if rigs else 'speeds'} for {len(drawn)} agents")
         return {"FINISHED"}
 
@@ -61,7 +62,7 @@ class FOOTFALL_OT_scatter_agents(bpy.types.Operator):
                                      default="Agent")
 
     def execute(self, context):
-        from ..bridge import agent_scatter
+        from ..bridge import agent_scatter, plan_watch
         from ..bridge.scene_extract import SceneError
 
         try:
@@ -70,6 +71,7 @@ class FOOTFALL_OT_scatter_agents(bpy.types.Operator):
                                           self.prefix)
         except SceneError as error:
             return report_and_cancel(self, error)
+        plan_watch.mark_stale(context.scene)
         self.report({"INFO"}, f"Added {len(names)} agents in '{start.name}' with goals in '{goal.name}'")
         return {"FINISHED"}
 

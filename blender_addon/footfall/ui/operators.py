@@ -67,7 +67,13 @@ class FOOTFALL_OT_apply(bpy.types.Operator):
             armatures = apply_plan.run(context, self.plan_filepath, self.rig)
         except (apply_plan.ApplyError, animate.TransformError, rig_clips.ClipError, CoreMissingError) as error:
             return report_and_cancel(self, error)
-        self.report({"INFO"}, f"Animated {len(armatures)} agents in '{animate.CROWD_COLLECTION}'")
+        from ..bridge import plan_watch
+
+        if not self.plan_filepath and plan_watch.is_stale(context.scene):
+            self.report({"WARNING"}, f"Animated {len(armatures)} agents in '{animate.CROWD_COLLECTION}' from a plan "
+                                     "that is out of date: agents, goals or obstacles changed since Plan")
+        else:
+            self.report({"INFO"}, f"Animated {len(armatures)} agents in '{animate.CROWD_COLLECTION}'")
         return {"FINISHED"}
 
 

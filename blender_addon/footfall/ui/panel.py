@@ -16,6 +16,21 @@ class _FootfallSidebarTab:
     bl_category = "Footfall"
 
 
+def _own_rig(context):
+    """Which rig animates the active agent, said for the panel (None when
+    the active object is no agent's empty)."""
+    from ..bridge.scene_extract import AGENT_RIG, agent_empties, agent_name
+
+    active = context.active_object
+    if active is None or active not in agent_empties(context.scene).values():
+        return None
+    rig = active.get(AGENT_RIG)
+    if rig is not None:
+        return f"{agent_name(active)}: rig '{rig}' (footfall_rig)"
+    scene_rig = context.scene.footfall_rig
+    return f"{agent_name(active)}: the scene's rig" + (f" '{scene_rig.name}'" if scene_rig else " (none yet)")
+
+
 class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
     """Shows whether Footfall's planning core is ready."""
 
@@ -31,7 +46,13 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
         from ..bridge.plan_store import OUTCOME
         from ..core.plan_report import NOT_THERE
 
-        if OUTCOME in context.scene:
+        from ..bridge import plan_watch
+
+        if OUTCOME not in context.scene:
+            self.layout.label(text="No plan yet")
+        else:
+            if plan_watch.is_stale(context.scene):
+                self.layout.label(text="Out of date: agents, goals or obstacles changed since", icon="ERROR")
             for line in context.scene[OUTCOME].split("; "):
                 self.layout.label(text=line)
             if NOT_THERE in context.scene[OUTCOME]:
@@ -40,6 +61,9 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
         self.layout.operator("footfall.randomize_agents", icon="MOD_NOISE")
         self.layout.operator("footfall.import_rig", icon="ARMATURE_DATA")
         self.layout.prop(context.scene, "footfall_rig")
+        own_rig = _own_rig(context)
+        if own_rig is not None:
+            self.layout.label(text=own_rig, icon="ARMATURE_DATA")
         active = context.active_object
         from ..bridge.rig_import import PROFILE_PROPERTY
 

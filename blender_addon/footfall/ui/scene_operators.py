@@ -98,7 +98,7 @@ class FOOTFALL_OT_plan(bpy.types.Operator):
     )
 
     def execute(self, context):
-        from ..bridge import plan_store
+        from ..bridge import plan_store, plan_watch
         from ..bridge.scene_extract import SceneError
         from ..bridge.selection import selected_agents
 
@@ -117,6 +117,7 @@ class FOOTFALL_OT_plan(bpy.types.Operator):
         ff = native.load()
         plan_store.store(ff.plan_to_json(result), result)
         plan_store.mark_planned(context.scene, names)
+        plan_watch.clear(context.scene)
         said = outcome([(a.name, a.status == ff.AgentStatus.REACHED, a.reason) for a in result.agents])
         context.scene[plan_store.OUTCOME] = said
         steps = sum(len(agent.footsteps) for agent in result.agents)
