@@ -1,4 +1,5 @@
-"""The built-in demo in Blender: the demo scene (a doorway and a box), the
+"""The built-in demo in Blender: the demo scene (a doorway, and narrow gaps
+walked with the arms in and side-stepped), the
 project's rig walking it, a rendered picture, the animated crowd as glTF and
 the .blend.
 
@@ -28,7 +29,7 @@ def stage(scene, target: Vector) -> None:
         obj.color = (0.9, 0.55, 0.3, 1)
     camera = bpy.data.objects.new("Camera", bpy.data.cameras.new("Camera"))
     camera.data.lens = 30
-    camera.location = target + Vector((-5.0, -13.0, 11.0))
+    camera.location = target + Vector((-7.0, -5.0, 14.0))
     camera.rotation_euler = (target - camera.location).to_track_quat("-Z", "Y").to_euler()
     scene.collection.objects.link(camera)
     scene.camera = camera
@@ -39,13 +40,34 @@ def stage(scene, target: Vector) -> None:
     scene.render.resolution_x, scene.render.resolution_y = 1280, 720
 
 
+def _behaviours_time(plan, ff) -> float:
+    """A time [s] when one walker holds its arms in while another side-steps
+    (else half way through the side steps), for the picture."""
+    def spans(behavior):
+        found = []
+        for agent in plan.agents:
+            steps = [step for step in agent.footsteps if step.behavior == behavior]
+            if steps:
+                found.append((steps[0].start_time, steps[-1].end_time))
+        return found
+
+    side_steps, arms_in = spans(ff.Behavior.SIDE_STEP), spans(ff.Behavior.ARMS_IN)
+    if not side_steps:
+        raise SystemExit("demo: nobody side-steps")
+    for start, end in arms_in:
+        middle = 0.5 * (start + end)
+        if any(s <= middle <= e for s, e in side_steps):
+            return middle
+    return 0.5 * sum(side_steps[0])
+
+
 def check(result, what):
     if "FINISHED" not in result:
         raise SystemExit(f"demo: {what} failed")
 
 
 def main():
-    from footfall.bridge import rig_import, scene_build
+    from footfall.bridge import plan_store, rig_import, scene_build
     from footfall.core import native
     from footfall.core.scenario import document_of
 
@@ -61,8 +83,8 @@ def main():
             obj.hide_render = obj.hide_viewport = True
     check(bpy.ops.footfall.plan(), "plan")
     check(bpy.ops.footfall.apply(), "apply")
-    stage(scene, Vector((5.0, 0.0, 0.5)))
-    scene.frame_set(scene.frame_start + int(0.6 * (scene.frame_end - scene.frame_start)))
+    stage(scene, Vector((5.5, -5.0, 0.0)))
+    scene.frame_set(scene.frame_start + round(_behaviours_time(plan_store.load_plan(), ff) * scene.render.fps))
     scene.render.filepath = str(OUT / "demo.png")
     bpy.ops.render.render(write_still=True)
     check(bpy.ops.footfall.export_gltf(filepath=str(OUT / "demo.glb")), "export_gltf")

@@ -75,7 +75,7 @@ void bind_scenario(py::module_& m) {
   m.def("load_steersuite", &load_steersuite, py::arg("path"), py::arg("seed") = 1);
   m.def("load_scenario_file", &load_scenario_file, py::arg("path"),
         "A scenario file of either kind: SteerSuite XML for .xml, Footfall JSON otherwise.");
-  m.def("demo_scenario", &demo_scenario, "The built-in demo: a doorway and a box.");
+  m.def("demo_scenario", &demo_scenario, "The built-in demo: a doorway into a cluttered room, and two narrow gaps (arms in, side step).");
   m.def("box_obstacle", &box_obstacle, py::arg("center"), py::arg("size"), py::arg("height") = 1.0);
   m.def("wall_with_door", &wall_with_door, py::arg("x"), py::arg("door_width"),
         py::arg("door_center") = 0.0, py::arg("half_length") = 6.0, py::arg("thickness") = 0.2);

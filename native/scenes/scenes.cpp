@@ -28,13 +28,23 @@ Scenario demo_scenario() {
   scenario.obstacles.push_back(box_obstacle({9.8, -2.2}, {0.8, 0.8}, 0.75));
   scenario.obstacles.push_back(box_obstacle({10.2, 2.6}, {1.4, 0.6}, 0.9));
   scenario.obstacles.push_back(box_obstacle({13.0, -0.6}, {0.6, 1.6}, 1.0));
-  // A crowd before it, each with its own place in the room.
+  // Below the door the wall goes on as a block 2 m deep with two narrow gaps:
+  // 0.55 m, walked with the arms held in, and 0.42 m, side-stepped.
+  const double gap_ends[] = {-6.0, -7.5 + 0.275, -7.5 - 0.275, -10.0 + 0.21, -10.0 - 0.21, -12.5};
+  for (int piece = 0; piece < 3; ++piece) {
+    const double top = gap_ends[2 * piece], bottom = gap_ends[2 * piece + 1];
+    scenario.obstacles.push_back(box_obstacle({5.0, 0.5 * (top + bottom)}, {2.0, top - bottom}, 1.6));
+  }
+  // A crowd before it, each with its own place in the room, and one walker
+  // for each gap.
   scenario.agents.push_back({"walker", {0.0, 0.5}, 0.0, {{11.0, 0.3}}});
   scenario.agents.push_back({"ada", {0.0, -1.0}, 0.0, {{14.5, -2.5}}});
   scenario.agents.push_back({"ben", {-1.5, 1.2}, 0.0, {{13.5, 2.0}}});
   scenario.agents.push_back({"cleo", {-1.5, -0.4}, 0.0, {{11.5, -2.0}}});
   scenario.agents.push_back({"dan", {-4.5, 0.3}, 0.0, {{8.5, 2.0}}});
   scenario.agents.push_back({"eve", {-3.0, 1.8}, 0.0, {{7.0, -2.5}}});
+  scenario.agents.push_back({"fay", {1.0, -7.5}, 0.0, {{9.0, -7.5}}});
+  scenario.agents.push_back({"gus", {1.0, -10.0}, 0.0, {{9.0, -10.0}}});
   return scenario;
 }
 
