@@ -453,7 +453,8 @@ def test_scatter_places_agents_clear_of_obstacles_and_each_other():
 def test_the_plan_is_out_of_date_once_the_scene_changes():
     """Moving an obstacle, an agent or a goal, scattering or randomizing
     marks the stored plan out of date; Plan makes it current; moving other
-    objects does not. The panel names the rig of the active agent."""
+    objects does not, nor does a second move count twice. The panel names
+    the rig of the active agent."""
     from footfall.bridge import plan_watch
     from footfall.ui.panel import _own_rig
 
@@ -477,6 +478,10 @@ def test_the_plan_is_out_of_date_once_the_scene_changes():
         obj.location.y += 0.2
         bpy.context.view_layer.update()
         check(plan_watch.is_stale(scene), f"moving '{obj.name}' left the plan current")
+        counted = plan_watch.changes(scene)
+        obj.location.y += 0.2
+        bpy.context.view_layer.update()
+        check(plan_watch.changes(scene) == counted, "a second move was counted again")
         planned()
     for obj in bpy.context.view_layer.objects:
         obj.select_set(obj.name == "bob")

@@ -133,16 +133,18 @@ def parse(document: dict, source: str = "<scene>"):
     return native.load().parse_scenario(json.dumps(document, allow_nan=True), source)
 
 
-def plan(document: dict, source: str = "<scene>", progress=None, cancel=None):
-    """Validates and plans a document; returns the native Plan."""
+def plan(document: dict, source: str = "<scene>", progress=None, cancel=None, threads: int = 1):
+    """Validates and plans a document on `threads` threads (the plan is the
+    same for any number); returns the native Plan."""
     core = native.load()
-    return core.plan_scenario(parse(document, source), progress=progress, cancel=cancel)
+    return core.plan_scenario(parse(document, source), progress=progress, cancel=cancel, threads=threads)
 
 
-def replan(document: dict, fixed, names, source: str = "<scene>", progress=None, cancel=None):
+def replan(document: dict, fixed, names, source: str = "<scene>", progress=None, cancel=None, threads: int = 1):
     """Validates a document and plans the agents `names` again among the
     others, which keep their plans in `fixed` (a native Plan); returns the
     native Plan of every agent. ValueError "agents: ..." or "fixed: ..." names
     an unknown agent, or one neither named nor in `fixed`."""
     core = native.load()
-    return core.replan_agents(parse(document, source), fixed, list(names), progress=progress, cancel=cancel)
+    return core.replan_agents(parse(document, source), fixed, list(names), progress=progress, cancel=cancel,
+                              threads=threads)

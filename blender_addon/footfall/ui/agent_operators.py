@@ -37,7 +37,7 @@ class FOOTFALL_OT_randomize_agents(bpy.types.Operator):
                                               rigs)
         except SceneError as error:
             return report_and_cancel(self, error)
-        plan_watch.mark_stale(context.scene)
+        plan_watch.note_change(context.scene)
         self.report({"INFO"}, f"Drew {'speeds and rigs' if rigs else 'speeds'} for {len(drawn)} agents")
         return {"FINISHED"}
 
@@ -71,7 +71,7 @@ class FOOTFALL_OT_scatter_agents(bpy.types.Operator):
                                           self.prefix)
         except SceneError as error:
             return report_and_cancel(self, error)
-        plan_watch.mark_stale(context.scene)
+        plan_watch.note_change(context.scene)
         self.report({"INFO"}, f"Added {len(names)} agents in '{start.name}' with goals in '{goal.name}'")
         return {"FINISHED"}
 

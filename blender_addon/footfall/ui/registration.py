@@ -4,11 +4,12 @@
 import bpy
 
 from ..bridge import plan_watch
-from . import agent_operators, properties, scene_operators
+from . import agent_operators, preferences, properties, scene_operators
 from .operators import FOOTFALL_OT_apply, FOOTFALL_OT_export_gltf, FOOTFALL_OT_import_rig
 from .panel import FOOTFALL_PT_bone_map, FOOTFALL_PT_main
 
 classes = (
+    preferences.FOOTFALL_AP_preferences,
     properties.FOOTFALL_PG_bone_map,
     *scene_operators.classes,
     *agent_operators.classes,

@@ -9,6 +9,7 @@ from bpy_extras.io_utils import ImportHelper
 
 from ..core import native
 from .operator_errors import report_and_cancel
+from .preferences import planning_threads
 
 
 class FOOTFALL_OT_load_scenario(bpy.types.Operator, ImportHelper):
@@ -44,13 +45,13 @@ def _stored_plan():
     return fixed
 
 
-def _plan_scene(context, names=None):
-    """Plans the scene with a progress bar (only the agents `names`, the
-    others keeping their stored plans, if given); returns the plan and the
-    seconds it took. Raises SceneError naming the object or field at fault."""
+def _planning_input(context, names=None):
+    """What Plan plans: the scene's document (its agents sized by their
+    rigs), the stored plan the agents not in `names` keep (None when every
+    agent is planned), and the read scene (to name objects in errors).
+    Raises SceneError naming the object or field at fault."""
     from ..bridge import agent_rigs
     from ..bridge.scene_extract import AGENTS, SceneError, read
-    from ..core.scenario import plan, replan
 
     extracted = read(context.scene)
     # The rigs' sizes set the strides; the scene's and agents' own overrides win.
@@ -61,25 +62,49 @@ def _plan_scene(context, names=None):
     if not document["agents"]:
         raise SceneError(f"No agents to plan: add empties to the collection '{AGENTS}', "
                          "or load a scenario (docs/blender-scenes.md)")
-    fixed = None if names is None else _stored_plan()
-    window_manager = context.window_manager
-    window_manager.progress_begin(0, 100)
-    start = time.perf_counter()
+    return document, None if names is None else _stored_plan(), extracted
 
-    def progress(fraction):
-        window_manager.progress_update(round(100 * fraction))
 
-    try:
-        if names is None:
-            result = plan(document, "scene", progress=progress)
-        else:
-            result = replan(document, fixed, names, "scene", progress=progress)
-    except ValueError as error:
-        message = str(error).replace("fixed: has no plan", "the stored plan has no plan", 1)
-        raise SceneError(extracted.locate(message)) from error
-    finally:
-        window_manager.progress_end()
-    return result, time.perf_counter() - start
+def _located(extracted, error: ValueError):
+    """The core's error with the scene's objects behind the fields it names."""
+    from ..bridge.scene_extract import SceneError
+
+    message = str(error).replace("fixed: has no plan", "the stored plan has no plan", 1)
+    return SceneError(extracted.locate(message))
+
+
+def _input(context, selected_only: bool):
+    """The agents to plan (None: every one) and what _planning_input gives."""
+    from ..bridge.scene_extract import SceneError
+    from ..bridge.selection import selected_agents
+
+    names = None
+    if selected_only:
+        names = selected_agents(context.scene, context.selected_objects)
+        if not names:
+            raise SceneError("No agents selected: select agents (their empties, goals or animated rigs) "
+                             "to plan again")
+    return names, _planning_input(context, names)
+
+
+def _store(operator, context, result, names, seconds, read_at: int):
+    """Stores the plan of the scene as it was at change count `read_at`
+    (plan_watch) and reports its outcome on `operator`."""
+    from ..bridge import plan_store, plan_watch
+    from ..core.plan_report import outcome
+
+    ff = native.load()
+    plan_store.store(ff.plan_to_json(result), result)
+    plan_store.mark_planned(context.scene, names)
+    plan_watch.mark_planned(context.scene, read_at)
+    said = outcome([(a.name, a.status == ff.AgentStatus.REACHED, a.reason) for a in result.agents])
+    context.scene[plan_store.OUTCOME] = said
+    steps = sum(len(agent.footsteps) for agent in result.agents)
+    level = "INFO" if all(a.status == ff.AgentStatus.REACHED for a in result.agents) else "WARNING"
+    again = f"planned {', '.join(map(repr, names))} again among the others; " if names else ""
+    operator.report({level}, f"{again}{said}; {steps} footsteps, planned in {seconds:.2f} s; stored in the Text "
+                             f"'{plan_store.TEXT_NAME}'")
+    return {"FINISHED"}
 
 
 class FOOTFALL_OT_plan(bpy.types.Operator):
@@ -98,34 +123,71 @@ class FOOTFALL_OT_plan(bpy.types.Operator):
     )
 
     def execute(self, context):
-        from ..bridge import plan_store, plan_watch
-        from ..bridge.scene_extract import SceneError
-        from ..bridge.selection import selected_agents
+        """Plans at once (scripts, and Blender without a window)."""
+        from ..core.plan_job import PlanJob
 
+        from ..bridge import plan_watch
+
+        window_manager = context.window_manager
+        read_at = plan_watch.changes(context.scene)
         try:
-            names = None
-            if self.selected_only:
-                names = selected_agents(context.scene, context.selected_objects)
-                if not names:
-                    raise SceneError("No agents selected: select agents (their empties, goals or animated rigs) "
-                                     "to plan again")
-            result, seconds = _plan_scene(context, names)
+            names, (document, fixed, extracted) = _input(context, self.selected_only)
+            window_manager.progress_begin(0, 100)
+            try:
+                job = PlanJob(document, planning_threads(context), fixed, names)
+                while not job.done:
+                    window_manager.progress_update(round(100 * job.progress))
+                    time.sleep(0.05)
+                result = job.result()
+            except ValueError as error:
+                raise _located(extracted, error) from error
+            finally:
+                window_manager.progress_end()
         except (ValueError, native.CoreMissingError) as error:
             return report_and_cancel(self, error)
-        from ..core.plan_report import outcome
+        return _store(self, context, result, names, job.seconds, read_at)
 
-        ff = native.load()
-        plan_store.store(ff.plan_to_json(result), result)
-        plan_store.mark_planned(context.scene, names)
-        plan_watch.clear(context.scene)
-        said = outcome([(a.name, a.status == ff.AgentStatus.REACHED, a.reason) for a in result.agents])
-        context.scene[plan_store.OUTCOME] = said
-        steps = sum(len(agent.footsteps) for agent in result.agents)
-        level = "INFO" if all(a.status == ff.AgentStatus.REACHED for a in result.agents) else "WARNING"
-        again = f"planned {', '.join(map(repr, names))} again among the others; " if names else ""
-        self.report({level}, f"{again}{said}; {steps} footsteps, planned in {seconds:.2f} s; stored in the Text "
-                             f"'{plan_store.TEXT_NAME}'")
-        return {"FINISHED"}
+    def invoke(self, context, event):
+        """In the interface: plans on a thread of its own, the progress in the
+        status bar; Esc stops it, and a stopped run changes nothing."""
+        from ..bridge import plan_watch
+        from ..core.plan_job import PlanJob
 
+        if context.window is None:
+            return self.execute(context)
+        self._read_at = plan_watch.changes(context.scene)
+        try:
+            names, (document, fixed, self._extracted) = _input(context, self.selected_only)
+            self._job = PlanJob(document, planning_threads(context), fixed, names)
+        except (ValueError, native.CoreMissingError) as error:
+            return report_and_cancel(self, error)
+        self._names = names
+        self._timer = context.window_manager.event_timer_add(0.1, window=context.window)
+        context.window_manager.modal_handler_add(self)
+        self._say(context)
+        return {"RUNNING_MODAL"}
+
+    def modal(self, context, event):
+        if event.type == "ESC":
+            self._job.cancel()
+            return {"RUNNING_MODAL"}
+        if event.type == "TIMER":
+            self._say(context)
+        if not self._job.done:
+            return {"PASS_THROUGH"}  # the interface stays live
+        context.window_manager.event_timer_remove(self._timer)
+        context.workspace.status_text_set(None)
+        try:
+            result = self._job.result()
+        except ValueError as error:
+            return report_and_cancel(self, _located(self._extracted, error))
+        if self._job.cancelled:
+            self.report({"WARNING"}, "Planning stopped (Esc): nothing changed, the stored plan stays")
+            return {"CANCELLED"}
+        return _store(self, context, result, self._names, self._job.seconds, self._read_at)
+
+    def _say(self, context):
+        state = "stopping" if self._job.cancelled else "Esc to stop"
+        context.workspace.status_text_set(f"Footfall: planning, {round(100 * self._job.progress)} % ({state})")
 
 classes = (FOOTFALL_OT_load_scenario, FOOTFALL_OT_plan)
