@@ -12,7 +12,7 @@ import numpy as np
 
 from ..core import native
 from . import scene_build
-from .scene_extract import SceneError, agent_empties, overrides, read_obstacles
+from .scene_extract import SceneError, agent_empties, overrides, read_obstacles, world_mesh
 
 TRIES_PER_AGENT = 200  # draws before a crowded region is given up
 
@@ -37,11 +37,11 @@ def scatter(scene, start_region, goal_region, count: int, seed: int, spacing: fl
             setattr(character, key, value)
     blocked = core.ObstacleMap([_native_obstacle(core, o) for o in obstacles], character.body_height)
     clearance = max(spacing / 2, character.torso_width / 2)  # the standing body's shoulders
-    draw = np.random.default_rng(seed)
+    rng = np.random.default_rng(seed)
     standing = [tuple(empty.matrix_world.translation.xy) for empty in agent_empties(scene).values()]
-    starts = _draw(draw, _triangles_from_above(start_region), count, spacing, clearance, blocked, core, standing,
+    starts = _draw(rng, _triangles_from_above(start_region), count, spacing, clearance, blocked, core, standing,
                    start_region.name)
-    goals = _draw(draw, _triangles_from_above(goal_region), count, spacing, clearance, blocked, core, [],
+    goals = _draw(rng, _triangles_from_above(goal_region), count, spacing, clearance, blocked, core, [],
                   goal_region.name)
     names = _free_names(prefix, count)
     document = {"format": "footfall-scenario", "version": 1, "agents": [
@@ -64,19 +64,8 @@ def _native_obstacle(core, obstacle):
 def _triangles_from_above(region) -> np.ndarray:
     """The region's evaluated triangles in world XY, shape (n, 3, 2), those
     seen edge-on left out."""
-    evaluated = region.evaluated_get(bpy.context.evaluated_depsgraph_get())
-    mesh = evaluated.to_mesh()
-    try:
-        mesh.calc_loop_triangles()
-        corners = np.empty(3 * len(mesh.loop_triangles), dtype=np.int32)
-        mesh.loop_triangles.foreach_get("vertices", corners)
-        local = np.empty(3 * len(mesh.vertices), dtype=np.float32)
-        mesh.vertices.foreach_get("co", local)
-        world = np.array(evaluated.matrix_world, dtype=np.float64)
-    finally:
-        evaluated.to_mesh_clear()
-    points = (local.reshape(-1, 3).astype(np.float64) @ world[:3, :3].T + world[:3, 3])[:, :2]
-    triangles = points[corners].reshape(-1, 3, 2)
+    mesh = world_mesh(region, bpy.context.evaluated_depsgraph_get())
+    triangles = mesh.points[mesh.triangles][:, :, :2]
     area = np.abs(_cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0]))
     triangles = triangles[area > 1e-12]
     if len(triangles) == 0:
@@ -88,7 +77,7 @@ def _cross(a, b):
     return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
 
 
-def _draw(draw, triangles, count, spacing, clearance, blocked, core, taken, region_name):
+def _draw(rng, triangles, count, spacing, clearance, blocked, core, taken, region_name):
     """`count` points drawn uniformly over `triangles`, each clear of the
     obstacles by `clearance` and `spacing` from the others and from `taken`."""
     area = np.abs(_cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0]))
@@ -97,8 +86,8 @@ def _draw(draw, triangles, count, spacing, clearance, blocked, core, taken, regi
     for _ in range(TRIES_PER_AGENT * count):
         if len(points) == count:
             break
-        a, b, c = triangles[draw.choice(len(triangles), p=weights)]
-        u, v = draw.random(2)
+        a, b, c = triangles[rng.choice(len(triangles), p=weights)]
+        u, v = rng.random(2)
         if u + v > 1:
             u, v = 1 - u, 1 - v
         point = a + u * (b - a) + v * (c - a)

@@ -309,7 +309,7 @@ def _write_keys(points, at, value, slope, reach) -> None:
         points.foreach_set("interpolation", numpy.full(len(at), LINEAR))
         return
     before, after = reach
-    free = numpy.full(len(at), HANDLE_FREE)  # new keys are Bezier, their handles automatic
+    free = numpy.full(len(at), HANDLE_FREE)  # new keys are Bezier with automatic handles: free them
     points.foreach_set("handle_left_type", free)
     points.foreach_set("handle_right_type", free)
     points.foreach_set("handle_left", _pairs(at - before, value - slope * before))

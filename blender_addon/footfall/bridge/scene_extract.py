@@ -219,17 +219,25 @@ def _leaves(agent) -> bool:
     return bool(value)
 
 
-def _faces(obj, depsgraph) -> List[ObstacleInput]:
-    """The object's evaluated faces in world space, one mesh obstacle each
-    (a face whose outline seen from above is concave, one per triangle): the
-    core's footprint of a mesh is its hull, which is then the face's own
-    outline (a segment for a face on edge), and the full-body planner meets
-    the real surfaces in 3-D. Read in bulk."""
+@dataclass(frozen=True)
+class WorldMesh:
+    """An object's evaluated mesh in world space, as arrays."""
+
+    points: np.ndarray  # (vertices, 3) [m]
+    triangles: np.ndarray  # (triangles, 3) vertex indices
+    triangle_faces: np.ndarray  # (triangles,) the face each triangle is of
+    loop_starts: np.ndarray  # (faces,) each face's first corner in loop_vertices
+    loop_vertices: np.ndarray  # (corners,) vertex indices, face after face
+
+
+def world_mesh(obj, depsgraph) -> WorldMesh:
+    """The object's evaluated mesh (modifiers applied) in world space, read
+    in bulk (foreach_get)."""
     evaluated = obj.evaluated_get(depsgraph)
     mesh = evaluated.to_mesh()
     try:
         mesh.calc_loop_triangles()
-        corners = _read(mesh.loop_triangles, "vertices", 3, np.int32)
+        triangles = _read(mesh.loop_triangles, "vertices", 3, np.int32).reshape(-1, 3)
         triangle_faces = _read(mesh.loop_triangles, "polygon_index", 1, np.int32)
         loop_starts = _read(mesh.polygons, "loop_start", 1, np.int32)
         loop_vertices = _read(mesh.loops, "vertex_index", 1, np.int32)
@@ -237,26 +245,37 @@ def _faces(obj, depsgraph) -> List[ObstacleInput]:
         world = np.array(evaluated.matrix_world, dtype=np.float64)
     finally:
         evaluated.to_mesh_clear()
-    if len(triangle_faces) == 0:
-        raise SceneError(f"Obstacle '{obj.name}' has no faces: Footfall reads an obstacle's faces "
-                         f"(fill its outline, or give a wall a thickness)")
     points = local.reshape(-1, 3).astype(np.float64) @ world[:3, :3].T + world[:3, 3]
-    convex = _convex_from_above(points[:, :2], loop_starts, loop_vertices)
-    # Triangles of a convex face share its key; those of a concave one get their own.
-    keys = np.where(convex[triangle_faces], triangle_faces, len(convex) + np.arange(len(triangle_faces)))
-    order = np.argsort(keys, kind="stable")
-    groups = np.split(corners.reshape(-1, 3)[order], np.flatnonzero(np.diff(keys[order])) + 1)
-    obstacles = []
-    for triangles in groups:
-        used, local_triangles = np.unique(triangles, return_inverse=True)
-        obstacles.append(ObstacleInput(mesh=(points[used].tolist(), local_triangles.reshape(-1, 3).tolist())))
-    return obstacles
+    return WorldMesh(points, triangles, triangle_faces, loop_starts, loop_vertices)
 
 
 def _read(collection, attribute: str, width: int, dtype) -> np.ndarray:
     values = np.empty(width * len(collection), dtype=dtype)
     collection.foreach_get(attribute, values)
     return values
+
+
+def _faces(obj, depsgraph) -> List[ObstacleInput]:
+    """The object's evaluated faces in world space, one mesh obstacle each
+    (a face whose outline seen from above is concave, one per triangle): the
+    core's footprint of a mesh is its hull, which is then the face's own
+    outline (a segment for a face on edge), and the full-body planner meets
+    the real surfaces in 3-D."""
+    mesh = world_mesh(obj, depsgraph)
+    if len(mesh.triangles) == 0:
+        raise SceneError(f"Obstacle '{obj.name}' has no faces: Footfall reads an obstacle's faces "
+                         f"(fill its outline, or give a wall a thickness)")
+    convex = _convex_from_above(mesh.points[:, :2], mesh.loop_starts, mesh.loop_vertices)
+    # Triangles of a convex face share its key; those of a concave one get their own.
+    faces = mesh.triangle_faces
+    keys = np.where(convex[faces], faces, len(convex) + np.arange(len(faces)))
+    order = np.argsort(keys, kind="stable")
+    groups = np.split(mesh.triangles[order], np.flatnonzero(np.diff(keys[order])) + 1)
+    obstacles = []
+    for triangles in groups:
+        used, local_triangles = np.unique(triangles, return_inverse=True)
+        obstacles.append(ObstacleInput(mesh=(mesh.points[used].tolist(), local_triangles.reshape(-1, 3).tolist())))
+    return obstacles
 
 
 def _convex_from_above(xy: np.ndarray, loop_starts: np.ndarray, loop_vertices: np.ndarray) -> np.ndarray:

@@ -124,9 +124,8 @@ class FOOTFALL_OT_plan(bpy.types.Operator):
 
     def execute(self, context):
         """Plans at once (scripts, and Blender without a window)."""
-        from ..core.plan_job import PlanJob
-
         from ..bridge import plan_watch
+        from ..core.plan_job import PlanJob
 
         window_manager = context.window_manager
         read_at = plan_watch.changes(context.scene)
@@ -189,5 +188,6 @@ class FOOTFALL_OT_plan(bpy.types.Operator):
     def _say(self, context):
         state = "stopping" if self._job.cancelled else "Esc to stop"
         context.workspace.status_text_set(f"Footfall: planning, {round(100 * self._job.progress)} % ({state})")
+
 
 classes = (FOOTFALL_OT_load_scenario, FOOTFALL_OT_plan)
