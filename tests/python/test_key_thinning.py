@@ -68,6 +68,7 @@ def test_two_samples_are_both_kept(ff):
 
 def test_bad_input_is_refused(ff):
     for times, values, tolerance in (([0.0, 1.0], [0.0], [0.1]), ([0.0, 1.0], [[0.0, 1.0], [1.0, 2.0]], [0.1] * 3),
-                                     ([0.0, 1.0], [0.0, 1.0], [0.0])):
+                                     ([0.0, 1.0], [0.0, 1.0], [0.0]), ([1.0, 1.0], [0.0, 1.0], [0.1]),
+                                     ([0.0, 1.0], [0.0, float("nan")], [0.1])):
         with pytest.raises(ValueError, match="keys_to_keep"):
             ff.keys_to_keep(times, values, tolerance)

@@ -7,7 +7,8 @@
 namespace footfall::animate {
 namespace {
 
-// Fritsch-Carlson slopes of every sample, per channel (row-major).
+// Each sample's slope per channel (row-major): three-point, flat where the
+// motion turns or halts, bounded as Fritsch and Carlson bound it.
 std::vector<double> sample_slopes(const std::vector<double>& times, const std::vector<double>& values,
                                   std::size_t channels) {
   const std::size_t count = times.size();
@@ -79,6 +80,11 @@ ThinnedKeys keys_to_keep(const std::vector<double>& times, const std::vector<dou
     throw std::invalid_argument("keys_to_keep: values must have one row of every channel per time");
   for (const double t : tolerance)
     if (!(std::isfinite(t) && t > 0.0)) throw std::invalid_argument("keys_to_keep: tolerances must be > 0");
+  for (std::size_t i = 0; i < count; ++i)
+    if (!std::isfinite(times[i]) || (i > 0 && !(times[i] > times[i - 1])))
+      throw std::invalid_argument("keys_to_keep: times must be finite and increasing");
+  for (const double v : values)
+    if (!std::isfinite(v)) throw std::invalid_argument("keys_to_keep: values must be finite");
   if (!sample_scale.empty() && sample_scale.size() != count)
     throw std::invalid_argument("keys_to_keep: one scale per sample, or none");
   for (const double k : sample_scale)

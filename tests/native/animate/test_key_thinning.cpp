@@ -94,6 +94,9 @@ TEST(KeyThinning, RefusesMismatchedSizesAndBadTolerances) {
   EXPECT_THROW(keys_to_keep(frames(2), {0, 1}, {}), std::invalid_argument);
   EXPECT_THROW(keys_to_keep(frames(2), {0, 1}, {-1.0}), std::invalid_argument);
   EXPECT_THROW(keys_to_keep(frames(2), {0, 1}, {NAN}), std::invalid_argument);
+  EXPECT_THROW(keys_to_keep({0, 0}, {0, 1}, {0.1}), std::invalid_argument);
+  EXPECT_THROW(keys_to_keep({1, 0}, {0, 1}, {0.1}), std::invalid_argument);
+  EXPECT_THROW(keys_to_keep(frames(2), {0, INFINITY}, {0.1}), std::invalid_argument);
 }
 
 }  // namespace

@@ -30,7 +30,8 @@ struct ThinnedKeys {
 /// secant beside it (Fritsch and Carlson's bound against overshoot).
 /// `times` has n increasing entries, `values` n rows of `tolerance.size()`
 /// channels (row-major). Throws std::invalid_argument for sizes that
-/// differ, no channel, or a tolerance or scale that is not a finite number > 0.
+/// differ, no channel, times not finite and increasing, a value not finite,
+/// or a tolerance or scale that is not a finite number > 0.
 ///
 /// Bottom up: every other kept sample is dropped at once where the curve over
 /// its two kept neighbours fits every sample between them, the odd ones and
