@@ -450,6 +450,32 @@ def test_scatter_places_agents_clear_of_obstacles_and_each_other():
     check(inventory() == before, "a refused scatter changed the scene")
 
 
+class _Layout:
+    """Stands in for a panel's layout: the labels and operators drawn."""
+
+    def __init__(self):
+        self.lines = []
+
+    def label(self, text="", icon="NONE"):
+        self.lines.append(text)
+
+    def operator(self, idname, text="", icon="NONE"):
+        self.lines.append(text or idname)
+        return type("Properties", (), {})()
+
+    def prop(self, data, name):
+        self.lines.append(name)
+
+
+def panel_lines():
+    """What the sidebar panel draws for the scene as it is."""
+    from footfall.ui.panel import FOOTFALL_PT_main
+
+    stand_in = type("Panel", (), {"layout": _Layout()})()
+    FOOTFALL_PT_main.draw(stand_in, bpy.context)
+    return stand_in.layout.lines
+
+
 def test_the_plan_is_out_of_date_once_the_scene_changes():
     """Moving an obstacle, an agent or a goal, scattering or randomizing
     marks the stored plan out of date; Plan makes it current; moving other
@@ -462,6 +488,7 @@ def test_the_plan_is_out_of_date_once_the_scene_changes():
     load_good_scenario()
     scene = bpy.context.scene
     check(not plan_watch.is_stale(scene), "out of date before any plan")
+    check("No plan yet" in panel_lines(), panel_lines())
     bpy.ops.mesh.primitive_cube_add(location=(20, 20, 0))  # not an obstacle
     outsider = bpy.context.active_object
 
@@ -488,8 +515,12 @@ def test_the_plan_is_out_of_date_once_the_scene_changes():
     check(bpy.ops.footfall.randomize_agents(seed=2) == {"FINISHED"}, "randomize failed")
     check(plan_watch.is_stale(scene), "new speeds left the plan current")
 
+    check("Out of date: agents, goals or obstacles changed since" in panel_lines(), panel_lines())
+    planned()
+    check("Out of date: agents, goals or obstacles changed since" not in panel_lines(), panel_lines())
     bpy.context.view_layer.objects.active = bpy.data.objects["bob"]
     check(_own_rig(bpy.context) == "bob: the scene's rig (none yet)", _own_rig(bpy.context))
+    check("bob: the scene's rig (none yet)" in panel_lines(), panel_lines())
     bpy.data.objects["bob"]["footfall_rig"] = "tall"
     check(_own_rig(bpy.context) == "bob: rig 'tall' (footfall_rig)", _own_rig(bpy.context))
     bpy.context.view_layer.objects.active = outsider

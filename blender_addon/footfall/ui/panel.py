@@ -43,10 +43,9 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
         self.layout.operator("footfall.plan", icon="TRACKING")
         again = self.layout.operator("footfall.plan", text="Plan Selected Again", icon="RESTRICT_SELECT_OFF")
         again.selected_only = True
+        from ..bridge import plan_watch
         from ..bridge.plan_store import OUTCOME
         from ..core.plan_report import NOT_THERE
-
-        from ..bridge import plan_watch
 
         if OUTCOME not in context.scene:
             self.layout.label(text="No plan yet")
