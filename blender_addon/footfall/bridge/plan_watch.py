@@ -42,16 +42,18 @@ def is_stale(scene) -> bool:
 def _on_depsgraph_update(scene, depsgraph) -> None:
     if plan_store.OUTCOME not in scene or is_stale(scene):
         return  # no plan, or known to be out of date: nothing to watch
+    changed = [update.id.original for update in depsgraph.updates
+               if (update.is_updated_transform or update.is_updated_geometry)
+               and isinstance(update.id, bpy.types.Object)]
+    if not changed:
+        return  # playback and most edits move nothing: the collections are not walked
     watched = set()
     for name in (AGENTS, OBSTACLES):
         collection = collection_in(scene, name)
         if collection is not None:
             watched.update(collection.all_objects)
-    for update in depsgraph.updates:
-        if (update.is_updated_transform or update.is_updated_geometry) and \
-                isinstance(update.id, bpy.types.Object) and update.id.original in watched:
-            note_change(scene)
-            return
+    if any(obj in watched for obj in changed):
+        note_change(scene)
 
 
 def register() -> None:

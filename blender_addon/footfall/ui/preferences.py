@@ -7,6 +7,7 @@ import bpy
 
 ADDON = __package__.rpartition(".")[0]  # "footfall", or "bl_ext.<repository>.footfall" as an extension
 MAX_THREADS = 64  # the core's bound
+EVERY_CORE = min(os.cpu_count() or 1, MAX_THREADS)
 
 
 class FOOTFALL_AP_preferences(bpy.types.AddonPreferences):
@@ -15,7 +16,7 @@ class FOOTFALL_AP_preferences(bpy.types.AddonPreferences):
     threads: bpy.props.IntProperty(
         name="Planning Threads",
         description="Threads the planning core plans on (the plan is the same for any number)",
-        default=min(os.cpu_count() or 1, MAX_THREADS), min=1, max=MAX_THREADS,
+        default=EVERY_CORE, min=1, max=MAX_THREADS,
     )
 
     def draw(self, context):
@@ -26,5 +27,5 @@ def planning_threads(context) -> int:
     """The preference, or every core when the add-on's preferences are not there."""
     addon = context.preferences.addons.get(ADDON)
     if addon is None or addon.preferences is None:
-        return min(os.cpu_count() or 1, MAX_THREADS)
+        return EVERY_CORE
     return addon.preferences.threads
