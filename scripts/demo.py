@@ -42,23 +42,31 @@ def stage(scene, target: Vector) -> None:
 
 def _behaviours_time(plan, ff) -> float:
     """A time [s] when one walker holds its arms in while another side-steps
-    (else half way through the side steps), for the picture."""
-    def spans(behavior):
+    (the middle of the longest such stretch of arms held in; else half way
+    through the side steps), for the picture."""
+    def sections(behavior):
+        """Each agent's runs of consecutive steps of the behaviour, (start, end)."""
         found = []
         for agent in plan.agents:
-            steps = [step for step in agent.footsteps if step.behavior == behavior]
-            if steps:
-                found.append((steps[0].start_time, steps[-1].end_time))
+            run = None
+            for step in agent.footsteps:
+                if step.behavior != behavior:
+                    run = None
+                elif run is None:
+                    run = [step.start_time, step.end_time]
+                    found.append(run)
+                else:
+                    run[1] = step.end_time
         return found
 
-    side_steps, arms_in = spans(ff.Behavior.SIDE_STEP), spans(ff.Behavior.ARMS_IN)
+    side_steps, arms_in = sections(ff.Behavior.SIDE_STEP), sections(ff.Behavior.ARMS_IN)
     if not side_steps:
         raise SystemExit("demo: nobody side-steps")
-    for start, end in arms_in:
+    for start, end in sorted(arms_in, key=lambda run: run[0] - run[1]):
         middle = 0.5 * (start + end)
         if any(s <= middle <= e for s, e in side_steps):
             return middle
-    return 0.5 * sum(side_steps[0])
+    return 0.5 * sum(max(side_steps, key=lambda run: run[1] - run[0]))
 
 
 def check(result, what):

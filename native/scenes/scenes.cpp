@@ -28,9 +28,10 @@ Scenario demo_scenario() {
   scenario.obstacles.push_back(box_obstacle({9.8, -2.2}, {0.8, 0.8}, 0.75));
   scenario.obstacles.push_back(box_obstacle({10.2, 2.6}, {1.4, 0.6}, 0.9));
   scenario.obstacles.push_back(box_obstacle({13.0, -0.6}, {0.6, 1.6}, 1.0));
-  // Below the door the wall goes on as a block 2 m deep with two narrow gaps:
-  // 0.55 m, walked with the arms held in, and 0.42 m, side-stepped.
-  const double gap_ends[] = {-6.0, -7.5 + 0.275, -7.5 - 0.275, -10.0 + 0.21, -10.0 - 0.21, -12.5};
+  // Below the door the wall goes on as a block 2 m deep with two narrow gaps
+  // for the project's rig (its body's clearances 0.25, 0.31 and 0.41 m):
+  // 0.70 m, walked with the arms held in, and 0.56 m, side-stepped.
+  const double gap_ends[] = {-6.0, -7.5 + 0.35, -7.5 - 0.35, -10.0 + 0.28, -10.0 - 0.28, -12.5};
   for (int piece = 0; piece < 3; ++piece) {
     const double top = gap_ends[2 * piece], bottom = gap_ends[2 * piece + 1];
     scenario.obstacles.push_back(box_obstacle({5.0, 0.5 * (top + bottom)}, {2.0, top - bottom}, 1.6));

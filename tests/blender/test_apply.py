@@ -672,7 +672,8 @@ def test_behaviours_play_their_clips():
         start, end = scene.frame_start + section.start * fps, scene.frame_start + section.end * fps
         check(strip.action.get("footfall_clip_of") == profile.clips[section.behavior],
               f"{strip.name} plays {strip.action.name}")
-        check(strip.frame_start <= start + 1e-6 and strip.frame_end >= end - 1e-6,
+        # Blender holds frames in single precision.
+        check(strip.frame_start <= start + 1e-4 and strip.frame_end >= end - 1e-4,
               f"{strip.name} spans {strip.frame_start}-{strip.frame_end}, its section {start}-{end}")
 
     half_width = torso_half_width(rig, profile)

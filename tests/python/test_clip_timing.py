@@ -4,7 +4,7 @@ import math
 
 import pytest
 
-from footfall.core.clip_timing import Step, sections, strip_timing
+from footfall.core.clip_timing import Step, cross_fades, sections, strip_timing
 
 
 def clip_frame_at(timing, frame, clip_start):
@@ -26,6 +26,15 @@ def test_sections_split_on_behaviour_and_stops():
     assert [s.behavior for s in result] == ["walk", "arms_in", "idle"]
     assert (result[1].start, result[1].end) == (2.0, 3.5)
     assert len(result[0].steps) == 4
+
+
+def test_cross_fades_lie_in_the_section_that_reaches_wider():
+    steps = (walk(2) + walk(2, start=1.0, behavior="arms_in") + [Step(2.0, 2.5, "left", "stop", "arms_in")]
+             + [Step(2.5, 3.0, "right", "side_step", "side_step")] + walk(2, start=3.0))
+    result = sections(steps)
+    assert [s.behavior for s in result] == ["walk", "arms_in", "idle", "side_step", "walk"]
+    # Into a narrower section the clips change before it begins; into a wider one after.
+    assert cross_fades(result, 0.25) == [(0.0, 0.0), (0.5, 0.5), (0.0, 0.0), (0.5, 0.5), (0.0, 0.0)]
 
 
 @pytest.mark.parametrize("first", ["left", "right"])

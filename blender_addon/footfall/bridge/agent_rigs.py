@@ -14,6 +14,7 @@ from typing import Dict, Optional
 import bpy
 
 from ..core.character import COM_ABOVE_HIPS, derive_parameters, with_rig
+from .rig_body import body_of
 from .rig_import import imported_rigs, profile_of
 from .scene_extract import AGENT_RIG, agent_empties
 
@@ -62,12 +63,13 @@ def sized(document: dict, agent_rigs: Dict[str, str], rig: Optional[bpy.types.Ob
     (where the scene sets no value itself), and every agent with a rig of
     its own walking with a character sized from that one (where the agent
     sets no value itself)."""
-    result = with_rig(document, profile_of(rig).dimensions) if rig is not None else dict(document)
+    result = with_rig(document, profile_of(rig).dimensions, body_of(rig)) if rig is not None else dict(document)
     agents = []
     for entry in result.get("agents", []):
         own = agent_rigs.get(entry["name"])
         if own is not None and (rig is None or own != rig.name):
-            derived, _planner = derive_parameters(profile_of(_agent_rig(entry["name"], own)).dimensions)
+            own_rig = _agent_rig(entry["name"], own)
+            derived, _planner = derive_parameters(profile_of(own_rig).dimensions, body_of(own_rig))
             entry = {**entry, "character": {**derived, **entry.get("character", {})}}
         agents.append(entry)
     result["agents"] = agents

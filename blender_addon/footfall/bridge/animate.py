@@ -26,7 +26,7 @@ import bpy
 import numpy
 from mathutils import Matrix, Vector
 
-from ..core import clip_cycle, clip_timing, foot_roll, native
+from ..core import clip_timing, foot_roll, native
 from . import action_curves, procedural_clips, rig_clips
 from .rig_import import foot_points, profile_of
 
@@ -459,11 +459,13 @@ def _upper_body(armature, agent, clips: Dict[str, rig_clips.Clip], fps: float, f
     base.extrapolation = "HOLD_FORWARD"
     add_track("A")
     add_track("B")
+    fades = clip_timing.cross_fades(sections, BLEND_SECONDS)
     for i, section in enumerate(sections):
         clip = clips[section.behavior]
-        # Neighbouring strips overlap by the blend time; the last plays to the scene's end.
-        lead = BLEND_SECONDS if i > 0 else 0.0
-        tail = BLEND_SECONDS if i < len(sections) - 1 else (last_frame - frame_offset) / fps - section.end
+        # Neighbouring strips overlap by the cross-fade; the last plays to the scene's end.
+        lead, tail = fades[i]
+        if i == len(sections) - 1:
+            tail = (last_frame - frame_offset) / fps - section.end
         timing = clip_timing.strip_timing(section, clip.first, clip.first + clip.cycle_frames, fps, frame_offset,
                                           lead, max(tail, 0.0), clip.cycle.strike)
         k = track_for(i, timing.frame_start)
@@ -533,9 +535,7 @@ def clips_of(rig, profile) -> Dict[str, rig_clips.Clip]:
     for behavior in profile.clips:
         clip = rig_clips.playable(rig, profile, behavior)
         if clip is None:
-            action = procedural_clips.make(behavior, rig, profile)
-            first, last = action.curve_frame_range
-            clip = rig_clips.Clip(action, first, last, clip_cycle.ClipCycle(1, clip_cycle.CONVENTION, "convention"))
+            clip = procedural_clips.clip(behavior, rig, profile)
         _make_cyclic(clip)
         clips[behavior] = clip
     return clips

@@ -9,7 +9,8 @@ import math
 import bpy
 from mathutils import Matrix, Vector
 
-from . import action_curves
+from ..core import clip_cycle
+from . import action_curves, rig_clips
 
 CYCLE_FRAMES = {"walk": 24, "arms_in": 24, "side_step": 24, "idle": 48}
 SWING = math.radians(20)  # arm swing each way while walking
@@ -63,3 +64,11 @@ def make(behavior: str, armature, profile) -> bpy.types.Action:
                 turn = Matrix.Identity(3)
             _key(action, bone.name, 1 + phase * cycle, _basis(rest, turn))
     return action
+
+
+def clip(behavior: str, armature, profile) -> rig_clips.Clip:
+    """The procedural action for `behavior` as a clip of one cycle, timed by
+    the convention (the left arm forward at the right heel strike)."""
+    action = make(behavior, armature, profile)
+    first, last = action.curve_frame_range
+    return rig_clips.Clip(action, first, last, clip_cycle.ClipCycle(1, clip_cycle.CONVENTION, "convention"))

@@ -6,6 +6,7 @@ copy Apply plays, with the root motion left out.
 The rig's actions themselves are never changed: Apply plays copies.
 """
 
+import dataclasses
 import math
 import re
 from dataclasses import dataclass
@@ -159,6 +160,22 @@ def root_motion(rig, action, bones: Dict[str, object]) -> List[bpy.types.FCurve]
     return moving
 
 
+def posed(rig, action, bones: Dict[str, object], names: Sequence[str], frames) -> Dict[str, numpy.ndarray]:
+    """Armature-space matrices (len(frames), 4, 4) of the bones `names` as
+    Apply plays `action` at the frames: without its root motion."""
+    moving = {(c.data_path, c.array_index) for c in root_motion(rig, action, bones)}
+    channels: Dict[str, Dict[str, Dict[int, bpy.types.FCurve]]] = {}
+    for bone, props in _channels(action).items():
+        for prop, curves in props.items():
+            for index, curve in curves.items():
+                if (curve.data_path, curve.array_index) not in moving:
+                    channels.setdefault(bone, {}).setdefault(prop, {})[index] = curve
+    needed = sorted({b for name in names for b in _chain(rig.data, name)})
+    rests = {b.name: clip_cycle.BoneRest(b.name, b.parent.name if b.parent else None, numpy.array(b.matrix_local))
+             for b in rig.data.bones}
+    return clip_cycle.pose_matrices(rests, _bases(rig, channels, needed, frames), names, len(frames))
+
+
 def _playable_copy(rig, action, bones, behavior: str) -> bpy.types.Action:
     """A copy of the rig's action without its root motion, its bone
     locations in metres (the rig's world scale)."""
@@ -178,9 +195,9 @@ def _playable_copy(rig, action, bones, behavior: str) -> bpy.types.Action:
     return copy
 
 
-def playable(rig, profile, behavior: str) -> Optional[Clip]:
-    """The clip Apply plays for `behavior`: a copy of the rig's action named
-    in its profile, or None where the profile names none."""
+def own_clip(rig, profile, behavior: str) -> Optional[Clip]:
+    """The rig's own action named in its profile for `behavior` (not a
+    copy), or None where the profile names none."""
     name = profile.clips.get(behavior)
     if not name:
         return None
@@ -189,8 +206,15 @@ def playable(rig, profile, behavior: str) -> Optional[Clip]:
         raise ClipError(f"rig '{rig.name}': its {behavior} clip '{name}' is no longer in this file "
                         "(import the rig again, or name another clip in its profile)")
     first, last = _frame_range(action)
-    return Clip(_playable_copy(rig, action, profile.bones, behavior), first, last,
-                find_cycle(rig, action, profile.bones))
+    return Clip(action, first, last, find_cycle(rig, action, profile.bones))
+
+
+def playable(rig, profile, behavior: str) -> Optional[Clip]:
+    """The clip Apply plays for `behavior`: a copy of the rig's own, or None."""
+    clip = own_clip(rig, profile, behavior)
+    if clip is None:
+        return None
+    return dataclasses.replace(clip, action=_playable_copy(rig, clip.action, profile.bones, behavior))
 
 
 def remove_unused_copies() -> None:

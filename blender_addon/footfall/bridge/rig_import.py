@@ -15,7 +15,7 @@ import bpy
 
 from ..core import bone_map, rig_measure, rig_profile
 from ..core.rig_profile import RigProfile
-from . import datablocks, rig_clips
+from . import datablocks, rig_body, rig_clips
 
 PROFILE_PROPERTY = "footfall_profile"
 
@@ -175,7 +175,9 @@ def import_rig(filepath: str = "", mapping: Optional[Dict[str, object]] = None,
         clips, clip_notes = rig_clips.choose(rig, bones, given.clips, actions, source)
         notes += clip_notes
         profile = RigProfile(bones=bones, clips=clips, dimensions=dimensions, rig=source)
+        body = json.dumps(rig_body.measure(rig, profile))
         rig[PROFILE_PROPERTY] = json.dumps(profile.to_document())  # last: a failure changes nothing
+        rig[rig_body.BODY_PROPERTY] = body
     except Exception:
         datablocks.remove_new(before)
         raise

@@ -10,16 +10,20 @@ proportion to sqrt(L).
 """
 
 import math
-from typing import Dict, Mapping, Tuple
+from typing import Dict, Mapping, Optional, Tuple
 
 REFERENCE_LEG_LENGTH = 0.9  # [m] of the paper's default character
 COM_ABOVE_HIPS = 1.05  # the COM stands about 5 % above the hip joints
 ARM_THICKNESS = 0.1  # [m] per side outside the shoulder joints, at the reference size
 DEFAULT_GAITS = ((0.6, 0.65), (1.3, 0.5), (1.6, 0.45))  # as PlannerParams' defaults
+SIDE_STEP = (0.6, 1.2)  # the core's side step at the reference size: speed [m/s], cycle [s]
 
 
-def derive_parameters(dimensions: Mapping[str, float]) -> Tuple[Dict[str, object], Dict[str, object]]:
-    """(character overrides, planner overrides) for a scenario document."""
+def derive_parameters(dimensions: Mapping[str, float], body: Optional[Mapping] = None
+                      ) -> Tuple[Dict[str, object], Dict[str, object]]:
+    """(character overrides, planner overrides) for a scenario document;
+    `body` (bridge/rig_body: the rig's height and its poses per behaviour)
+    gives the full-body planner the rig's own body."""
     scale = dimensions["leg_length"] / REFERENCE_LEG_LENGTH
     time_scale = math.sqrt(scale)
     speed_scale = math.sqrt(scale)
@@ -39,16 +43,23 @@ def derive_parameters(dimensions: Mapping[str, float]) -> Tuple[Dict[str, object
         "foot_offset": 0.1 * scale,
         "foot_radius": 0.3 * dimensions["foot_length"],
     }
+    if body is not None:
+        walk = {"cycle_duration": 2 * character["preferred_step_duration"], "speed": character["preferred_speed"]}
+        timing = {"walk": walk, "arms_in": walk,
+                  "side_step": {"cycle_duration": SIDE_STEP[1] * time_scale, "speed": SIDE_STEP[0] * speed_scale}}
+        character["body_height"] = body["height"]
+        character["side_step_speed"] = timing["side_step"]["speed"]
+        character["behaviors"] = {b: {**timing[b], "poses": poses} for b, poses in body["poses"].items()}
     planner = {
         "gaits": [{"speed": v * speed_scale, "duration": t * time_scale} for v, t in DEFAULT_GAITS],
     }
     return character, planner
 
 
-def with_rig(document: dict, dimensions: Mapping[str, float]) -> dict:
+def with_rig(document: dict, dimensions: Mapping[str, float], body: Optional[Mapping] = None) -> dict:
     """A scenario document whose character and planner take the rig's derived
     parameters, except where the document sets its own."""
-    character, planner = derive_parameters(dimensions)
+    character, planner = derive_parameters(dimensions, body)
     result = dict(document)
     result["character"] = {**character, **document.get("character", {})}
     result["planner"] = {**planner, **document.get("planner", {})}

@@ -78,10 +78,11 @@ def basis_matrices(location: numpy.ndarray, rotation: numpy.ndarray, scale: nump
     return basis
 
 
-def pose_heads(rests: Dict[str, BoneRest], bases: Dict[str, numpy.ndarray], names: Sequence[str],
-               count: int) -> Dict[str, numpy.ndarray]:
-    """Armature-space heads (count, 3) of the bones `names` at each sample;
-    a bone without a basis in `bases` stays at its rest relative to its parent."""
+def pose_matrices(rests: Dict[str, BoneRest], bases: Dict[str, numpy.ndarray], names: Sequence[str],
+                  count: int) -> Dict[str, numpy.ndarray]:
+    """Armature-space pose matrices (count, 4, 4) of the bones `names` at each
+    sample; a bone without a basis in `bases` stays at its rest relative to
+    its parent."""
     poses: Dict[str, numpy.ndarray] = {}
 
     def pose(name: str) -> numpy.ndarray:
@@ -93,7 +94,13 @@ def pose_heads(rests: Dict[str, BoneRest], bases: Dict[str, numpy.ndarray], name
             poses[name] = above @ local @ basis
         return poses[name]
 
-    return {name: pose(name)[:, :3, 3] for name in names}
+    return {name: pose(name) for name in names}
+
+
+def pose_heads(rests: Dict[str, BoneRest], bases: Dict[str, numpy.ndarray], names: Sequence[str],
+               count: int) -> Dict[str, numpy.ndarray]:
+    """Armature-space heads (count, 3) of the bones `names` at each sample."""
+    return {name: matrices[:, :3, 3] for name, matrices in pose_matrices(rests, bases, names, count).items()}
 
 
 def find_cycle(forward: numpy.ndarray, leg_length: float, left_foot: numpy.ndarray, right_foot: numpy.ndarray,

@@ -10,7 +10,7 @@ strikes. A stop and standing still play "idle".
 """
 
 from dataclasses import dataclass
-from typing import List, Sequence
+from typing import List, Sequence, Tuple
 
 import numpy
 
@@ -66,6 +66,26 @@ def sections(steps: Sequence[Step]) -> List[Section]:
 def _section(run: List[Step]) -> Section:
     behavior = "idle" if run[0].kind == "stop" else run[0].behavior
     return Section(behavior, run[0].start, run[-1].end, tuple(run))
+
+
+# How far each behaviour's arms reach across the way, narrowest first: the
+# planner checks a section's own body only over its own time.
+REACH = {"side_step": 0, "arms_in": 1, "idle": 2, "walk": 3}
+
+
+def cross_fades(sections: Sequence[Section], blend: float) -> List[Tuple[float, float]]:
+    """Per section, (lead, tail) [s]: how long its clip plays before its start
+    and past its end, over the neighbour's. A boundary's cross-fade (2 *
+    `blend` long) lies wholly in the section that reaches wider: a clip that
+    holds the arms in has them in from its section's start, and swinging arms
+    swing out only once theirs has begun."""
+    fades = [[0.0, 0.0] for _ in sections]
+    for i in range(1, len(sections)):
+        if REACH[sections[i].behavior] > REACH[sections[i - 1].behavior]:
+            fades[i - 1][1] = 2.0 * blend
+        else:
+            fades[i][0] = 2.0 * blend
+    return [(lead, tail) for lead, tail in fades]
 
 
 def strip_timing(section: Section, clip_start: float, clip_end: float, fps: float, frame_offset: float,

@@ -17,6 +17,16 @@ const char* behavior_of(const Footstep& step) {
   }
 }
 
+// How far each behaviour's arms reach across the way, narrowest first
+// (core/clip_timing.py's REACH): a boundary's cross-fade lies wholly in the
+// section that reaches wider, since the planner checks each section's own
+// body only over its own time.
+int reach(const std::string& behavior) {
+  if (behavior == "side_step") return 0;
+  if (behavior == "arms_in") return 1;
+  return behavior == "idle" ? 2 : 3;
+}
+
 }  // namespace
 
 SectionTiming::SectionTiming(const AgentPlan& plan, const std::map<std::string, Clip>& clips, double scene_end,
@@ -47,8 +57,12 @@ SectionTiming::SectionTiming(const AgentPlan& plan, const std::map<std::string, 
     strip.clip = &clips.at(section.behavior);
     strip.walk = section.behavior == "walk";
     const double start = steps[section.first].start_time, end = steps[section.last].end_time;
-    const double lead = i > 0 ? kBlendSeconds : 0.0;
-    const double tail = i + 1 < sections.size() ? kBlendSeconds : std::max(scene_end - end, 0.0);
+    const bool wider_than_before = i > 0 && reach(section.behavior) > reach(sections[i - 1].behavior);
+    const bool wider_after = i + 1 < sections.size() && reach(sections[i + 1].behavior) > reach(section.behavior);
+    const double lead = i > 0 && !wider_than_before ? 2 * kBlendSeconds : 0.0;
+    const double tail = i + 1 == sections.size() ? std::max(scene_end - end, 0.0)
+                        : wider_after             ? 2 * kBlendSeconds
+                                                  : 0.0;
     strip.start = start - lead;
     const double cycle = strip.clip->cycle;
     double walking_time = 0, right_strike = -1;

@@ -5,9 +5,10 @@
 // Laid out as the add-on lays its NLA strips (bridge/animate.py with
 // core/clip_timing.py) and blended as Blender's NLA blends them, so that both
 // play the same motion: over a base track that plays "idle" throughout,
-// strips overlap their neighbours by kBlendSeconds on two alternating tracks,
-// the upper one fading in and out; a walking strip's influence is also the
-// share of its amplitude (UpperBodyFollower::swing_at).
+// strips overlap their neighbours by twice kBlendSeconds, within the section
+// whose arms reach wider, on two alternating tracks, the upper one fading in
+// and out; a walking strip's influence is also the share of its amplitude
+// (UpperBodyFollower::swing_at).
 #pragma once
 
 #include <map>
@@ -19,7 +20,7 @@
 
 namespace footfall::animate {
 
-constexpr double kBlendSeconds = 0.25;  ///< a strip's overlap with its neighbours and its fades
+constexpr double kBlendSeconds = 0.25;  ///< a strip's fades; half its overlap with a neighbour
 
 /// One clip playing at one instant: at `time` of its animation, with
 /// `influence` over what the tracks below give.
