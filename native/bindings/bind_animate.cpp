@@ -96,19 +96,21 @@ void bind_animate(py::module_& m) {
       [](const AgentPlan& agent, const py::array_t<double>& times, double full_speed) {
         const animate::UpperBodyFollower follower(agent, full_speed);
         const auto count = times.size();
-        py::array_t<double> facing(count), swing(count), look(count);
+        py::array_t<double> facing(count), swing(count), look(count), twist(count);
         for (py::ssize_t i = 0; i < count; ++i) {
           const double t = times.at(i);
           facing.mutable_at(i) = animate::body_facing(agent, t);
           swing.mutable_at(i) = follower.swing_at(t);
           look.mutable_at(i) = follower.look_at(t);
+          twist.mutable_at(i) = follower.twist_at(t);
         }
-        return py::make_tuple(facing, swing, look);
+        return py::make_tuple(facing, swing, look, twist);
       },
       py::arg("agent"), py::arg("times"), py::arg("full_speed"),
-      "How the upper body follows an agent's plan at `times` [s]: (facing, swing, look) arrays: the "
-      "body's facing [rad], the share of the walking clip's amplitude, and the look angle [rad] the "
-      "chest and head turn by (LOOK_SHARES of it each, the head on top of the chest).");
+      "How the upper body follows an agent's plan at `times` [s]: (facing, swing, look, twist) arrays: "
+      "the body's facing [rad], the share of the walking clip's amplitude, the look angle [rad] the "
+      "chest and head turn by (LOOK_SHARES of it each, the head on top of the chest), and the chest's "
+      "twist [rad] to the heading the planner tested (on top of its look).");
   m.def(
       "keys_to_keep",
       [](const py::array_t<double, py::array::c_style | py::array::forcecast>& times,

@@ -230,7 +230,7 @@ def swing_amplitudes(ff, plan):
     (agent,) = plan.agents
     frames = numpy.arange(scene.frame_start, scene.frame_end + 1)
     times = numpy.minimum((frames - scene.frame_start) / fps, agent.end_time())
-    _, swing, _ = ff.upper_body(agent, times, (agent.character or plan.character).preferred_speed)
+    _, swing, _, _ = ff.upper_body(agent, times, (agent.character or plan.character).preferred_speed)
     lead = []
     for frame in frames:
         scene.frame_set(int(frame))
@@ -263,8 +263,8 @@ def test_arms_swing_as_far_as_the_steps_are_fast():
 
 def test_the_head_and_chest_look_into_a_turn():
     """On the demo the head turns from the hips by the look angle's share
-    (the chest's and its own) at every frame, and ahead of every turn of the
-    body the head is already turned that way."""
+    (the chest's and its own) and the chest's twist at every frame, and
+    ahead of every turn of the body the head is already turned that way."""
     ff, plan = demo_applied()
     rig, profile = imported_rig()
     shares = ff.LOOK_SHARES["chest"] + ff.LOOK_SHARES["head"]
@@ -279,10 +279,10 @@ def test_the_head_and_chest_look_into_a_turn():
     for i, frame in enumerate(frames):
         scene.frame_set(int(frame))
         for agent in plan.agents:
-            facing, _, look = looks[agent.name]
+            facing, _, look, twist = looks[agent.name]
             armature = evaluated(agent.name)
-            turned = math.remainder(yaw_of(armature, profile.bones["head"]) - yaw_of(armature, profile.bones["hips"]),
-                                    math.tau)
+            turned = math.remainder(yaw_of(armature, profile.bones["head"]) - yaw_of(armature, profile.bones["hips"])
+                                    - twist[i], math.tau)
             worst = max(worst, abs(turned - shares * look[i]))
             most = max(most, abs(look[i]))
             ahead = facing[min(i + round(0.4 * fps), len(frames) - 1)]  # the body's facing 0.4 s later

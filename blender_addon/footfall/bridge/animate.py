@@ -85,7 +85,7 @@ def _pole_angle(thigh, shin, pole: Vector) -> float:
     projected = normal.cross(thigh.tail_local - thigh.head_local)
     x_axis = thigh.matrix_local.to_3x3().col[0]
     angle = x_axis.angle(projected)
-    return -angle if (thigh.tail_local - thigh.head_local).dot(x_axis.cross(projected)) < 0 else angle
+    return -angle if (thigh.tail_local - thigh.head_local).dot(x_axis.cross(projected)) > 0 else angle
 
 
 def _forward_yaw(data, bones) -> float:
@@ -470,6 +470,7 @@ def _upper_body(armature, agent, clips: Dict[str, rig_clips.Clip], fps: float, f
                                           lead, max(tail, 0.0), clip.cycle.strike)
         k = track_for(i, timing.frame_start)
         strip = tracks[k].strips.new(f"{section.behavior} {i}", int(timing.frame_start), clip.action)
+        strip.name = f"{section.behavior} {i}"  # Blender 3.4 names a new strip after its action
         # The start first: Blender 3.4 moves only the start; scale and repeat then set the end.
         strip.frame_start = timing.frame_start
         strip.action_frame_start, strip.action_frame_end = timing.action_frame_start, timing.action_frame_end
@@ -503,12 +504,12 @@ def _key_influence(strip, frames, influence) -> None:
     curve.update()
 
 
-def _look_ahead(ff, armature, agent_name: str, rest: RigRest, frames, look) -> None:
+def _look_ahead(ff, armature, agent_name: str, rest: RigRest, frames, look, twist) -> None:
     """A top NLA track that turns the chest and head by shares of the `look`
-    angle at the frames (ff.upper_body), about the world's up, combined with
-    (turning on top of) the clips below. Bones not turned by quaternion are
-    left as the clips pose them."""
-    shares = ff.LOOK_SHARES
+    angle at the frames (ff.upper_body), the chest also by its `twist`,
+    about the world's up, combined with (turning on top of) the clips below.
+    Bones not turned by quaternion are left as the clips pose them."""
+    turns = {"chest": ff.LOOK_SHARES["chest"] * look + twist, "head": ff.LOOK_SHARES["head"] * look}
     action = bpy.data.actions.new(f"{agent_name} look ahead")
     action[LOCOMOTION_OF] = armature.name
     channels = {}
@@ -516,7 +517,7 @@ def _look_ahead(ff, armature, agent_name: str, rest: RigRest, frames, look) -> N
         if armature.pose.bones[bone].rotation_mode != "QUATERNION":
             continue
         matrix = armature.data.bones[bone].matrix_local
-        channels[bone] = Keyed(None, _turns(matrix, (0.0, 0.0, 1.0), shares[role] * look))
+        channels[bone] = Keyed(None, _turns(matrix, (0.0, 0.0, 1.0), turns[role]))
     if not channels:
         bpy.data.actions.remove(action)
         return
@@ -588,11 +589,11 @@ def apply_plan(ff, plan, rigs: Dict[str, bpy.types.Object], scene,
         _add_controls(armature, character.rest)
         walker = agent.character or plan.character
         times = numpy.minimum((frames - frame_offset) / fps, agent.end_time())
-        facing, swing, look = ff.upper_body(agent, times, walker.preferred_speed)
+        facing, swing, look, twist = ff.upper_body(agent, times, walker.preferred_speed)
         _write_action(armature, f"{agent.name} locomotion", frames,
                       _locomotion(ff, agent, character.rest, times, facing, walker.preferred_speed))
         _upper_body(armature, agent, character.clips, fps, frame_offset, frames, swing)
-        _look_ahead(ff, armature, agent.name, character.rest, frames, look)
+        _look_ahead(ff, armature, agent.name, character.rest, frames, look, twist)
         _key_leaving(armature, agent, frame_offset, fps)
         if progress:
             progress((i + 1) / len(agents))

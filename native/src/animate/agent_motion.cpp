@@ -201,14 +201,15 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
     }
 
     std::vector<ClipLayer> layers = timing.at(times[f]);
-    const double swing = follower.swing_at(t), look = follower.look_at(t);
+    const double swing = follower.swing_at(t), look = follower.look_at(t), twist = follower.twist_at(t);
     for (ClipLayer& layer : layers)
       if (layer.walk) layer.influence *= swing;
     for (std::size_t i = 0; i < upper_slots.size(); ++i) {
       const int node = rig.upper_body[i];
       Trs pose = layered(layers, node, rig.rest_trs[node]);
       // Turned on top of the clips, as the add-on's look-ahead track combines.
-      if (node == rig.chest) pose.rotation = normalized(pose.rotation * axis_angle(chest_up, kChestLook * look));
+      if (node == rig.chest)
+        pose.rotation = normalized(pose.rotation * axis_angle(chest_up, kChestLook * look + twist));
       if (node == rig.head) pose.rotation = normalized(pose.rotation * axis_angle(head_up, kHeadLook * look));
       motion.frames[upper_slots[i]][f] = pose;
     }

@@ -48,4 +48,21 @@ double UpperBodyFollower::look_at(double t) const {
   return std::clamp(sum / kLookSamples, -kMostLook, kMostLook);
 }
 
+double UpperBodyFollower::twist_at(double t) const {
+  const auto& steps = plan_.footsteps;
+  if (steps.empty()) return 0.0;
+  const double end = plan_.end_time();
+  const double at = std::clamp(t, steps.front().start_time, end);
+  auto later = std::upper_bound(steps.begin(), steps.end(), at,
+                                [](double time, const Footstep& s) { return time < s.start_time; });
+  const std::size_t k = later == steps.begin() ? 0 : static_cast<std::size_t>(later - steps.begin()) - 1;
+  double heading = steps[k].phi;
+  const double into = at - steps[k].start_time;
+  if (k > 0 && into < kTwistEase) {
+    const double u = into / kTwistEase, eased = u * u * (3 - 2 * u);
+    heading = steps[k - 1].phi + eased * wrap_angle(steps[k].phi - steps[k - 1].phi);
+  }
+  return std::clamp(wrap_angle(heading - body_facing(plan_, at)), -kMostTwist, kMostTwist);
+}
+
 }  // namespace footfall::animate

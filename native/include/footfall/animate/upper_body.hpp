@@ -15,6 +15,8 @@ constexpr int kLookSamples = 5;       ///< facings averaged over the look-ahead
 constexpr double kMostLook = 1.0471975511965976;  ///< 60 deg: the largest look angle
 constexpr double kChestLook = 0.4;    ///< share of the look angle the chest turns by
 constexpr double kHeadLook = 0.4;     ///< share the head turns by on top of the chest
+constexpr double kTwistEase = 0.15;   ///< [s] the chest's twist turns to a new step's heading over this
+constexpr double kMostTwist = 1.0471975511965976;  ///< 60 deg: the largest twist of the chest
 
 /// The body's facing at `t` [rad]: between the feet; in a side step, across
 /// the step's direction of travel, on the side the feet point to.
@@ -33,6 +35,12 @@ class UpperBodyFollower {
   /// The look angle at `t` [rad, counter-clockwise]: from the body's facing
   /// to its mean facing over the next kLookAhead, within kMostLook.
   double look_at(double t) const;
+  /// The chest's twist at `t` [rad, counter-clockwise]: from the body's
+  /// facing (between the feet) to the heading the planner tested the body
+  /// at (the step's phi, which may turn ahead of the feet, as at a door the
+  /// shoulders turn to pass), reached kTwistEase into each step from the
+  /// step's before, within kMostTwist.
+  double twist_at(double t) const;
 
  private:
   const AgentPlan& plan_;
