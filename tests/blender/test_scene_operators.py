@@ -730,9 +730,32 @@ def test_steersuite_case_loads():
         check("Agent 'B': custom property 'footfall_leave_at_goal' must be true or false" in str(error), str(error))
 
 
+def test_the_overlay_draws_the_stored_plan():
+    """The overlay's lines come from the stored plan, made once per plan,
+    none while "Show Plan" is off; the panel shows the toggle with a plan."""
+    from footfall.ui import overlay
+
+    fresh_scene()
+    load_good_scenario()
+    scene = bpy.context.scene
+    check(overlay.overlay_of(scene) is None, "an overlay without a plan")
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+    first = overlay.overlay_of(scene)
+    check(first is not None and len(first.fixed.points) > 0, "no overlay for the plan")
+    check(overlay.overlay_of(scene) is first, "the overlay was made again for the same plan")
+    scene.frame_set(scene.frame_start + round(scene.render.fps / scene.render.fps_base))  # a second in
+    check(len(first.under_way(overlay.scene_time(scene)).points) > 0, "no step under way a second in")
+    check("footfall_show_overlay" in panel_lines(), panel_lines())
+    scene.footfall_show_overlay = False
+    check(overlay.overlay_of(scene) is None, "an overlay while Show Plan is off")
+    scene.footfall_show_overlay = True
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+    check(overlay.overlay_of(scene) is not first, "a new plan kept the old overlay")
+
+
 run([test_load_builds_the_conventions_and_extracts_back, test_obstacles_keep_their_shape_in_3d, test_hand_made_agents_and_obstacles_are_extracted,
      test_plan_is_stored_and_saved_with_the_file, test_the_plan_names_those_that_did_not_arrive,
      test_an_agents_own_speed_and_start, test_randomize_draws_speeds_and_rigs_for_the_selected_agents,
      test_scatter_places_agents_clear_of_obstacles_and_each_other, test_the_plan_is_out_of_date_once_the_scene_changes,
      test_errors_leave_the_scene_as_it_was,
-     test_failing_operators_report_and_cancel, test_steersuite_case_loads])
+     test_failing_operators_report_and_cancel, test_steersuite_case_loads, test_the_overlay_draws_the_stored_plan])

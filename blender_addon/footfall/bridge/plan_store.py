@@ -15,8 +15,9 @@ since), Apply animates every agent.
 
 import base64
 import json
+import uuid
 import zlib
-from typing import Iterable, List, Optional
+from typing import Iterable, List, Optional, Tuple
 
 import bpy
 
@@ -27,6 +28,7 @@ PLAIN_TEXT_NAME = "footfall_plan.json"  # the plain JSON of older files
 HEADER = "footfall-plan zlib base64 1"  # the packed text's first line
 OUTCOME = "footfall_plan_outcome"  # the scene's property: what the last Plan reached, for the panel
 REPLANNED = "footfall_replanned"  # the scene's property: agents planned again since the last Apply
+REVISION = "footfall_revision"  # the Text's property: new at every store
 LINE = 76
 
 
@@ -57,10 +59,18 @@ def store(text: str, plan=None) -> None:
     packed = _pack(text)  # first: nothing changes if packing fails
     block = bpy.data.texts.get(TEXT_NAME) or bpy.data.texts.new(TEXT_NAME)
     block.from_string(packed)
+    block[REVISION] = uuid.uuid4().hex
     plain = bpy.data.texts.get(PLAIN_TEXT_NAME)
     if plain is not None:
         bpy.data.texts.remove(plain)
     _last_read = (text, plan)
+
+
+def revision() -> Optional[Tuple[int, Optional[str]]]:
+    """What tells the stored plan from any other, cheaply (the overlay's
+    cache key), or None if no plan is stored."""
+    block = bpy.data.texts.get(TEXT_NAME) or bpy.data.texts.get(PLAIN_TEXT_NAME)
+    return None if block is None else (block.as_pointer(), block.get(REVISION))
 
 
 def load() -> Optional[str]:

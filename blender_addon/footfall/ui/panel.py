@@ -50,6 +50,7 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
         if OUTCOME not in context.scene:
             self.layout.label(text="No plan yet")
         else:
+            self.layout.prop(context.scene, "footfall_show_overlay")
             if plan_watch.is_stale(context.scene):
                 self.layout.label(text="Out of date: agents, goals or obstacles changed since", icon="ERROR")
             for line in context.scene[OUTCOME].split("; "):

@@ -4,7 +4,7 @@
 import bpy
 
 from ..bridge import plan_watch
-from . import agent_operators, preferences, properties, scene_operators
+from . import agent_operators, overlay, preferences, properties, scene_operators
 from .operators import FOOTFALL_OT_apply, FOOTFALL_OT_export_gltf, FOOTFALL_OT_import_rig
 from .panel import FOOTFALL_PT_bone_map, FOOTFALL_PT_main
 
@@ -25,11 +25,13 @@ def register():
     for cls in classes:
         bpy.utils.register_class(cls)
     properties.register()
+    overlay.register()
     plan_watch.register()
 
 
 def unregister():
     plan_watch.unregister()
+    overlay.unregister()
     properties.unregister()
     for cls in reversed(classes):
         bpy.utils.unregister_class(cls)
