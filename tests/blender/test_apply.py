@@ -893,6 +893,42 @@ def test_a_leaving_agent_walks_off_and_disappears():
     check(numpy.all(values[times <= leo.end_time()] > 0.5), "leo is scaled down before leaving")
 
 
+def test_an_apply_stopped_part_way_leaves_the_scene_as_it_was():
+    """The steps the modal Apply takes between events: stopped after two of
+    the demo's agents, the earlier crowd and every name are as they were;
+    run to the end, it replaces the crowd as Apply does."""
+    from footfall.bridge import action_curves, apply_plan
+
+    demo_applied()
+    scene = bpy.context.scene
+    before, frame_end = inventory(), scene.frame_end
+
+    def keys_of_the_crowd():
+        return {obj.name: len(action_curves.curves(obj.animation_data.action)[0].keyframe_points)
+                for obj in bpy.data.collections["Footfall Crowd"].objects if obj.type == "ARMATURE"}
+
+    keys = keys_of_the_crowd()
+    job = apply_plan.ApplyJob(bpy.context)
+    check(job.advance() and job.advance(), "the demo has more than two agents")
+    check(0.0 < job.progress < 1.0, f"progress {job.progress} after two agents")
+    job.cancel()
+    after = inventory()
+    check(after == before, "a stopped Apply changed the scene: "
+          f"{ {k: sorted(set(after[k]) ^ set(before[k])) for k in before if after[k] != before[k]} }")
+    check(scene.frame_end == frame_end, "a stopped Apply changed the frame range")
+    check(keys_of_the_crowd() == keys, "a stopped Apply changed the crowd's animation")
+    job = apply_plan.ApplyJob(bpy.context)
+    steps = 0
+    while job.advance():
+        steps += 1
+    armatures = job.finish()
+    check(steps == len(keys) and job.progress == 1.0, f"{steps} steps for {len(keys)} agents")
+    check(sorted(a.name for a in armatures) == sorted(keys), "the new crowd's agents")
+    after = inventory()
+    check(after == before, "applying the same plan again changed what the scene holds: "
+          f"{ {k: sorted(set(after[k]) ^ set(before[k])) for k in before if after[k] != before[k]} }")
+
+
 run([test_feet_and_pelvis_follow_the_plan, test_on_the_demo_no_stance_foot_moves, test_feet_roll_from_heel_to_toe, test_arms_swing_opposite_to_the_legs,
      test_arms_swing_as_far_as_the_steps_are_fast, test_the_head_and_chest_look_into_a_turn, test_behaviours_play_their_clips,
      test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was,
@@ -900,4 +936,4 @@ run([test_feet_and_pelvis_follow_the_plan, test_on_the_demo_no_stance_foot_moves
      test_a_crowd_with_short_waits_applies, test_a_strip_ending_a_hair_past_a_whole_frame_leaves_room,
      test_a_sheared_pose_is_refused_by_name, test_a_leaving_agent_walks_off_and_disappears,
      test_rigs_with_object_and_parent_transforms_walk_upright_on_the_plan, test_rigs_of_other_origins_walk_on_the_plan,
-     test_instances_and_animations_carry_the_agents_names])
+     test_instances_and_animations_carry_the_agents_names, test_an_apply_stopped_part_way_leaves_the_scene_as_it_was])

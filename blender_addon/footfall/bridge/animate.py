@@ -20,7 +20,7 @@ import math
 import os
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
-from typing import Callable, Dict, List, NamedTuple, Optional, Set, Tuple
+from typing import Dict, Generator, List, NamedTuple, Optional, Set, Tuple
 
 import bpy
 import numpy
@@ -559,12 +559,12 @@ def _character(rig) -> _Character:
     return _Character(rig, template, rest, clips_of(rig, profile))
 
 
-def apply_plan(ff, plan, rigs: Dict[str, bpy.types.Object], scene,
-               progress: Optional[Callable[[float], None]] = None,
-               only: Optional[Set[str]] = None) -> List[bpy.types.Object]:
+def applying(ff, plan, rigs: Dict[str, bpy.types.Object], scene,
+             only: Optional[Set[str]] = None) -> Generator[float, None, List[bpy.types.Object]]:
     """Animates one instance of each agent's rig (`rigs`: agent name -> rig)
-    per agent of `plan` (of those named in `only`, if given); returns the
-    armatures.
+    per agent of `plan` (of those named in `only`, if given), one agent at a
+    time: yields the share done after each; returns the armatures. Stopped
+    part way, it leaves what it made so far (the caller removes it).
 
     Frame `scene.frame_start` is time 0; the scene's frame range is extended to
     the end of the longest plan.
@@ -595,8 +595,7 @@ def apply_plan(ff, plan, rigs: Dict[str, bpy.types.Object], scene,
         _upper_body(armature, agent, character.clips, fps, frame_offset, frames, swing)
         _look_ahead(ff, armature, agent.name, character.rest, frames, look, twist)
         _key_leaving(armature, agent, frame_offset, fps)
-        if progress:
-            progress((i + 1) / len(agents))
+        yield (i + 1) / len(agents)
     for character in characters.values():
         bpy.data.armatures.remove(character.template)
     scene.frame_end = max(scene.frame_end, int(last_frame))

@@ -64,65 +64,98 @@ def _to_animate(scene, plan, crowd_objects, whole: bool) -> Optional[Set[str]]:
     return set(pending)
 
 
+class ApplyJob:
+    """One Apply, an agent at a time (the modal operator's steps between
+    events): made, it has found the plan and the rigs and freed the agents'
+    names; `advance` animates the next agent; `finish` replaces the earlier
+    crowd; `cancel`, or a failure in `advance`, leaves the scene as it was."""
+
+    def __init__(self, context, plan_filepath: str = "", rig_name: str = ""):
+        ff = native.load()
+        plan = _plan(ff, plan_filepath)
+        if not plan.agents:
+            raise ApplyError("The plan has no agents")
+        try:
+            rigs = agent_rigs.rigs_of(context.scene, plan, agent_rigs.scene_rig(context.scene, rig_name))
+        except agent_rigs.RigChoiceError as error:
+            raise ApplyError(str(error)) from error
+        if context.object is not None and context.object.mode != "OBJECT":
+            bpy.ops.object.mode_set(mode="OBJECT")
+        self._scene, self._from_file = context.scene, bool(plan_filepath)
+        crowd = bpy.data.collections.get(animate.CROWD_COLLECTION)
+        objects = list(crowd.objects) if crowd else []
+        only = _to_animate(context.scene, plan, objects, whole=bool(plan_filepath or rig_name))
+        if only is not None:  # the others' rigs stay; those of agents no longer planned go
+            planned = {agent.name for agent in plan.agents}
+            objects = [obj for obj in objects if _top(obj).name in only or _top(obj).name not in planned]
+        self._replaced = objects
+        # Frees the agents' names (objects, armatures, actions) for the new instances.
+        self._renamed = {}
+        for obj in objects:
+            for block in (obj, obj.data if obj.type == "ARMATURE" else None, *animate.own_actions(obj)):
+                if block is not None and block not in self._renamed:
+                    self._renamed[block] = block.name
+                    block.name += " (replaced)"
+        # An agent's empty gives its name to the agent's instance: it is renamed
+        # "NAME (agent)" and keeps the name as a property (scene_extract.agent_name).
+        self._named = []
+        for agent in plan.agents:
+            if only is not None and agent.name not in only:
+                continue
+            holder = bpy.data.objects.get(agent.name)
+            if holder is not None and holder.type == "EMPTY" and holder not in self._renamed:
+                self._renamed[holder] = holder.name
+                if scene_extract.AGENT_NAME not in holder:
+                    holder[scene_extract.AGENT_NAME] = agent.name
+                    self._named.append(holder)
+                holder.name = f"{agent.name} (agent)"
+        self._before = datablocks.snapshot()
+        self._steps = animate.applying(ff, plan, rigs, context.scene, only)
+        self.progress = 0.0
+        self.armatures = None  # the new agents' armatures, once every agent is animated
+
+    def advance(self) -> bool:
+        """Animates the next agent; False once there are none left."""
+        try:
+            self.progress = next(self._steps)
+            return True
+        except StopIteration as done:
+            self.armatures = done.value
+            return False
+        except Exception:
+            self.cancel()
+            raise
+
+    def cancel(self) -> None:
+        """Removes what this Apply made and gives back the names it took."""
+        self._steps.close()
+        datablocks.remove_new(self._before)
+        for block, name in self._renamed.items():
+            block.name = name
+        for holder in self._named:
+            del holder[scene_extract.AGENT_NAME]
+
+    def finish(self):
+        """Replaces the earlier crowd with the new one; returns its armatures."""
+        _remove(self._replaced)
+        rig_clips.remove_unused_copies()
+        if self._from_file:
+            plan_store.mark_planned(self._scene)  # the crowd is not the stored plan's
+        else:
+            plan_store.mark_applied(self._scene)
+        return self.armatures
+
+
 def run(context, plan_filepath: str = "", rig_name: str = ""):
     """Animates the plan on instances of the rig, replacing the agents of an
     earlier apply once the new ones are made (only those planned again, after
     a Plan of the selected agents); returns their armatures."""
-    ff = native.load()
-    plan = _plan(ff, plan_filepath)
-    if not plan.agents:
-        raise ApplyError("The plan has no agents")
-    try:
-        rigs = agent_rigs.rigs_of(context.scene, plan, agent_rigs.scene_rig(context.scene, rig_name))
-    except agent_rigs.RigChoiceError as error:
-        raise ApplyError(str(error)) from error
-    if context.object is not None and context.object.mode != "OBJECT":
-        bpy.ops.object.mode_set(mode="OBJECT")
-    crowd = bpy.data.collections.get(animate.CROWD_COLLECTION)
-    objects = list(crowd.objects) if crowd else []
-    only = _to_animate(context.scene, plan, objects, whole=bool(plan_filepath or rig_name))
-    if only is not None:  # the others' rigs stay; those of agents no longer planned go
-        planned = {agent.name for agent in plan.agents}
-        objects = [obj for obj in objects if _top(obj).name in only or _top(obj).name not in planned]
-    # Frees the agents' names (objects, armatures, actions) for the new instances.
-    renamed = {}
-    for obj in objects:
-        for block in (obj, obj.data if obj.type == "ARMATURE" else None, *animate.own_actions(obj)):
-            if block is not None and block not in renamed:
-                renamed[block] = block.name
-                block.name += " (replaced)"
-    # An agent's empty gives its name to the agent's instance: it is renamed
-    # "NAME (agent)" and keeps the name as a property (scene_extract.agent_name).
-    named = []
-    for agent in plan.agents:
-        if only is not None and agent.name not in only:
-            continue
-        holder = bpy.data.objects.get(agent.name)
-        if holder is not None and holder.type == "EMPTY" and holder not in renamed:
-            renamed[holder] = holder.name
-            if scene_extract.AGENT_NAME not in holder:
-                holder[scene_extract.AGENT_NAME] = agent.name
-                named.append(holder)
-            holder.name = f"{agent.name} (agent)"
-    before = datablocks.snapshot()
+    job = ApplyJob(context, plan_filepath, rig_name)
     window_manager = context.window_manager
     window_manager.progress_begin(0, 100)
     try:
-        armatures = animate.apply_plan(ff, plan, rigs, context.scene,
-                                       lambda f: window_manager.progress_update(int(100 * f)), only)
-    except Exception:
-        datablocks.remove_new(before)
-        for block, name in renamed.items():
-            block.name = name
-        for holder in named:
-            del holder[scene_extract.AGENT_NAME]
-        raise
+        while job.advance():
+            window_manager.progress_update(int(100 * job.progress))
     finally:
         window_manager.progress_end()
-    _remove(objects)
-    rig_clips.remove_unused_copies()
-    if plan_filepath:
-        plan_store.mark_planned(context.scene)  # the crowd is not the stored plan's
-    else:
-        plan_store.mark_applied(context.scene)
-    return armatures
+    return job.finish()

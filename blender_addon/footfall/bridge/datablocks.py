@@ -10,8 +10,8 @@ KINDS = ("objects", "collections", "meshes", "armatures", "actions", "materials"
 
 
 def snapshot():
-    """The data-blocks that exist now, per kind."""
-    return {kind: set(getattr(bpy.data, kind)[:]) for kind in KINDS}
+    """The data-blocks that exist now, per kind, with their names."""
+    return {kind: {block: block.name for block in getattr(bpy.data, kind)} for kind in KINDS}
 
 
 def new_since(before, kind):
@@ -20,8 +20,16 @@ def new_since(before, kind):
 
 
 def remove_new(before):
-    """Removes every data-block created since `before`."""
+    """Removes every data-block created since `before`, and gives the others
+    back their names (Blender 3.4 gives a name taken by a new block's rename
+    to the block that had it, as "NAME.001")."""
     for kind in KINDS:
         blocks = getattr(bpy.data, kind)
         for block in new_since(before, kind):
             blocks.remove(block)
+        for block, name in before[kind].items():
+            try:
+                if block.name != name:
+                    block.name = name
+            except ReferenceError:
+                continue  # removed since: nothing to name

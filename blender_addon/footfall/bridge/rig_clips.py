@@ -218,9 +218,14 @@ def playable(rig, profile, behavior: str) -> Optional[Clip]:
 
 
 def remove_unused_copies() -> None:
-    """Removes clip copies no strip plays any more (those of a replaced crowd)."""
+    """Removes clip copies no strip plays any more (those of a replaced
+    crowd), and gives the new copies the names those had (not "NAME.001")."""
     for action in [a for a in bpy.data.actions if CLIP_OF in a and a.users == 0]:
         bpy.data.actions.remove(action)
+    for action in [a for a in bpy.data.actions if CLIP_OF in a]:
+        base = re.sub(r"\.\d{3,}$", "", action.name)
+        if base != action.name and base not in bpy.data.actions:
+            action.name = base
 
 
 def _named(behavior: str, actions) -> Optional[bpy.types.Action]:

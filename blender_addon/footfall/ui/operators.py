@@ -2,10 +2,14 @@
 """Operators: read properties, call the bridge, report. Errors leave the
 scene as it was."""
 
+import time
+
 import bpy
 from bpy_extras.io_utils import ExportHelper, ImportHelper
 
+from ..bridge import animate, apply_plan, rig_clips
 from ..core.bone_map import BoneMapError
+from ..core.native import CoreMissingError
 from ..core.rig_profile import ProfileError
 from .operator_errors import report_and_cancel
 from .properties import mapping_of
@@ -30,7 +34,7 @@ class FOOTFALL_OT_import_rig(bpy.types.Operator, ImportHelper):
         return super().invoke(context, event)
 
     def execute(self, context):
-        from ..bridge import rig_clips, rig_import
+        from ..bridge import rig_import
 
         try:
             rig = rig_import.import_rig("" if self.armature else self.filepath,
@@ -60,13 +64,55 @@ class FOOTFALL_OT_apply(bpy.types.Operator):
     )
 
     def execute(self, context):
-        from ..bridge import animate, apply_plan, rig_clips
-        from ..core.native import CoreMissingError
-
+        """Applies at once (scripts, and Blender without a window)."""
         try:
             armatures = apply_plan.run(context, self.plan_filepath, self.rig)
-        except (apply_plan.ApplyError, animate.TransformError, rig_clips.ClipError, CoreMissingError) as error:
+        except APPLY_ERRORS as error:
             return report_and_cancel(self, error)
+        return self._done(context, armatures)
+
+    def invoke(self, context, event):
+        """In the interface: an agent at a time between events, the progress
+        in the status bar; Esc stops it, and a stopped Apply changes nothing."""
+        if context.window is None:
+            return self.execute(context)
+        try:
+            self._job = apply_plan.ApplyJob(context, self.plan_filepath, self.rig)
+        except APPLY_ERRORS as error:
+            return report_and_cancel(self, error)
+        self._timer = context.window_manager.event_timer_add(0.02, window=context.window)
+        context.window_manager.modal_handler_add(self)
+        self._say(context)
+        return {"RUNNING_MODAL"}
+
+    def modal(self, context, event):
+        if event.type == "ESC":
+            self._end(context)
+            self._job.cancel()
+            self.report({"WARNING"}, "Apply stopped (Esc): nothing changed")
+            return {"CANCELLED"}
+        if event.type != "TIMER":
+            return {"PASS_THROUGH"}  # the interface stays live
+        started = time.monotonic()
+        try:
+            while time.monotonic() - started < WORK_PER_EVENT:
+                if not self._job.advance():
+                    self._end(context)
+                    return self._done(context, self._job.finish())
+        except APPLY_ERRORS as error:
+            self._end(context)
+            return report_and_cancel(self, error)
+        self._say(context)
+        return {"RUNNING_MODAL"}
+
+    def _say(self, context):
+        context.workspace.status_text_set(f"Footfall: applying, {round(100 * self._job.progress)} % (Esc to stop)")
+
+    def _end(self, context):
+        context.window_manager.event_timer_remove(self._timer)
+        context.workspace.status_text_set(None)
+
+    def _done(self, context, armatures):
         from ..bridge import plan_watch
 
         if not self.plan_filepath and plan_watch.is_stale(context.scene):
@@ -75,6 +121,11 @@ class FOOTFALL_OT_apply(bpy.types.Operator):
         else:
             self.report({"INFO"}, f"Animated {len(armatures)} agents in '{animate.CROWD_COLLECTION}'")
         return {"FINISHED"}
+
+
+WORK_PER_EVENT = 0.25  # [s] of Apply's work between two looks at the events (a redraw of a crowd costs too)
+# What Apply refuses with a message.
+APPLY_ERRORS = (apply_plan.ApplyError, animate.TransformError, rig_clips.ClipError, CoreMissingError)
 
 
 class FOOTFALL_OT_export_gltf(bpy.types.Operator, ExportHelper):
