@@ -145,6 +145,9 @@ void bind_planner(py::module_& m) {
                      "It stands still until this time [s], then sets off.")
       .def_readwrite("goal_wait", &AgentSpec::goal_wait,
                      "It stands this long [s] at each goal but the last.")
+      .def_readwrite("scale", &AgentSpec::scale,
+                     "Its body's size as a share of the scenario's character, [0.25, 4] (set its "
+                     "character to scaled() of it).")
       .def_readwrite("time_limit", &AgentSpec::time_limit,
                      "Its time budget [s]; 0: the planner's max_time or four times its route's "
                      "walking time, whichever is longer.")
@@ -171,6 +174,7 @@ void bind_planner(py::module_& m) {
       .def_readonly("footsteps", &AgentPlan::footsteps)
       .def_readonly("goals_reached", &AgentPlan::goals_reached)
       .def_readonly("leaves", &AgentPlan::leaves)
+      .def_readonly("scale", &AgentPlan::scale, "Its body's size as a share of the rig's.")
       .def_readonly("searches", &AgentPlan::searches)
       .def_readonly("nodes_generated", &AgentPlan::nodes_generated)
       .def_readonly("nodes_expanded", &AgentPlan::nodes_expanded)

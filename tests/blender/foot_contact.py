@@ -34,9 +34,11 @@ class FootRest:
     def error(self, armature, pose) -> float:
         """The distance of the nearest of the posed ankle, ball and heel to
         where the plan's foot `pose` puts it (an evaluated instance
-        `armature`, whose armature space is the world)."""
-        turn = Matrix.Rotation(pose.orientation - self.yaw, 4, "Z")
-        ankle = Vector((pose.position[0], pose.position[1], self.ankle.z))
+        `armature`, whose armature space is the world, times its scale for
+        an agent of another size)."""
+        scale = armature.matrix_world.to_scale().x
+        turn = scale * Matrix.Rotation(pose.orientation - self.yaw, 3, "Z")
+        ankle = Vector((pose.position[0], pose.position[1], scale * self.ankle.z))
         planned = {"ankle": ankle, "ball": ankle + turn @ (self.ball - self.ankle),
                    "heel": ankle + turn @ (self.heel - self.ankle)}
         foot = armature.pose.bones[self.foot]

@@ -144,5 +144,51 @@ def test_several_rigs_and_none_chosen_is_an_error():
     check("Several rigs are imported (small, tall)" in message, message)
 
 
+def test_an_agents_scale_sizes_its_character_and_its_rig():
+    """footfall_scale: the agent walks with the character times its size
+    (shorter strides) and its instance is the rig scaled alike, its feet on
+    the plan; an agent with its own rig is scaled from that one; a value out
+    of range is refused, naming the agent."""
+    from footfall.bridge import rig_import
+
+    tall, small = scene_with_two_rigs()
+    bpy.data.objects["ann"]["footfall_scale"] = 0.8
+    bpy.data.objects["kid"]["footfall_scale"] = 1.2
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+    plan = stored_plan()
+    agents = {a.name: a for a in plan.agents}
+    check((agents["ann"].scale, agents["kid"].scale, agents["bob"].scale) == (0.8, 1.2, 1.0),
+          f"scales {[(a.name, a.scale) for a in plan.agents]}")
+    hips = {rig.name: rig_import.profile_of(rig).dimensions["hip_height"] for rig in (tall, small)}
+    check(abs(agents["ann"].character.com_height - 0.8 * 1.05 * hips["tall"]) < 1e-6, "ann's size")
+    check(abs(agents["kid"].character.com_height - 1.2 * 1.05 * hips["small"]) < 1e-6, "kid's size")
+    check(bpy.ops.footfall.apply() == {"FINISHED"}, "apply failed")
+    scales = {name: tuple(round(v, 6) for v in bpy.data.objects[name].scale) for name in agents}
+    check(scales == {"ann": (0.8,) * 3, "kid": (1.2,) * 3, "bob": (1.0,) * 3}, f"instance scales {scales}")
+    scene = bpy.context.scene
+    fps = scene.render.fps / scene.render.fps_base
+    rig_of = {"ann": tall, "kid": small, "bob": tall}
+    feet = {(rig.name, side): FootRest(rig, rig_import.profile_of(rig), side)
+            for rig in (tall, small) for side in ("left", "right")}
+    from footfall.core import native
+
+    ff = native.load()
+    worst, stance = 0.0, 0
+    for frame in range(scene.frame_start, scene.frame_end + 1, 2):
+        scene.frame_set(frame)
+        t = (frame - scene.frame_start) / fps
+        for name in ("ann", "kid"):
+            armature = bpy.data.objects[name].evaluated_get(bpy.context.evaluated_depsgraph_get())
+            for side, pose in zip(("left", "right"), ff.feet_at(agents[name], t)):
+                if pose.planted:
+                    worst = max(worst, feet[rig_of[name].name, side].error(armature, pose))
+                    stance += 1
+    print(f"scaled agents: {stance} stance samples, feet at most {worst * 1000:.2f} mm off the plan")
+    check(stance > 50 and worst <= 0.002, f"feet {worst * 1000:.2f} mm off the plan")
+    bpy.data.objects["ann (agent)"]["footfall_scale"] = 5.0
+    message = operator_error(bpy.ops.footfall.plan)
+    check("scale: must be in [0.25, 4]" in message and "'ann'" in message, message)
+
+
 run([test_each_agent_walks_with_its_own_rig, test_a_rig_of_another_size_than_planned_is_refused,
-     test_several_rigs_and_none_chosen_is_an_error])
+     test_several_rigs_and_none_chosen_is_an_error, test_an_agents_scale_sizes_its_character_and_its_rig])

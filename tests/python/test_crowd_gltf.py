@@ -13,6 +13,7 @@ import subprocess
 import numpy
 import pytest
 
+from conftest import scenario_json
 from crowd_glb import CrowdGlb, z_up
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -104,8 +105,8 @@ def measure(ff, plan, crowd_path, feet):
                 if not pose.planted:
                     continue
                 rest = feet.sides[side]
-                rotation = turn(pose.orientation - feet.yaw)
-                ankle = numpy.array([pose.position[0], pose.position[1], rest["ankle"][2]])
+                rotation = agent.scale * turn(pose.orientation - feet.yaw)  # the rig at the agent's size
+                ankle = numpy.array([pose.position[0], pose.position[1], agent.scale * rest["ankle"][2]])
                 planned = [ankle, ankle + rotation @ (rest["ball"] - rest["ankle"]),
                            ankle + rotation @ (rest["heel"] - rest["ankle"])]
                 foot_world = world[nodes[rest["foot"]]][i]
@@ -154,6 +155,34 @@ def test_demo_feet_stay_on_the_plan_and_hips_on_the_com_path(ff, demo):
     assert checked > 500
     assert contact < CONTACT_TOLERANCE
     assert hips < HIPS_TOLERANCE
+
+
+def test_agents_of_other_sizes_are_the_rig_scaled_with_their_feet_on_the_plan(ff, cli, tmp_path):
+    """A scenario's per-agent scale sizes the agent's character and, in the
+    crowd, its copy of the rig (its node's scale), the feet on the plan."""
+    scenario = tmp_path / "sizes.json"
+    scenario.write_text(scenario_json(agents=[
+        {"name": "small", "position": [0, 0], "goals": [[6, 0]], "scale": 0.8},
+        {"name": "tall", "position": [0, 3], "goals": [[6, 3]], "scale": 1.25},
+        {"name": "same", "position": [0, 6], "goals": [[6, 6]]}]))
+    plan_path, crowd_path = tmp_path / "plan.json", tmp_path / "crowd.glb"
+    run = subprocess.run([cli, "plan", str(scenario), "-o", str(plan_path), "--glb", str(crowd_path), "--rig", str(RIG)],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    plan = ff.load_plan(str(plan_path))
+    agents = {a.name: a for a in plan.agents}
+    assert {name: a.scale for name, a in agents.items()} == {"small": 0.8, "tall": 1.25, "same": 1.0}
+    assert agents["small"].character.com_height == pytest.approx(0.8 * plan.character.com_height)
+    assert agents["same"].character is None
+    longest = {name: max(math.dist(s.com_start, s.com_end) for s in a.footsteps) for name, a in agents.items()}
+    assert longest["small"] < longest["same"] < longest["tall"]
+    crowd = CrowdGlb(crowd_path)
+    for name, agent in agents.items():
+        node = crowd.document["nodes"][crowd.agent_root(name)]
+        assert node.get("scale", [1.0, 1.0, 1.0]) == pytest.approx([agent.scale] * 3)
+    contact, hips, checked = measure(ff, plan, crowd_path, RigFeet(RIG, json.loads(PROFILE.read_text())))
+    print(f"sizes: worst contact {1000 * contact:.2f} mm over {checked} planted feet, hips {100 * hips:.2f} cm")
+    assert checked > 50 and contact < CONTACT_TOLERANCE and hips < HIPS_TOLERANCE
 
 
 def rewritten(source, target, change):

@@ -278,3 +278,28 @@ def test_search_takes_a_walking_agents_rest_for_its_grace_only(ff):
         planner.plan(start, (12.0, 0.0), [crossing], rest_grace=-1.0)
     # The search names the agent that turned down its steps.
     assert around.refused_by == [0]
+
+
+def test_an_agents_scale_sizes_it_and_is_kept_in_the_plan_file(ff, tmp_path):
+    def scenario(scale, character=None):
+        agent = {"name": "kid", "position": [0, 0], "goals": [[4, 0]], "scale": scale}
+        if character:
+            agent["character"] = character
+        return ff.parse_scenario(scenario_json(agents=[agent]), "kid.json")
+
+    with pytest.raises(ValueError, match=r"^kid.json: agents\[0\].scale: must be in \[0.25, 4\]"):
+        scenario(5.0)
+    (kid,) = scenario(0.5).agents
+    assert kid.scale == 0.5
+    assert kid.character.com_height == pytest.approx(0.5) and kid.character.body_height == pytest.approx(0.875)
+    # Speeds and durations by the square root, so that it walks alike.
+    assert kid.character.preferred_speed == pytest.approx(1.3 * 0.5 ** 0.5)
+    assert kid.character.left.max_step_duration == pytest.approx(0.8 * 0.5 ** 0.5)
+    # Its own overrides win over the scaled values.
+    (own,) = scenario(0.5, {"preferred_speed": 1.0}).agents
+    assert own.character.preferred_speed == 1.0 and own.character.com_height == pytest.approx(0.5)
+    plan = ff.plan_scenario(scenario(0.5))
+    path = tmp_path / "plan.json"
+    ff.write_plan_file(plan, str(path))
+    assert json.loads(path.read_text())["agents"][0]["scale"] == 0.5
+    assert ff.load_plan(str(path)).agents[0].scale == 0.5

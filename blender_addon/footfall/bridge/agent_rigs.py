@@ -13,7 +13,7 @@ from typing import Dict, Optional
 
 import bpy
 
-from ..core.character import COM_ABOVE_HIPS, derive_parameters, with_rig
+from ..core.character import COM_ABOVE_HIPS, derive_parameters, scaled, with_rig
 from .rig_body import body_of
 from .rig_import import imported_rigs, profile_of
 from .scene_extract import AGENT_RIG, agent_empties
@@ -61,15 +61,17 @@ def _agent_rig(agent: str, name) -> bpy.types.Object:
 def sized(document: dict, agent_rigs: Dict[str, str], rig: Optional[bpy.types.Object]) -> dict:
     """The scenario document with its character sized from the scene's rig
     (where the scene sets no value itself), and every agent with a rig of
-    its own walking with a character sized from that one (where the agent
-    sets no value itself)."""
+    its own walking with a character sized from that one, times its scale
+    (where the agent sets no value itself; the core scales the scenario's
+    character for the others)."""
     result = with_rig(document, profile_of(rig).dimensions, body_of(rig)) if rig is not None else dict(document)
     agents = []
     for entry in result.get("agents", []):
         own = agent_rigs.get(entry["name"])
         if own is not None and (rig is None or own != rig.name):
             own_rig = _agent_rig(entry["name"], own)
-            derived, _planner = derive_parameters(profile_of(own_rig).dimensions, body_of(own_rig))
+            derived, _planner = derive_parameters(*scaled(profile_of(own_rig).dimensions, body_of(own_rig),
+                                                         entry.get("scale", 1.0)))
             entry = {**entry, "character": {**derived, **entry.get("character", {})}}
         agents.append(entry)
     result["agents"] = agents
@@ -89,7 +91,7 @@ def rigs_of(scene, plan, rig: Optional[bpy.types.Object]) -> Dict[str, bpy.types
         if chosen is None:
             raise RigChoiceError("Import a rig first (Footfall > Import Rig)")
         planned = (agent.character or plan.character).com_height
-        standing = COM_ABOVE_HIPS * profile_of(chosen).dimensions["hip_height"]
+        standing = COM_ABOVE_HIPS * profile_of(chosen).dimensions["hip_height"] * agent.scale
         if abs(standing / planned - 1.0) > SIZE_TOLERANCE:
             raise RigChoiceError(
                 f"Agent '{agent.name}': rig '{chosen.name}' stands {100 * (standing / planned - 1):+.0f} % off the "

@@ -348,6 +348,8 @@ def _locomotion(ff, agent, rest: RigRest, times, facing, full_speed: float):
     _key_leaving); `facing` is the body's there (ff.upper_body)."""
     count = len(times)
     com, feet_xy, feet_yaw, lift, planted = ff.sample_motion(agent, times)
+    # In the rig's own size: the instance object scales it to the plan's (agent.scale).
+    com, feet_xy, lift = com / agent.scale, feet_xy / agent.scale, lift / agent.scale
     step_arrays = _step_arrays(ff, agent.footsteps)
     lateral = numpy.cross([math.cos(rest.forward_yaw), math.sin(rest.forward_yaw), 0.0], [0.0, 0.0, 1.0])
     body_yaw = numpy.unwrap(facing) - rest.forward_yaw
@@ -584,6 +586,8 @@ def applying(ff, plan, rigs: Dict[str, bpy.types.Object], scene,
     agents = [agent for agent in plan.agents if only is None or agent.name in only]
     cast = [characters[rigs[agent.name].name] for agent in agents]
     armatures = [_instance(agent.name, c.template, c.rig, collection) for agent, c in zip(agents, cast)]
+    for agent, armature in zip(agents, armatures):
+        armature.scale = (agent.scale,) * 3  # after its meshes: they follow it
     bpy.context.view_layer.update()  # new armature objects get their poses here, all at once
     for i, (agent, armature, character) in enumerate(zip(agents, armatures, cast)):
         _add_controls(armature, character.rest)

@@ -22,7 +22,7 @@ import bpy
 from ..core import native
 from ..core.scenario import document_of, parse
 from . import datablocks
-from .scene_extract import (AGENT_CHARACTER, AGENTS, GOAL_INDEX, GOAL_WAIT, START_DELAY, TIME_LIMIT, LEAVE_AT_GOAL, OBSTACLES, OVERRIDE_KEYS,
+from .scene_extract import (AGENT_CHARACTER, AGENT_SCALE, AGENTS, GOAL_INDEX, GOAL_WAIT, START_DELAY, TIME_LIMIT, LEAVE_AT_GOAL, OBSTACLES, OVERRIDE_KEYS,
                             OVERRIDES, collection_in, overrides)
 
 AGENT_SIZE = 0.5  # [m] length of the agent empty's arrows
@@ -166,6 +166,8 @@ def _add_agent(agent: dict, collection):
         obj[START_DELAY] = float(agent["start_delay"])
     if agent.get("goal_wait"):
         obj[GOAL_WAIT] = float(agent["goal_wait"])
+    if agent.get("scale"):
+        obj[AGENT_SCALE] = float(agent["scale"])
     collection.objects.link(obj)
     return obj
 

@@ -18,7 +18,8 @@ count, hidden ones included:
   in seconds; the core checks the range), "footfall_start_delay" and
   "footfall_wait" (seconds it stands before setting off, and at each goal
   but the last), "footfall_speed" (its preferred
-  speed, m/s), "footfall_character" (JSON text:
+  speed, m/s), "footfall_scale" (its body's size as a share of the
+  character's, which Apply scales its rig by), "footfall_character" (JSON text:
   overrides of the character for it alone) and "footfall_rig" (the name of
   the imported rig it is animated with, which sizes its character) are
   optional.
@@ -48,6 +49,7 @@ AGENT_SPEED = "footfall_speed"
 TIME_LIMIT = "footfall_time_limit"
 START_DELAY = "footfall_start_delay"
 GOAL_WAIT = "footfall_wait"
+AGENT_SCALE = "footfall_scale"
 AGENT_RIG = "footfall_rig"
 OVERRIDES = "footfall_overrides"
 OVERRIDE_KEYS = ("character", "planner")
@@ -161,6 +163,7 @@ def _agents(objects, depsgraph) -> List[AgentInput]:
             time_limit=_number(agent, TIME_LIMIT, "seconds"),
             start_delay=_number(agent, START_DELAY, "seconds"),
             goal_wait=_number(agent, GOAL_WAIT, "seconds"),
+            scale=_number(agent, AGENT_SCALE, "times the character's size"),
         ))
     return agents
 

@@ -56,6 +56,19 @@ def derive_parameters(dimensions: Mapping[str, float], body: Optional[Mapping] =
     return character, planner
 
 
+def scaled(dimensions: Mapping[str, float], body: Optional[Mapping], scale: float
+           ) -> Tuple[Dict[str, float], Optional[dict]]:
+    """A rig's dimensions and body (bridge/rig_body) `scale` times as large."""
+    if scale == 1.0:
+        return dict(dimensions), None if body is None else dict(body)
+    sized = {key: value * scale for key, value in dimensions.items()}
+    if body is None:
+        return sized, None
+    poses = {behavior: [{limb: [v * scale for v in capsule] for limb, capsule in pose.items()} for pose in motion]
+             for behavior, motion in body["poses"].items()}
+    return sized, {"height": body["height"] * scale, "poses": poses}
+
+
 def with_rig(document: dict, dimensions: Mapping[str, float], body: Optional[Mapping] = None) -> dict:
     """A scenario document whose character and planner take the rig's derived
     parameters, except where the document sets its own."""

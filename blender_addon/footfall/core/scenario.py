@@ -22,7 +22,8 @@ class AgentInput:
     leaves the scene there (instead of coming to rest on it), overrides of
     the scenario's character for it alone (its own size, say), its time
     budget [s] (None: the planner's default, from max_time and its route),
-    how long it stands before it sets off and at each goal but the last [s]."""
+    how long it stands before it sets off and at each goal but the last [s],
+    and its body's size as a share of the scenario's character (None: 1)."""
 
     name: str
     position: Point
@@ -33,6 +34,7 @@ class AgentInput:
     time_limit: Optional[float] = None
     start_delay: Optional[float] = None
     goal_wait: Optional[float] = None
+    scale: Optional[float] = None
 
 
 @dataclass(frozen=True)
@@ -100,6 +102,8 @@ def scenario_document(scenario: ScenarioInput) -> dict:
             entry["start_delay"] = float(agent.start_delay)
         if agent.goal_wait is not None:
             entry["goal_wait"] = float(agent.goal_wait)
+        if agent.scale is not None:
+            entry["scale"] = float(agent.scale)
         agents.append(entry)
     document = {
         "format": "footfall-scenario",
@@ -119,7 +123,8 @@ def document_of(scenario) -> dict:
     from a SteerSuite file), its agents and obstacles; parameters at their defaults."""
     return scenario_document(ScenarioInput(
         agents=[AgentInput(a.name, a.position, a.goals, a.facing, a.leave_at_goal, time_limit=a.time_limit or None,
-                           start_delay=a.start_delay or None, goal_wait=a.goal_wait or None)
+                           start_delay=a.start_delay or None, goal_wait=a.goal_wait or None,
+                           scale=None if a.scale == 1.0 else a.scale)
                 for a in scenario.agents],
         obstacles=[obstacle_input(o) for o in scenario.obstacles]))
 

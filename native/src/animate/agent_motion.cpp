@@ -127,8 +127,13 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
 
   for (std::size_t f = 0; f < frames; ++f) {
     const double t = std::min(times[f], plan.end_time());
-    const Vec2 com = com_at(plan, t).position;
-    const std::array<FootPose, 2> feet = feet_at(plan, t);
+    // In the rig's own size: the agent's node scales it to the plan's (AgentPlan::scale).
+    const Vec2 com = (1.0 / plan.scale) * com_at(plan, t).position;
+    std::array<FootPose, 2> feet = feet_at(plan, t);
+    for (FootPose& foot : feet) {
+      foot.position = (1.0 / plan.scale) * foot.position;
+      foot.lift /= plan.scale;
+    }
     body_yaw = body_facing(plan, t) - rig.forward_yaw;
     if (f > 0) body_yaw = unwrapped(body_yaw, previous_yaw);
     previous_yaw = body_yaw;

@@ -52,12 +52,14 @@ class CrowdModel {
     out_.defaultScene = 0;
   }
 
-  /// The agent's nodes under one named after it; returns rig node -> output node.
-  std::vector<int> add_agent_nodes(const std::string& name) {
+  /// The agent's nodes under one named after it, scaled by `scale` (the
+  /// rig's size to the agent's); returns rig node -> output node.
+  std::vector<int> add_agent_nodes(const std::string& name, double scale) {
     std::vector<int> copy(rig_.model.nodes.size(), -1);
     const int root = static_cast<int>(out_.nodes.size());
     out_.nodes.emplace_back();
     out_.nodes[root].name = name;
+    if (scale != 1.0) out_.nodes[root].scale = {scale, scale, scale};
     out_.scenes[0].nodes.push_back(root);
     const std::function<int(int)> add = [&](int node) {
       const int index = static_cast<int>(out_.nodes.size());
@@ -203,7 +205,7 @@ class CrowdModel {
 
 void check_size(const Plan& plan, const AgentPlan& agent, const RigData& rig) {
   const double planned = character_of(agent, plan.character).com_height;
-  const double standing = kComAboveHips * rig.hip_height;
+  const double standing = kComAboveHips * rig.hip_height * agent.scale;
   const double off = standing / planned - 1.0;
   if (std::abs(off) > kRigSizeTolerance) {
     std::ostringstream message;
@@ -289,7 +291,7 @@ CrowdGltfSummary write_crowd_gltf(const Plan& plan, const Rig& rig, const std::s
   CrowdModel crowd(data);
   const int input = crowd.add_floats(key_times, 1);
   for (const AgentPlan& agent : plan.agents) {
-    const std::vector<int> copy = crowd.add_agent_nodes(agent.name);
+    const std::vector<int> copy = crowd.add_agent_nodes(agent.name, agent.scale);
     const animate::AgentMotion motion = animate::agent_motion(data, agent, character_of(agent, plan.character), times, options.fps);
     tinygltf::Animation animation;
     animation.name = agent.name;
@@ -302,8 +304,9 @@ CrowdGltfSummary write_crowd_gltf(const Plan& plan, const Rig& rig, const std::s
     if (agent.leaves) {
       // Gone from the first key after it has left: scaled to nothing.
       const float gone = static_cast<float>((std::floor(agent.end_time() * options.fps) + 1) / options.fps);
-      add_sampled(animation, crowd.add_floats({0.0f, gone}, 1), crowd.add_floats({1, 1, 1, 0, 0, 0}, 3), "STEP",
-                  crowd.last_root(), "scale");
+      const float scale = static_cast<float>(agent.scale);
+      add_sampled(animation, crowd.add_floats({0.0f, gone}, 1), crowd.add_floats({scale, scale, scale, 0, 0, 0}, 3),
+                  "STEP", crowd.last_root(), "scale");
     }
     crowd.model().animations.push_back(std::move(animation));
   }

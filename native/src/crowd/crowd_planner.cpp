@@ -59,6 +59,8 @@ void check_agent(const AgentSpec& agent) {
     throw std::invalid_argument("agent " + agent.name + ": start_delay must be in [0, 100000] s");
   if (!(agent.goal_wait >= 0.0 && agent.goal_wait <= kMaxTimeLimit))
     throw std::invalid_argument("agent " + agent.name + ": goal_wait must be in [0, 100000] s");
+  if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
+    throw std::invalid_argument("agent " + agent.name + ": scale must be in [0.25, 4]");
   if (!in_world(agent.position) || !std::isfinite(agent.facing)) {
     throw std::invalid_argument("agent " + agent.name +
                                 ": position and facing must be finite, within 1e9 m");
@@ -730,6 +732,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     w.planner->hold_arms_in(w.plan.footsteps);
     w.plan.sections = w.spec->sections;
     w.plan.character = w.spec->character;
+    w.plan.scale = w.spec->scale;
     plans.push_back(std::move(w.plan));
   }
   return plans;

@@ -102,6 +102,8 @@ void validate(const Scenario& scenario) {
       fail(child(path, "start_delay"), "must be in [0, 100000] s");
     if (!(agent.goal_wait >= 0.0 && agent.goal_wait <= kMaxTimeLimit))
       fail(child(path, "goal_wait"), "must be in [0, 100000] s");
+    if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
+      fail(child(path, "scale"), "must be in [0.25, 4]");
     const FootstepState standing = standing_state(agent.position, agent.facing, character);
     if (planners.planner(agent).validity().collides(standing)) {
       int hit = -1;

@@ -54,6 +54,7 @@ Json agent_to_json(const AgentPlan& agent) {
   };
   if (agent.leaves) json["leaves"] = true;
   if (agent.character) json["character"] = character_to_json(*agent.character);
+  if (agent.scale != 1.0) json["scale"] = agent.scale;
   if (agent.status != AgentStatus::kReached) {
     json["reason"] = agent.reason;
     json["stopped_at"] = to_json(agent.stuck_at);
@@ -154,7 +155,7 @@ AgentPlan read_agent(const Json& json, const std::string& path, const CharacterP
   expect_object(
       json, path,
       {"name", "status", "leaves", "reason", "stopped_at", "start", "footsteps", "sections",
-       "stats", "character"});
+       "stats", "character", "scale"});
   AgentPlan agent;
   if (json.contains("character")) {
     auto& own = characters[json["character"].dump()];
@@ -171,6 +172,11 @@ AgentPlan read_agent(const Json& json, const std::string& path, const CharacterP
   agent.status = read_enum(require(json, path, "status"), child(path, "status"),
                            {AgentStatus::kReached, AgentStatus::kPartial});
   if (json.contains("leaves")) agent.leaves = boolean(json["leaves"], child(path, "leaves"));
+  if (json.contains("scale")) {
+    agent.scale = number(json["scale"], child(path, "scale"));
+    if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
+      fail(child(path, "scale"), "must be in [0.25, 4]");
+  }
   if (json.contains("reason")) agent.reason = string(json["reason"], child(path, "reason"));
   if (json.contains("stopped_at"))
     agent.stuck_at = point(json["stopped_at"], child(path, "stopped_at"));

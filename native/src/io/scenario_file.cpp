@@ -15,18 +15,20 @@ using namespace detail;
 
 namespace {
 
-// Each agent's own character: the scenario's with its "character" overrides.
-// Agents with the same overrides share one (a planner each, not per agent).
+// Each agent's own character: the scenario's, scaled by its "scale", with
+// its "character" overrides (which win). Agents with the same scale and
+// overrides share one (a planner each, not per agent).
 void read_agent_characters(const Json& agents, Scenario& scenario) {
   std::map<std::string, std::shared_ptr<const CharacterParams>> made;
   for (size_t i = 0; i < agents.size(); ++i) {
-    if (!agents[i].contains("character")) continue;
-    const Json& overrides = agents[i]["character"];
+    const double scale = scenario.agents[i].scale;
+    const bool overridden = agents[i].contains("character") && !agents[i]["character"].empty();
+    if (!overridden && scale == 1.0) continue;
+    const Json overrides = overridden ? agents[i]["character"] : Json::object();
     const std::string path = child(item("agents", i), "character");
-    CharacterParams character = scenario.character;
+    CharacterParams character = scale == 1.0 ? scenario.character : scaled(scenario.character, scale);
     read_character(overrides, path, character);
-    if (overrides.empty()) continue;
-    auto& shared = made[overrides.dump()];
+    auto& shared = made[overrides.dump() + " x" + std::to_string(scale)];
     if (!shared) shared = std::make_shared<const CharacterParams>(std::move(character));
     scenario.agents[i].character = shared;
   }
@@ -43,7 +45,7 @@ Scenario read_scenario(const Json& root) {
       const std::string path = item("agents", i);
       expect_object(agents[i], path,
                     {"name", "position", "facing", "goals", "leave_at_goal", "character",
-                     "time_limit", "start_delay", "goal_wait"});
+                     "time_limit", "start_delay", "goal_wait", "scale"});
       AgentSpec agent;
       agent.name = agents[i].contains("name") ? string(agents[i]["name"], child(path, "name"))
                                               : "agent" + std::to_string(i);
@@ -69,6 +71,11 @@ Scenario read_scenario(const Json& root) {
         agent.start_delay = number(agents[i]["start_delay"], child(path, "start_delay"));
       if (agents[i].contains("goal_wait"))
         agent.goal_wait = number(agents[i]["goal_wait"], child(path, "goal_wait"));
+      if (agents[i].contains("scale")) {
+        agent.scale = number(agents[i]["scale"], child(path, "scale"));
+        if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
+          fail(child(path, "scale"), "must be in [0.25, 4]");
+      }
       scenario.agents.push_back(std::move(agent));
     }
   }

@@ -1,6 +1,7 @@
 // Footfall — validation of the parameter structs, from their tables.
 #include "footfall/model/params.hpp"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,33 @@ void validate(const CharacterParams& params, const std::string& path) {
 
 void validate(const PlannerParams& params, const std::string& path) {
   validate_struct(params, path);
+}
+
+CharacterParams scaled(const CharacterParams& character, double scale) {
+  CharacterParams c = character;
+  const double pace = std::sqrt(scale);
+  for (double* length : {&c.com_height, &c.foot_offset, &c.torso_width, &c.torso_radius, &c.shoulder_radius,
+                         &c.foot_radius, &c.body_height, &c.shoulder_width, &c.chest_depth, &c.arm_swing_width,
+                         &c.arm_radius, &c.leg_radius, &c.walk_clearance, &c.arms_in_clearance,
+                         &c.side_step_clearance})
+    *length *= scale;
+  for (double* speed : {&c.preferred_speed, &c.side_step_speed}) *speed *= pace;
+  c.preferred_step_duration *= pace;
+  for (FootLimits* foot : {&c.left, &c.right}) {
+    foot->min_step_length *= scale;
+    foot->max_step_length *= scale;
+    foot->min_speed *= pace;
+    foot->max_speed *= pace;
+    foot->min_step_duration *= pace;
+    foot->max_step_duration *= pace;
+  }
+  for (BehaviorMotion& motion : c.motions) {
+    motion.cycle_duration *= pace;
+    motion.speed *= pace;
+    for (BodyPose& pose : motion.poses)
+      for (Capsule& capsule : pose) capsule = {scale * capsule.a, scale * capsule.b, scale * capsule.radius};
+  }
+  return c;
 }
 
 }  // namespace footfall

@@ -41,6 +41,10 @@ struct AgentSpec {
   /// It stands this long at each goal but the last before it walks on. [s]
   /// [0, kMaxTimeLimit]
   double goal_wait = 0;
+  /// Its body's size, as a share of the character's (`character` is made
+  /// from scaled() of the scenario's; its plan keeps it, AgentPlan::scale).
+  /// [kLeastScale, kMostScale]
+  double scale = 1;
 };
 
 /// The simulated time an agent may walk: its own time_limit, else the

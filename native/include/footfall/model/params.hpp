@@ -236,6 +236,16 @@ struct ParamTable<PlannerParams> {
                          "most: the goal-directed phi covers the rest."});
 };
 
+/// The smallest and largest body size an agent's `scale` may give.
+constexpr double kLeastScale = 0.25, kMostScale = 4.0;
+
+/// The character `scale` times as large: every length (the body, its
+/// motions' capsules, the step lengths, the clearances) times `scale`;
+/// speeds and durations times its square root, so that it walks alike
+/// (equal Froude number, as a rig's character is derived:
+/// blender_addon/footfall/core/character.py); mass and energy rate kept.
+CharacterParams scaled(const CharacterParams& character, double scale);
+
 /// Throws std::invalid_argument naming the field (prefixed by `path`, e.g.
 /// "character.left.max_speed") and the limit it breaks.
 void validate(const CharacterParams& params, const std::string& path = "character");

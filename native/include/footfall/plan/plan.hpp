@@ -53,6 +53,9 @@ struct AgentPlan {
   /// The agent's own character, where it has one (a scenario's per-agent
   /// `character`); null: the plan's. Its body is measured with it.
   std::shared_ptr<const CharacterParams> character;
+  /// Its body's size as a share of the rig's: the animation scales the rig
+  /// by it (the scenario's per-agent `scale`). [kLeastScale, kMostScale]
+  double scale = 1;
 
   /// Sum of the step costs. [J]
   double total_cost() const;
