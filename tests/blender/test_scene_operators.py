@@ -370,6 +370,10 @@ def test_randomize_draws_speeds_and_rigs_for_the_selected_agents():
     check(drawn(7, speed_min=0.8, speed_max=1.0) == first, "the same seed drew other values")
     check(drawn(8, speed_min=0.8, speed_max=1.0) != first, "another seed drew the same values")
     check(first[2] is None, "a rig was drawn without vary_rig")
+    check("footfall_scale" not in alice, "a size was drawn from the range 1-1")
+    drawn(7, speed_min=0.8, speed_max=1.0, scale_min=0.85, scale_max=1.15)
+    sizes = alice["footfall_scale"], bob["footfall_scale"]
+    check(all(0.85 <= s <= 1.15 for s in sizes) and sizes[0] != sizes[1], f"sizes {sizes}")
     bob_speed = bob["footfall_speed"]
     for obj in bpy.context.view_layer.objects:
         obj.select_set(obj == alice)
@@ -379,6 +383,7 @@ def test_randomize_draws_speeds_and_rigs_for_the_selected_agents():
 
     before = inventory()
     for options, fragment in (({"speed_min": 1.5, "speed_max": 1.0}, "Speed range 1.5-1 m/s"),
+                              ({"scale_min": 1.2, "scale_max": 1.1}, "Size range 1.2-1.1"),
                               ({"vary_rig": True}, "no rig is imported")):
         message = operator_error(bpy.ops.footfall.randomize_agents, **options)
         check(fragment in message, message)
@@ -637,7 +642,7 @@ def test_failing_operators_report_and_cancel():
         (scene_operators.FOOTFALL_OT_plan, {"selected_only": False}, "No agents to plan"),
         (scene_operators.FOOTFALL_OT_plan, {"selected_only": True}, "No agents selected"),
         (agent_operators.FOOTFALL_OT_randomize_agents,
-         {"seed": 0, "speed_min": 1.1, "speed_max": 1.5, "vary_rig": False}, "No agents selected"),
+         {"seed": 0, "speed_min": 1.1, "speed_max": 1.5, "scale_min": 1.0, "scale_max": 1.0, "vary_rig": False}, "No agents selected"),
         (agent_operators.FOOTFALL_OT_select_unreached, {}, "No plan: run Plan first"),
         (operators.FOOTFALL_OT_import_rig, {"filepath": str(TMP / "missing.glb"), "armature": ""},
          "missing.glb: no such file"),

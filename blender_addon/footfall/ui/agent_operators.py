@@ -9,7 +9,7 @@ from .operator_errors import report_and_cancel
 
 
 class FOOTFALL_OT_randomize_agents(bpy.types.Operator):
-    """Draw a preferred speed (and optionally a rig) at random for each selected agent"""
+    """Draw a preferred speed (and optionally a size and a rig) at random for each selected agent"""
 
     bl_idname = "footfall.randomize_agents"
     bl_label = "Randomize Agents"
@@ -20,6 +20,10 @@ class FOOTFALL_OT_randomize_agents(bpy.types.Operator):
                                        default=1.1, min=0.01, max=10.0, unit="VELOCITY")
     speed_max: bpy.props.FloatProperty(name="Highest Speed", description="Preferred speed drawn up to here (m/s)",
                                        default=1.5, min=0.01, max=10.0, unit="VELOCITY")
+    scale_min: bpy.props.FloatProperty(name="Smallest Size", description="Body size drawn from here, as a share of "
+                                       "the character's (1 and 1: sizes are not drawn)", default=1.0, min=0.25, max=4.0)
+    scale_max: bpy.props.FloatProperty(name="Largest Size", description="Body size drawn up to here, as a share of "
+                                       "the character's", default=1.0, min=0.25, max=4.0)
     vary_rig: bpy.props.BoolProperty(name="Vary Rig", description="Draw each agent's rig from the imported rigs",
                                      default=False)
 
@@ -34,11 +38,12 @@ class FOOTFALL_OT_randomize_agents(bpy.types.Operator):
                 raise SceneError("Vary Rig: no rig is imported (Import Rig first)")
             names = selected_agents(context.scene, context.selected_objects)
             drawn = agent_variation.randomize(context.scene, names, self.seed, (self.speed_min, self.speed_max),
-                                              rigs)
+                                              rigs, (self.scale_min, self.scale_max))
         except SceneError as error:
             return report_and_cancel(self, error)
         plan_watch.note_change(context.scene)
-        self.report({"INFO"}, f"Drew {'speeds and rigs' if rigs else 'speeds'} for {len(drawn)} agents")
+        what = ["speeds"] + (["sizes"] if (self.scale_min, self.scale_max) != (1.0, 1.0) else []) + (["rigs"] if rigs else [])
+        self.report({"INFO"}, f"Drew {', '.join(what)} for {len(drawn)} agents")
         return {"FINISHED"}
 
 
