@@ -468,16 +468,16 @@ class _Layout:
         self.lines.append(text or idname)
         return type("Properties", (), {})()
 
-    def prop(self, data, name):
+    def prop(self, data, name, text=""):
         self.lines.append(name)
 
 
-def panel_lines():
-    """What the sidebar panel draws for the scene as it is."""
+def panel_lines(panel=None):
+    """What a sidebar panel (the main one by default) draws for the scene as it is."""
     from footfall.ui.panel import FOOTFALL_PT_main
 
     stand_in = type("Panel", (), {"layout": _Layout()})()
-    FOOTFALL_PT_main.draw(stand_in, bpy.context)
+    (panel or FOOTFALL_PT_main).draw(stand_in, bpy.context)
     return stand_in.layout.lines
 
 
@@ -644,6 +644,7 @@ def test_failing_operators_report_and_cancel():
         (agent_operators.FOOTFALL_OT_randomize_agents,
          {"seed": 0, "speed_min": 1.1, "speed_max": 1.5, "scale_min": 1.0, "scale_max": 1.0, "vary_rig": False}, "No agents selected"),
         (agent_operators.FOOTFALL_OT_select_unreached, {}, "No plan: run Plan first"),
+        (agent_operators.FOOTFALL_OT_set_agent_property, {"key": "footfall_speed"}, "No agent is active"),
         (operators.FOOTFALL_OT_import_rig, {"filepath": str(TMP / "missing.glb"), "armature": ""},
          "missing.glb: no such file"),
         (operators.FOOTFALL_OT_import_rig, {"filepath": "", "armature": "Sphere"},
@@ -758,9 +759,43 @@ def test_the_overlay_draws_the_stored_plan():
     check(overlay.overlay_of(scene) is not first, "a new plan kept the old overlay")
 
 
+def test_the_agent_panel_sets_and_shows_an_agents_properties():
+    """With an agent (or one of its goals) active, the Agent panel shows its
+    properties as fields, and offers to set those it does not have; Set gives
+    the agent the property at its starting value, and Plan reads it."""
+    from footfall.ui.panel import FOOTFALL_PT_agent
+
+    fresh_scene()
+    load_good_scenario()
+    alice = bpy.data.objects["alice"]
+    bpy.context.view_layer.objects.active = bpy.data.objects["bob"]
+    check(FOOTFALL_PT_agent.poll(bpy.context), "no Agent panel for an agent")
+    bpy.context.view_layer.objects.active = next(c for c in alice.children)  # a goal stands for its agent
+    lines = panel_lines(FOOTFALL_PT_agent)
+    check(lines[0] == "alice" and "Set Speed (m/s)" in lines and "Set Size" in lines, lines)
+    check(bpy.ops.footfall.set_agent_property(key="footfall_scale") == {"FINISHED"}, "set failed")
+    check(alice["footfall_scale"] == 1.0, f"size {alice.get('footfall_scale')}")
+    lines = panel_lines(FOOTFALL_PT_agent)
+    check('["footfall_scale"]' in lines and "Set Size" not in lines, lines)
+    alice["footfall_scale"] = 0.9
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+    from footfall.bridge import plan_store
+
+    check({a.name: a.scale for a in plan_store.load_plan().agents}["alice"] == 0.9, "the size was not planned")
+    before = inventory()
+    check("not an agent property" in operator_error(bpy.ops.footfall.set_agent_property, key="footfall_mood"),
+          "a made-up property was set")
+    bpy.context.view_layer.objects.active = None
+    check(not FOOTFALL_PT_agent.poll(bpy.context), "an Agent panel with no agent active")
+    check("No agent is active" in operator_error(bpy.ops.footfall.set_agent_property, key="footfall_speed"),
+          "set with no agent active")
+    check(inventory() == before, "a refused set changed the scene")
+
+
 run([test_load_builds_the_conventions_and_extracts_back, test_obstacles_keep_their_shape_in_3d, test_hand_made_agents_and_obstacles_are_extracted,
      test_plan_is_stored_and_saved_with_the_file, test_the_plan_names_those_that_did_not_arrive,
      test_an_agents_own_speed_and_start, test_randomize_draws_speeds_and_rigs_for_the_selected_agents,
      test_scatter_places_agents_clear_of_obstacles_and_each_other, test_the_plan_is_out_of_date_once_the_scene_changes,
      test_errors_leave_the_scene_as_it_was,
-     test_failing_operators_report_and_cancel, test_steersuite_case_loads, test_the_overlay_draws_the_stored_plan])
+     test_failing_operators_report_and_cancel, test_steersuite_case_loads, test_the_overlay_draws_the_stored_plan,
+     test_the_agent_panel_sets_and_shows_an_agents_properties])

@@ -131,4 +131,34 @@ class FOOTFALL_OT_select_unreached(bpy.types.Operator):
         return {"FINISHED"}
 
 
-classes = (FOOTFALL_OT_scatter_agents, FOOTFALL_OT_randomize_agents, FOOTFALL_OT_select_unreached)
+class FOOTFALL_OT_set_agent_property(bpy.types.Operator):
+    """Give the active agent this property (then edit it in the panel)"""
+
+    bl_idname = "footfall.set_agent_property"
+    bl_label = "Set Agent Property"
+    bl_options = {"REGISTER", "UNDO"}
+
+    key: bpy.props.StringProperty(name="Property", description="The agent's custom property, as footfall_speed")
+
+    def execute(self, context):
+        from ..bridge import agent_fields, agent_rigs, plan_watch
+        from ..bridge.scene_extract import SceneError
+
+        try:
+            field = agent_fields.BY_KEY.get(self.key)
+            if field is None:
+                raise SceneError(f"'{self.key}' is not an agent property (one of "
+                                 f"{', '.join(sorted(agent_fields.BY_KEY))})")
+            agent = agent_fields.active_agent(context.scene, context.active_object)
+            if agent is None:
+                raise SceneError("No agent is active: click an agent's empty or one of its goals")
+            value = agent_fields.start_value(context.scene, field)
+        except (SceneError, agent_rigs.RigChoiceError) as error:
+            return report_and_cancel(self, error)
+        agent[field.key] = value
+        plan_watch.note_change(context.scene)
+        return {"FINISHED"}
+
+
+classes = (FOOTFALL_OT_scatter_agents, FOOTFALL_OT_randomize_agents, FOOTFALL_OT_select_unreached,
+           FOOTFALL_OT_set_agent_property)

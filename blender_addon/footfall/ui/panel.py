@@ -74,6 +74,32 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
         self.layout.operator("footfall.export_gltf", icon="EXPORT")
 
 
+class FOOTFALL_PT_agent(_FootfallSidebarTab, bpy.types.Panel):
+    """The active agent's own properties (its empty's custom properties)."""
+
+    bl_idname = "FOOTFALL_PT_agent"
+    bl_label = "Agent"
+    bl_parent_id = "FOOTFALL_PT_main"
+
+    @classmethod
+    def poll(cls, context):
+        from ..bridge.agent_fields import active_agent
+
+        return active_agent(context.scene, context.active_object) is not None
+
+    def draw(self, context):
+        from ..bridge.agent_fields import FIELDS, active_agent
+        from ..bridge.scene_extract import agent_name
+
+        agent = active_agent(context.scene, context.active_object)
+        self.layout.label(text=agent_name(agent), icon="EMPTY_ARROWS")
+        for field in FIELDS:
+            if field.key in agent:
+                self.layout.prop(agent, f'["{field.key}"]', text=field.label)
+            else:
+                self.layout.operator("footfall.set_agent_property", text=f"Set {field.label}").key = field.key
+
+
 class FOOTFALL_PT_bone_map(_FootfallSidebarTab, bpy.types.Panel):
     """Bone names for Import Rig, where detection cannot find them."""
 

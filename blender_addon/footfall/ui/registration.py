@@ -6,7 +6,7 @@ import bpy
 from ..bridge import plan_watch
 from . import agent_operators, overlay, preferences, properties, scene_operators
 from .operators import FOOTFALL_OT_apply, FOOTFALL_OT_export_gltf, FOOTFALL_OT_import_rig
-from .panel import FOOTFALL_PT_bone_map, FOOTFALL_PT_main
+from .panel import FOOTFALL_PT_agent, FOOTFALL_PT_bone_map, FOOTFALL_PT_main
 
 classes = (
     preferences.FOOTFALL_AP_preferences,
@@ -17,6 +17,7 @@ classes = (
     FOOTFALL_OT_apply,
     FOOTFALL_OT_export_gltf,
     FOOTFALL_PT_main,
+    FOOTFALL_PT_agent,
     FOOTFALL_PT_bone_map,
 )
 
