@@ -30,10 +30,11 @@ OUTCOME = "footfall_plan_outcome"  # the scene's property: what the last Plan re
 REPLANNED = "footfall_replanned"  # the scene's property: agents planned again since the last Apply
 REVISION = "footfall_revision"  # the Text's property: new at every store
 LINE = 76
+PACK_LEVEL = 1  # zlib's fastest: Plan packs at every run (docs/notes/blender-workflow.md)
 
 
 def _pack(text: str) -> str:
-    packed = base64.b64encode(zlib.compress(text.encode("utf-8"), 6)).decode("ascii")
+    packed = base64.b64encode(zlib.compress(text.encode("utf-8"), PACK_LEVEL)).decode("ascii")
     return "\n".join([HEADER, *(packed[i:i + LINE] for i in range(0, len(packed), LINE))])
 
 
