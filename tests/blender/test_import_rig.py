@@ -215,9 +215,43 @@ def test_project_rig_matches_its_profile():
     check(profile.bones == stored["bones"], profile.bones)
 
 
+def test_the_planners_body_is_measured_from_the_rig():
+    """Import Rig stores the body the planner tests: 32 poses of 14 capsules
+    per behaviour, the walking hands swinging ahead and behind, the side
+    step's toes across the way; a rig whose clips do not narrow from walk to
+    arms in to side step is told so, and plans with the built-in body."""
+    import shutil
+
+    from footfall.bridge import rig_body, rig_import
+
+    project = ROOT / "rigs" / "footfall_humanoid.glb"
+    fresh_scene()
+    imported = rig_import.import_rig(str(project))
+    body = rig_body.body_of(imported.armature)
+    check(body is not None and any("body measured" in note for note in imported.notes), imported.notes)
+    check(sorted(body["poses"]) == ["arms_in", "side_step", "walk"], sorted(body["poses"]))
+    check(all(len(poses) == rig_body.PHASES and all(len(pose) == 14 and all(c[6] > 0 for c in pose.values())
+                                                    for pose in poses) for poses in body["poses"].values()),
+          "a pose without its 14 capsules")
+    hands = [max(pose["forearm_left"][0], pose["forearm_left"][3]) for pose in body["poses"]["walk"]]
+    check(max(hands) > 0.15 and min(hands) < 0.05, f"the left hand swings from {min(hands):.2f} to {max(hands):.2f} m")
+    toes = [pose["foot_left"][4] - pose["foot_left"][1] for pose in body["poses"]["side_step"]]
+    check(min(toes) > 0.1, "side-stepping, the feet do not point across the way")
+    check(1.7 < body["height"] < 1.9, f"height {body['height']}")
+
+    odd = TMP / "narrow.glb"
+    shutil.copy(project, odd)
+    profile = json.loads(project.with_suffix(".json").read_text())
+    profile["clips"]["arms_in"] = "walk"  # arms "held in" as wide as walking
+    odd.with_suffix(".json").write_text(json.dumps(profile))
+    fresh_scene()
+    imported = rig_import.import_rig(str(odd))
+    check(rig_body.body_of(imported.armature) is None, "a body whose behaviours do not narrow was stored")
+    check(any("do not narrow" in note for note in imported.notes), imported.notes)
+
 
 run([test_mixamo_rig_is_detected, test_bones_of_no_naming_scheme_are_found_from_the_skeleton,
      test_rigs_are_read_from_gltf_and_fbx_files_only, test_an_fbx_rig_is_imported_and_kept_out_of_renders,
      test_a_rigify_metarig_in_the_scene_is_used_as_it_is, test_unmappable_rig_lists_bones_and_changes_nothing,
      test_panel_fields_complete_the_map, test_profile_beside_the_file_completes_the_map,
-     test_project_rig_matches_its_profile])
+     test_project_rig_matches_its_profile, test_the_planners_body_is_measured_from_the_rig])

@@ -111,8 +111,22 @@ def measure(rig, profile) -> dict:
     return {"height": round(height, 4), "poses": motions}
 
 
+def measured(rig, profile) -> Tuple[Optional[dict], str]:
+    """The rig's body and a note for the user; None (and why) where its
+    motions do not narrow from walk to arms in to side step: the planner
+    needs that order, and then tests the built-in body."""
+    body = measure(rig, profile)
+    extents = {b: body_capsules.lateral_extent(body["poses"][b]) for b in PLANNED_BEHAVIORS}
+    widths = ", ".join(f"{b} {extents[b]:.2f} m" for b in reversed(PLANNED_BEHAVIORS))
+    if not extents["side_step"] < extents["arms_in"] < extents["walk"]:
+        return None, (f"body: its clips do not narrow from walk to arms in to side step (across the way: {widths}); "
+                      "the planner tests the built-in body")
+    return body, f"body measured from its mesh and clips (across the way: {widths})"
+
+
 def body_of(rig) -> Optional[dict]:
-    """The body stored on an imported rig; None for a rig imported before
-    Footfall measured bodies (it plans with the built-in body)."""
+    """The body stored on an imported rig; None for a rig whose clips gave
+    none (measured), or imported before Footfall measured bodies: it plans
+    with the built-in body."""
     text = rig.get(BODY_PROPERTY)
     return json.loads(text) if text else None

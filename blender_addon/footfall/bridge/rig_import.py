@@ -175,9 +175,13 @@ def import_rig(filepath: str = "", mapping: Optional[Dict[str, object]] = None,
         clips, clip_notes = rig_clips.choose(rig, bones, given.clips, actions, source)
         notes += clip_notes
         profile = RigProfile(bones=bones, clips=clips, dimensions=dimensions, rig=source)
-        body = json.dumps(rig_body.measure(rig, profile))
+        body, body_note = rig_body.measured(rig, profile)
+        notes.append(body_note)
         rig[PROFILE_PROPERTY] = json.dumps(profile.to_document())  # last: a failure changes nothing
-        rig[rig_body.BODY_PROPERTY] = body
+        if body is not None:
+            rig[rig_body.BODY_PROPERTY] = json.dumps(body)
+        elif rig_body.BODY_PROPERTY in rig:
+            del rig[rig_body.BODY_PROPERTY]
     except Exception:
         datablocks.remove_new(before)
         raise
