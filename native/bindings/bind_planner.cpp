@@ -145,6 +145,8 @@ void bind_planner(py::module_& m) {
                      "It stands still until this time [s], then sets off.")
       .def_readwrite("goal_wait", &AgentSpec::goal_wait,
                      "It stands this long [s] at each goal but the last.")
+      .def_readwrite("end_facing", &AgentSpec::end_facing,
+                     "The facing [rad] it turns to at its last goal, where it has room; None: as it arrives.")
       .def_readwrite("scale", &AgentSpec::scale,
                      "Its body's size as a share of the scenario's character, [0.25, 4] (set its "
                      "character to scaled() of it).")

@@ -792,10 +792,39 @@ def test_the_agent_panel_sets_and_shows_an_agents_properties():
     check(inventory() == before, "a refused set changed the scene")
 
 
+def test_an_agent_turns_as_its_last_goal_is_turned():
+    """A scenario's end_facing loads as the last goal empty's turn (and the
+    agent's footfall_face_goal); Plan turns the agent that way at its goal,
+    as the goal is turned in the scene, and not without the flag."""
+    from footfall.bridge import plan_store
+
+    fresh_scene()
+    path = write("turn.json", {"format": "footfall-scenario", "version": 1, "agents": [
+        {"name": "ann", "position": [0, 0], "facing": 0.3, "goals": [[2, 1], [4, 0]], "end_facing": 1.2}]})
+    check(bpy.ops.footfall.load_scenario(filepath=path) == {"FINISHED"}, "load failed")
+    bpy.context.view_layer.update()
+    ann, goal = bpy.data.objects["ann"], bpy.data.objects["ann goal 2"]
+    check(bool(ann.get("footfall_face_goal")), "the flag was not set")  # 3.4 holds a bool as 1
+    x_axis = goal.matrix_world.col[0]
+    check(abs(math.atan2(x_axis.y, x_axis.x) - 1.2) < 1e-6, "the last goal is not turned to the end facing")
+    check(abs(extract()["agents"][0]["end_facing"] - 1.2) < 1e-6, extract()["agents"][0])
+
+    def last_phi():
+        check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+        return plan_store.load_plan().agents[0].footsteps[-1].phi
+
+    check(abs(math.remainder(last_phi() - 1.2, math.tau)) < 1e-6, "the agent did not turn to its goal's facing")
+    goal.rotation_euler.z += 1.0
+    bpy.context.view_layer.update()
+    check(abs(math.remainder(last_phi() - 2.2, math.tau)) < 1e-6, "the agent did not follow the turned goal")
+    ann["footfall_face_goal"] = False
+    check(abs(math.remainder(last_phi() - 2.2, math.tau)) > 0.1, "the agent turned without the flag")
+
+
 run([test_load_builds_the_conventions_and_extracts_back, test_obstacles_keep_their_shape_in_3d, test_hand_made_agents_and_obstacles_are_extracted,
      test_plan_is_stored_and_saved_with_the_file, test_the_plan_names_those_that_did_not_arrive,
      test_an_agents_own_speed_and_start, test_randomize_draws_speeds_and_rigs_for_the_selected_agents,
      test_scatter_places_agents_clear_of_obstacles_and_each_other, test_the_plan_is_out_of_date_once_the_scene_changes,
      test_errors_leave_the_scene_as_it_was,
      test_failing_operators_report_and_cancel, test_steersuite_case_loads, test_the_overlay_draws_the_stored_plan,
-     test_the_agent_panel_sets_and_shows_an_agents_properties])
+     test_the_agent_panel_sets_and_shows_an_agents_properties, test_an_agent_turns_as_its_last_goal_is_turned])

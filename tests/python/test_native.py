@@ -303,3 +303,28 @@ def test_an_agents_scale_sizes_it_and_is_kept_in_the_plan_file(ff, tmp_path):
     ff.write_plan_file(plan, str(path))
     assert json.loads(path.read_text())["agents"][0]["scale"] == 0.5
     assert ff.load_plan(str(path)).agents[0].scale == 0.5
+
+
+def test_an_agent_turns_to_its_end_facing_at_its_last_goal(ff):
+    def ann(end_facing=None, leave=False):
+        agent = {"name": "ann", "position": [0, 0], "goals": [[4, 0]], "leave_at_goal": leave}
+        if end_facing is not None:
+            agent["end_facing"] = end_facing
+        others = [{"name": "bob", "position": [0, 2], "goals": [[4, 2]]}]
+        return ff.plan_scenario(ff.parse_scenario(scenario_json(agents=[agent, *others]), "turn.json")).agents[0]
+
+    plain = ann()
+    for facing in (math.pi / 2, math.pi, -2.5):
+        turned = ann(facing)
+        assert turned.status == ff.AgentStatus.REACHED
+        assert abs(math.remainder(turned.footsteps[-1].phi - facing, math.tau)) < 1e-6
+        # Both feet point the new way, and the turn comes after it arrived as it would have.
+        for foot in ff.feet_at(turned, turned.end_time()):
+            assert abs(math.remainder(foot.orientation - facing, math.tau)) < 1e-6
+        assert all(s.kind == ff.StepKind.STOP for s in turned.footsteps[len(plain.footsteps):])
+        assert turned.footsteps[-1].com_end == pytest.approx(plain.footsteps[-1].com_end, abs=0.05)
+    # One that leaves at its goal does not stop to turn.
+    assert len(ann(math.pi, leave=True).footsteps) == len(ann(leave=True).footsteps)
+    with pytest.raises(ValueError, match=r"agents\[0\].end_facing: must be a finite number"):
+        ff.parse_scenario(scenario_json(agents=[{"position": [0, 0], "goals": [[1, 0]], "end_facing": float("nan")}]),
+                          "nan.json")

@@ -7,7 +7,8 @@ from dataclasses import dataclass
 from typing import Optional
 
 from . import agent_rigs
-from .scene_extract import AGENT_RIG, AGENT_SCALE, AGENT_SPEED, GOAL_WAIT, START_DELAY, TIME_LIMIT, agent_empties
+from .scene_extract import (AGENT_RIG, AGENT_SCALE, AGENT_SPEED, FACE_GOAL, GOAL_WAIT, START_DELAY, TIME_LIMIT,
+                            agent_empties)
 
 
 @dataclass(frozen=True)
@@ -24,6 +25,7 @@ FIELDS = (
     AgentField(GOAL_WAIT, "Wait at Goals (s)", 0.0),
     AgentField(TIME_LIMIT, "Time Limit (s)", 300.0),
     AgentField(AGENT_RIG, "Rig", ""),
+    AgentField(FACE_GOAL, "Face as Last Goal", True),
 )
 BY_KEY = {field.key: field for field in FIELDS}
 

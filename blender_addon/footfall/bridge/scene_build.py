@@ -22,7 +22,7 @@ import bpy
 from ..core import native
 from ..core.scenario import document_of, parse
 from . import datablocks
-from .scene_extract import (AGENT_CHARACTER, AGENT_SCALE, AGENTS, GOAL_INDEX, GOAL_WAIT, START_DELAY, TIME_LIMIT, LEAVE_AT_GOAL, OBSTACLES, OVERRIDE_KEYS,
+from .scene_extract import (AGENT_CHARACTER, AGENT_SCALE, AGENTS, FACE_GOAL, GOAL_INDEX, GOAL_WAIT, START_DELAY, TIME_LIMIT, LEAVE_AT_GOAL, OBSTACLES, OVERRIDE_KEYS,
                             OVERRIDES, collection_in, overrides)
 
 AGENT_SIZE = 0.5  # [m] length of the agent empty's arrows
@@ -168,6 +168,8 @@ def _add_agent(agent: dict, collection):
         obj[GOAL_WAIT] = float(agent["goal_wait"])
     if agent.get("scale"):
         obj[AGENT_SCALE] = float(agent["scale"])
+    if agent.get("end_facing") is not None:
+        obj[FACE_GOAL] = True
     collection.objects.link(obj)
     return obj
 
@@ -184,5 +186,7 @@ def _add_goals(empty, agent: dict, collection) -> None:
         goal.parent = empty
         dx, dy = gx - x, gy - y
         goal.location = (cos * dx + sin * dy, -sin * dx + cos * dy, 0.0)
+        if number == len(agent["goals"]) and agent.get("end_facing") is not None:
+            goal.rotation_euler = (0.0, 0.0, agent["end_facing"] - agent["facing"])  # in the agent's frame
         goal[GOAL_INDEX] = number
         collection.objects.link(goal)

@@ -19,7 +19,9 @@ count, hidden ones included:
   "footfall_wait" (seconds it stands before setting off, and at each goal
   but the last), "footfall_speed" (its preferred
   speed, m/s), "footfall_scale" (its body's size as a share of the
-  character's, which Apply scales its rig by), "footfall_character" (JSON text:
+  character's, which Apply scales its rig by), "footfall_face_goal" (true:
+  at its last goal it turns to face where that goal empty's X axis points),
+  "footfall_character" (JSON text:
   overrides of the character for it alone) and "footfall_rig" (the name of
   the imported rig it is animated with, which sizes its character) are
   optional.
@@ -50,6 +52,7 @@ TIME_LIMIT = "footfall_time_limit"
 START_DELAY = "footfall_start_delay"
 GOAL_WAIT = "footfall_wait"
 AGENT_SCALE = "footfall_scale"
+FACE_GOAL = "footfall_face_goal"
 AGENT_RIG = "footfall_rig"
 OVERRIDES = "footfall_overrides"
 OVERRIDE_KEYS = ("character", "planner")
@@ -157,13 +160,14 @@ def _agents(objects, depsgraph) -> List[AgentInput]:
             name=agent_name(agent),
             position=_xy(world.translation),
             goals=[_xy(goal.evaluated_get(depsgraph).matrix_world.translation) for goal in goals],
-            facing=math.atan2(world[1][0], world[0][0]),  # where the local X axis points
-            leave_at_goal=_leaves(agent),
+            facing=_facing(world),
+            leave_at_goal=_flag(agent, LEAVE_AT_GOAL),
             character=_own_character(agent),
             time_limit=_number(agent, TIME_LIMIT, "seconds"),
             start_delay=_number(agent, START_DELAY, "seconds"),
             goal_wait=_number(agent, GOAL_WAIT, "seconds"),
             scale=_number(agent, AGENT_SCALE, "times the character's size"),
+            end_facing=_facing(goals[-1].evaluated_get(depsgraph).matrix_world) if _flag(agent, FACE_GOAL) else None,
         ))
     return agents
 
@@ -214,12 +218,16 @@ def _rig_names(objects) -> Dict[str, str]:
     return rigs
 
 
-def _leaves(agent) -> bool:
-    value = agent.get(LEAVE_AT_GOAL, False)
+def _flag(agent, prop: str) -> bool:
+    value = agent.get(prop, False)
     if value not in (True, False, 0, 1):
-        raise SceneError(f"Agent '{agent.name}': custom property '{LEAVE_AT_GOAL}' must be true or false, "
-                         f"got {value!r}")
+        raise SceneError(f"Agent '{agent.name}': custom property '{prop}' must be true or false, got {value!r}")
     return bool(value)
+
+
+def _facing(world) -> float:
+    """Where an object's local X axis points, seen from above [rad]."""
+    return math.atan2(world[1][0], world[0][0])
 
 
 @dataclass(frozen=True)

@@ -23,7 +23,8 @@ class AgentInput:
     the scenario's character for it alone (its own size, say), its time
     budget [s] (None: the planner's default, from max_time and its route),
     how long it stands before it sets off and at each goal but the last [s],
-    and its body's size as a share of the scenario's character (None: 1)."""
+    its body's size as a share of the scenario's character (None: 1), and
+    the facing it turns to at its last goal [rad] (None: as it arrives)."""
 
     name: str
     position: Point
@@ -35,6 +36,7 @@ class AgentInput:
     start_delay: Optional[float] = None
     goal_wait: Optional[float] = None
     scale: Optional[float] = None
+    end_facing: Optional[float] = None
 
 
 @dataclass(frozen=True)
@@ -104,6 +106,8 @@ def scenario_document(scenario: ScenarioInput) -> dict:
             entry["goal_wait"] = float(agent.goal_wait)
         if agent.scale is not None:
             entry["scale"] = float(agent.scale)
+        if agent.end_facing is not None:
+            entry["end_facing"] = float(agent.end_facing)
         agents.append(entry)
     document = {
         "format": "footfall-scenario",
@@ -124,7 +128,7 @@ def document_of(scenario) -> dict:
     return scenario_document(ScenarioInput(
         agents=[AgentInput(a.name, a.position, a.goals, a.facing, a.leave_at_goal, time_limit=a.time_limit or None,
                            start_delay=a.start_delay or None, goal_wait=a.goal_wait or None,
-                           scale=None if a.scale == 1.0 else a.scale)
+                           scale=None if a.scale == 1.0 else a.scale, end_facing=a.end_facing)
                 for a in scenario.agents],
         obstacles=[obstacle_input(o) for o in scenario.obstacles]))
 

@@ -61,6 +61,8 @@ void check_agent(const AgentSpec& agent) {
     throw std::invalid_argument("agent " + agent.name + ": goal_wait must be in [0, 100000] s");
   if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
     throw std::invalid_argument("agent " + agent.name + ": scale must be in [0.25, 4]");
+  if (agent.end_facing && !std::isfinite(*agent.end_facing))
+    throw std::invalid_argument("agent " + agent.name + ": end_facing must be finite");
   if (!in_world(agent.position) || !std::isfinite(agent.facing)) {
     throw std::invalid_argument("agent " + agent.name +
                                 ": position and facing must be finite, within 1e9 m");
@@ -317,6 +319,15 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   if (w.plan.footsteps.empty() && dot(unit(w.state.facing), target.point - w.state.com) < 0.0)
     turn_first(w.state, a);
   if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, others, options, a);
+  if (a.reached && a.rest.complete && w.spec->end_facing && w.goal + 1 == w.spec->goals.size() &&
+      !leaves_now(w, a.reached)) {
+    // At its last goal it turns to face as asked, as far as it has room to.
+    const std::optional<WholeBody> following = planner.whole_body(options.sections);
+    Rest turn = planner.validity().turn_to(a.rest.state, *w.spec->end_facing, others,
+                                           following ? &*following : nullptr);
+    a.rest.steps.insert(a.rest.steps.end(), turn.steps.begin(), turn.steps.end());
+    a.rest.state = turn.state;
+  }
   a.ways.push_back({w.state.com, goal, way});
   if (!a.reached) {
     Way left = way_toward(w, mesh, planner.character(), a.end.com);

@@ -45,7 +45,7 @@ Scenario read_scenario(const Json& root) {
       const std::string path = item("agents", i);
       expect_object(agents[i], path,
                     {"name", "position", "facing", "goals", "leave_at_goal", "character",
-                     "time_limit", "start_delay", "goal_wait", "scale"});
+                     "time_limit", "start_delay", "goal_wait", "scale", "end_facing"});
       AgentSpec agent;
       agent.name = agents[i].contains("name") ? string(agents[i]["name"], child(path, "name"))
                                               : "agent" + std::to_string(i);
@@ -71,6 +71,8 @@ Scenario read_scenario(const Json& root) {
         agent.start_delay = number(agents[i]["start_delay"], child(path, "start_delay"));
       if (agents[i].contains("goal_wait"))
         agent.goal_wait = number(agents[i]["goal_wait"], child(path, "goal_wait"));
+      if (agents[i].contains("end_facing"))
+        agent.end_facing = number(agents[i]["end_facing"], child(path, "end_facing"));
       if (agents[i].contains("scale")) {
         agent.scale = number(agents[i]["scale"], child(path, "scale"));
         if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))

@@ -108,6 +108,7 @@ bool WholeBody::passes(Footstep& step) const {
 }
 
 using planner::detail::kPivotTurn;
+using planner::detail::kFacingTolerance;
 using planner::detail::kSideStepSpeed;
 
 ValidityChecker::ValidityChecker(const CharacterParams& character, const PlannerParams& planner,
@@ -127,6 +128,10 @@ bool ValidityChecker::collides(const Footstep& step, const MovingObstacles& othe
 Rest ValidityChecker::come_to_rest(const FootstepState& state, const MovingObstacles& others,
                                    const WholeBody* whole) const {
   return impl_->come_to_rest(state, others, whole);
+}
+Rest ValidityChecker::turn_to(const FootstepState& standing, double facing, const MovingObstacles& others,
+                              const WholeBody* whole) const {
+  return impl_->turn_to(standing, facing, others, whole);
 }
 bool ValidityChecker::stands_clear(const FootstepState& state, const MovingObstacles& others) const {
   return impl_->stands_clear(state, others);
@@ -372,6 +377,33 @@ Rest ValidityChecker::Impl::come_to_rest(const FootstepState& state,
   };
   rest.complete = (rest.state.standing() || stop()) && stop() && stands_clear(rest.state, others);
   return rest;
+}
+
+Rest ValidityChecker::Impl::turn_to(const FootstepState& standing, double facing,
+                                    const MovingObstacles& others, const WholeBody* whole) const {
+  Rest turned{{}, standing, true};
+  detail::SampledAgents& samples = sampled(others, character_, standing.time);
+  // Turns of at most kPivotTurn, which each foot can follow from the other,
+  // then a stop of each foot so that both point the new way.
+  int closing = std::fabs(wrap_angle(facing - standing.facing)) > kFacingTolerance ? 2 : 0;
+  for (double left = wrap_angle(facing - standing.facing); std::fabs(left) > kFacingTolerance || closing-- > 0;
+       left = wrap_angle(facing - turned.state.facing)) {
+    const double turn = std::clamp(left, -kPivotTurn, kPivotTurn);
+    StepResult pivot = create_footstep(turned.state,
+                                       {StepKind::kStop, other(turned.state.last_foot),
+                                        wrap_angle(turned.state.facing + turn), 0.0, params_.stop_duration},
+                                       character_);
+    if (pivot.valid() && whole != nullptr) whole->label(pivot.step);
+    if (!pivot.valid() || step_touches_agents(pivot.step, turned.state, samples) ||
+        hits_obstacles(pivot.step, whole != nullptr && whole->shoulders_in_3d()) ||
+        (whole != nullptr && !whole->passes(pivot.step))) {
+      turned.complete = false;
+      break;
+    }
+    turned.steps.push_back(pivot.step);
+    turned.state = pivot.state;
+  }
+  return turned;
 }
 
 bool ValidityChecker::Impl::stands_clear(const FootstepState& state,

@@ -16,6 +16,8 @@ namespace planner::detail {
 constexpr double kPivotTurn = 0.25 * kPi;  // [rad] the smaller pivot the search tries
 // [m/s] the side steps' speed: with the stop duration (0.5 s), 0.25 m across.
 constexpr double kSideStepSpeed = 1.0;
+// [rad] a final turn stops this near its facing
+constexpr double kFacingTolerance = 1e-6;
 }  // namespace planner::detail
 
 struct ValidityChecker::Impl {
@@ -33,6 +35,8 @@ struct ValidityChecker::Impl {
   bool collides(const Footstep& step, const MovingObstacles& others) const;
   Rest come_to_rest(const FootstepState& state, const MovingObstacles& others,
                     const WholeBody* whole) const;
+  Rest turn_to(const FootstepState& standing, double facing, const MovingObstacles& others,
+               const WholeBody* whole) const;
   bool stands_clear(const FootstepState& state, const MovingObstacles& others) const;
   std::vector<char> stands_clear_of_each(const FootstepState& state,
                                          const MovingObstacles& others) const;

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,9 @@ struct AgentSpec {
   /// It stands this long at each goal but the last before it walks on. [s]
   /// [0, kMaxTimeLimit]
   double goal_wait = 0;
+  /// The facing it turns to on the spot at its last goal, where it has the
+  /// room (not for one that leaves there). [rad]
+  std::optional<double> end_facing{};
   /// Its body's size, as a share of the character's (`character` is made
   /// from scaled() of the scenario's; its plan keeps it, AgentPlan::scale).
   /// [kLeastScale, kMostScale]

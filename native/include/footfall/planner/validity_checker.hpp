@@ -101,6 +101,14 @@ class ValidityChecker {
   /// With `whole`, the stops are checked as its searches check them.
   Rest come_to_rest(const FootstepState& state, const MovingObstacles& others = {},
                     const WholeBody* whole = nullptr) const;
+  /// From `standing`, pivots on the spot (stops turning by at most 45°
+  /// each, the feet by turns, then a stop of each foot) until the body and
+  /// both feet face `facing`, each
+  /// checked as come_to_rest checks its stops; it stops turning before one
+  /// that would run into an obstacle or one of `others` (complete: it got
+  /// all the way round).
+  Rest turn_to(const FootstepState& standing, double facing, const MovingObstacles& others = {},
+               const WholeBody* whole = nullptr) const;
   /// True if the character, standing at `state` from its time on, keeps
   /// clear of `others` while their plans last (after them, they stand too),
   /// with room to turn: a disc half the torso width round its COM, grown by
