@@ -148,7 +148,7 @@ void bind_planner(py::module_& m) {
       .def_readwrite("end_facing", &AgentSpec::end_facing,
                      "The facing [rad] it turns to at its last goal, where it has room; None: as it arrives.")
       .def_readwrite("scale", &AgentSpec::scale,
-                     "Its body's size as a share of the scenario's character, [0.25, 4] (set its "
+                     "Its body's size as a share of the scenario's character, [0.5, 1.6] (set its "
                      "character to scaled() of it).")
       .def_readwrite("time_limit", &AgentSpec::time_limit,
                      "Its time budget [s]; 0: the planner's max_time or four times its route's "

@@ -187,7 +187,7 @@ def test_an_agents_scale_sizes_its_character_and_its_rig():
     check(stance > 50 and worst <= 0.002, f"feet {worst * 1000:.2f} mm off the plan")
     bpy.data.objects["ann (agent)"]["footfall_scale"] = 5.0
     message = operator_error(bpy.ops.footfall.plan)
-    check("scale: must be in [0.25, 4]" in message and "'ann'" in message, message)
+    check("scale: must be in [0.5, 1.6]" in message and "'ann'" in message, message)
 
 
 run([test_each_agent_walks_with_its_own_rig, test_a_rig_of_another_size_than_planned_is_refused,

@@ -287,7 +287,7 @@ def test_an_agents_scale_sizes_it_and_is_kept_in_the_plan_file(ff, tmp_path):
             agent["character"] = character
         return ff.parse_scenario(scenario_json(agents=[agent]), "kid.json")
 
-    with pytest.raises(ValueError, match=r"^kid.json: agents\[0\].scale: must be in \[0.25, 4\]"):
+    with pytest.raises(ValueError, match=r"^kid.json: agents\[0\].scale: must be in \[0.5, 1.6\]"):
         scenario(5.0)
     (kid,) = scenario(0.5).agents
     assert kid.scale == 0.5

@@ -10,7 +10,7 @@ from typing import Dict, Sequence
 from .scene_extract import AGENT_RIG, AGENT_SCALE, AGENT_SPEED, SceneError, agent_empties
 
 MAX_SPEED = 10.0  # [m/s] the core's bound on a preferred speed
-SCALES = (0.25, 4.0)  # the core's bounds on an agent's scale
+SCALES = (0.5, 1.6)  # the core's bounds on an agent's scale
 
 
 def randomize(scene, names: Sequence[str], seed: int, speeds: Sequence[float],

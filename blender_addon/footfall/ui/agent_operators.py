@@ -21,9 +21,9 @@ class FOOTFALL_OT_randomize_agents(bpy.types.Operator):
     speed_max: bpy.props.FloatProperty(name="Highest Speed", description="Preferred speed drawn up to here (m/s)",
                                        default=1.5, min=0.01, max=10.0, unit="VELOCITY")
     scale_min: bpy.props.FloatProperty(name="Smallest Size", description="Body size drawn from here, as a share of "
-                                       "the character's (1 and 1: sizes are not drawn)", default=1.0, min=0.25, max=4.0)
+                                       "the character's (1 and 1: sizes are not drawn)", default=1.0, min=0.5, max=1.6)
     scale_max: bpy.props.FloatProperty(name="Largest Size", description="Body size drawn up to here, as a share of "
-                                       "the character's", default=1.0, min=0.25, max=4.0)
+                                       "the character's", default=1.0, min=0.5, max=1.6)
     vary_rig: bpy.props.BoolProperty(name="Vary Rig", description="Draw each agent's rig from the imported rigs",
                                      default=False)
 

@@ -60,7 +60,7 @@ void check_agent(const AgentSpec& agent) {
   if (!(agent.goal_wait >= 0.0 && agent.goal_wait <= kMaxTimeLimit))
     throw std::invalid_argument("agent " + agent.name + ": goal_wait must be in [0, 100000] s");
   if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
-    throw std::invalid_argument("agent " + agent.name + ": scale must be in [0.25, 4]");
+    throw std::invalid_argument("agent " + agent.name + ": scale " + kScaleRange);
   if (agent.end_facing && !std::isfinite(*agent.end_facing))
     throw std::invalid_argument("agent " + agent.name + ": end_facing must be finite");
   if (!in_world(agent.position) || !std::isfinite(agent.facing)) {

@@ -103,7 +103,7 @@ void validate(const Scenario& scenario) {
     if (!(agent.goal_wait >= 0.0 && agent.goal_wait <= kMaxTimeLimit))
       fail(child(path, "goal_wait"), "must be in [0, 100000] s");
     if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
-      fail(child(path, "scale"), "must be in [0.25, 4]");
+      fail(child(path, "scale"), kScaleRange);
     if (agent.end_facing && !std::isfinite(*agent.end_facing)) fail(child(path, "end_facing"), "must be finite");
     const FootstepState standing = standing_state(agent.position, agent.facing, character);
     if (planners.planner(agent).validity().collides(standing)) {

@@ -175,7 +175,7 @@ AgentPlan read_agent(const Json& json, const std::string& path, const CharacterP
   if (json.contains("scale")) {
     agent.scale = number(json["scale"], child(path, "scale"));
     if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
-      fail(child(path, "scale"), "must be in [0.25, 4]");
+      fail(child(path, "scale"), kScaleRange);
   }
   if (json.contains("reason")) agent.reason = string(json["reason"], child(path, "reason"));
   if (json.contains("stopped_at"))

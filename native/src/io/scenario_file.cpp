@@ -76,7 +76,7 @@ Scenario read_scenario(const Json& root) {
       if (agents[i].contains("scale")) {
         agent.scale = number(agents[i]["scale"], child(path, "scale"));
         if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
-          fail(child(path, "scale"), "must be in [0.25, 4]");
+          fail(child(path, "scale"), kScaleRange);
       }
       scenario.agents.push_back(std::move(agent));
     }

@@ -236,8 +236,11 @@ struct ParamTable<PlannerParams> {
                          "most: the goal-directed phi covers the rest."});
 };
 
-/// The smallest and largest body size an agent's `scale` may give.
-constexpr double kLeastScale = 0.25, kMostScale = 4.0;
+/// The smallest and largest body size an agent's `scale` may give (the
+/// default character's parameters stay in their ranges: a child of about
+/// 0.9 m to a giant of 2.8 m).
+constexpr double kLeastScale = 0.5, kMostScale = 1.6;
+constexpr const char* kScaleRange = "must be in [0.5, 1.6]";
 
 /// The character `scale` times as large: every length (the body, its
 /// motions' capsules, the step lengths, the clearances) times `scale`;
