@@ -384,10 +384,13 @@ Rest ValidityChecker::Impl::turn_to(const FootstepState& standing, double facing
   Rest turned{{}, standing, true};
   detail::SampledAgents& samples = sampled(others, character_, standing.time);
   // Turns of at most kPivotTurn, which each foot can follow from the other,
-  // then a stop of each foot so that both point the new way.
-  int closing = std::fabs(wrap_angle(facing - standing.facing)) > kFacingTolerance ? 2 : 0;
-  for (double left = wrap_angle(facing - standing.facing); std::fabs(left) > kFacingTolerance || closing-- > 0;
-       left = wrap_angle(facing - turned.state.facing)) {
+  // then a stop of each foot so that both point the new way. (Both angles
+  // wrapped first: a facing of 1e20 rad would swallow the one subtracted.)
+  const double target = wrap_angle(facing);
+  int closing = std::fabs(wrap_angle(target - wrap_angle(standing.facing))) > kFacingTolerance ? 2 : 0;
+  for (double left = wrap_angle(target - wrap_angle(standing.facing));
+       std::fabs(left) > kFacingTolerance || closing-- > 0;
+       left = wrap_angle(target - wrap_angle(turned.state.facing))) {
     const double turn = std::clamp(left, -kPivotTurn, kPivotTurn);
     StepResult pivot = create_footstep(turned.state,
                                        {StepKind::kStop, other(turned.state.last_foot),
