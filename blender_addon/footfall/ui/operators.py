@@ -91,15 +91,17 @@ class FOOTFALL_OT_apply(bpy.types.Operator):
             self._job.cancel()
             self.report({"WARNING"}, "Apply stopped (Esc): nothing changed")
             return {"CANCELLED"}
+        if event.type in VIEW_EVENTS:
+            return {"PASS_THROUGH"}  # the view stays live
         if event.type != "TIMER":
-            return {"PASS_THROUGH"}  # the interface stays live
+            return {"RUNNING_MODAL"}  # edits (and undo) wait: Apply is writing the scene
         started = time.monotonic()
         try:
             while time.monotonic() - started < WORK_PER_EVENT:
                 if not self._job.advance():
                     self._end(context)
                     return self._done(context, self._job.finish())
-        except APPLY_ERRORS as error:
+        except Exception as error:  # a refusal or not, what it made is gone (advance): say why and stop
             self._end(context)
             return report_and_cancel(self, error)
         self._say(context)
@@ -123,6 +125,9 @@ class FOOTFALL_OT_apply(bpy.types.Operator):
         return {"FINISHED"}
 
 
+# The events Apply lets through while it works: looking around the scene.
+VIEW_EVENTS = {"MOUSEMOVE", "INBETWEEN_MOUSEMOVE", "MIDDLEMOUSE", "WHEELUPMOUSE", "WHEELDOWNMOUSE", "TRACKPADPAN",
+               "TRACKPADZOOM", "MOUSEROTATE", "MOUSESMARTZOOM", "NDOF_MOTION"}
 WORK_PER_EVENT = 0.25  # [s] of Apply's work between two looks at the events (a redraw of a crowd costs too)
 # What Apply refuses with a message.
 APPLY_ERRORS = (apply_plan.ApplyError, animate.TransformError, rig_clips.ClipError, CoreMissingError)
