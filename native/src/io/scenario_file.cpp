@@ -22,13 +22,12 @@ void read_agent_characters(const Json& agents, Scenario& scenario) {
   std::map<std::string, std::shared_ptr<const CharacterParams>> made;
   for (size_t i = 0; i < agents.size(); ++i) {
     const double scale = scenario.agents[i].scale;
-    const bool overridden = agents[i].contains("character") && !agents[i]["character"].empty();
-    if (!overridden && scale == 1.0) continue;
-    const Json overrides = overridden ? agents[i]["character"] : Json::object();
+    const Json overrides = agents[i].contains("character") ? agents[i]["character"] : Json::object();
     const std::string path = child(item("agents", i), "character");
     CharacterParams character = scale == 1.0 ? scenario.character : scaled(scenario.character, scale);
     read_character(overrides, path, character);
-    auto& shared = made[overrides.dump() + " x" + std::to_string(scale)];
+    if (overrides.empty() && scale == 1.0) continue;
+    auto& shared = made[overrides.dump() + " x" + Json(scale).dump()];
     if (!shared) shared = std::make_shared<const CharacterParams>(std::move(character));
     scenario.agents[i].character = shared;
   }
