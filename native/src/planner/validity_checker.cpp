@@ -392,14 +392,9 @@ Rest ValidityChecker::Impl::turn_to(const FootstepState& standing, double facing
        std::fabs(left) > kFacingTolerance || closing-- > 0;
        left = wrap_angle(target - wrap_angle(turned.state.facing))) {
     const double turn = std::clamp(left, -kPivotTurn, kPivotTurn);
-    StepResult pivot = create_footstep(turned.state,
-                                       {StepKind::kStop, other(turned.state.last_foot),
-                                        wrap_angle(turned.state.facing + turn), 0.0, params_.stop_duration},
-                                       character_);
-    if (pivot.valid() && whole != nullptr) whole->label(pivot.step);
-    if (!pivot.valid() || step_touches_agents(pivot.step, turned.state, samples) ||
-        hits_obstacles(pivot.step, whole != nullptr && whole->shoulders_in_3d()) ||
-        (whole != nullptr && !whole->passes(pivot.step))) {
+    const StepResult pivot = stop_step(turned.state, wrap_angle(turned.state.facing + turn),
+                                       params_.stop_duration, samples, whole);
+    if (!pivot.valid()) {
       turned.complete = false;
       break;
     }
@@ -484,8 +479,13 @@ StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double d
 
 StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double duration,
                                       detail::SampledAgents& others, const WholeBody* whole) const {
+  return stop_step(state, state.facing, duration, others, whole);
+}
+
+StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double facing, double duration,
+                                      detail::SampledAgents& others, const WholeBody* whole) const {
   StepResult stop = create_footstep(
-      state, {StepKind::kStop, other(state.last_foot), state.facing, 0.0, duration}, character_);
+      state, {StepKind::kStop, other(state.last_foot), facing, 0.0, duration}, character_);
   if (!stop.valid()) return stop;
   if (whole != nullptr) whole->label(stop.step);  // a stop goes anywhere
   if (step_touches_agents(stop.step, state, others) ||

@@ -71,6 +71,9 @@ struct ValidityChecker::Impl {
   bool stands_clear(const FootstepState& state, detail::SampledAgents& others) const;
   StepResult stop_step(const FootstepState& state, double duration, detail::SampledAgents& others,
                        const WholeBody* whole) const;
+  // A stop turning the body to `facing` (a pivot), checked as stop_step's.
+  StepResult stop_step(const FootstepState& state, double facing, double duration,
+                       detail::SampledAgents& others, const WholeBody* whole) const;
   // True if the character comes to rest from `state` among `others`, outside
   // `keep_out`, free to set off from there.
   bool rests_well(const FootstepState& state, detail::SampledAgents& others,
