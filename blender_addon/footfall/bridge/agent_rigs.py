@@ -66,13 +66,16 @@ def sized(document: dict, agent_rigs: Dict[str, str], rig: Optional[bpy.types.Ob
     character for the others)."""
     result = with_rig(document, profile_of(rig).dimensions, body_of(rig)) if rig is not None else dict(document)
     agents = []
+    derived = {}  # per rig and scale: a crowd's agents share a few
     for entry in result.get("agents", []):
         own = agent_rigs.get(entry["name"])
         if own is not None and (rig is None or own != rig.name):
             own_rig = _agent_rig(entry["name"], own)
-            derived, _planner = derive_parameters(*scaled(profile_of(own_rig).dimensions, body_of(own_rig),
-                                                         entry.get("scale", 1.0)))
-            entry = {**entry, "character": {**derived, **entry.get("character", {})}}
+            key = (own_rig.name, entry.get("scale", 1.0))
+            if key not in derived:
+                derived[key], _planner = derive_parameters(*scaled(profile_of(own_rig).dimensions, body_of(own_rig),
+                                                                   key[1]))
+            entry = {**entry, "character": {**derived[key], **entry.get("character", {})}}
         agents.append(entry)
     result["agents"] = agents
     return result
