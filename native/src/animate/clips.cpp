@@ -1,6 +1,7 @@
 #include "animate/clips.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "animate/accessor_data.hpp"
@@ -141,6 +142,11 @@ Clip clip_from_animation(const RigData& rig, int index) {
     if (track.times.empty() || track.values.size() != track.times.size() * per_key ||
         !std::is_sorted(track.times.begin(), track.times.end()))
       throw std::invalid_argument(where + ": a sampler's keys and values do not match");
+    const auto finite = [](const std::vector<double>& xs) {
+      return std::all_of(xs.begin(), xs.end(), [](double x) { return std::isfinite(x); });
+    };
+    if (!finite(track.times) || !finite(track.values))
+      throw std::invalid_argument(where + ": a sampler has a key time or value that is not a finite number");
     first = std::min(first, track.times.front());
     last = std::max(last, track.times.back());
     clip.tracks.push_back(std::move(track));

@@ -118,6 +118,28 @@ TEST(Rig, BonesWithoutNamesGoByTheirIndexAndAreFoundByShape) {
   EXPECT_EQ(rig.clip_sources().at("walk"), "procedural");
 }
 
+TEST(Rig, RefusesAClipWhoseKeyTimeIsNotANumber) {
+  // A NaN time passes a sortedness check and would send a lookup past the keys.
+  std::string bytes = detail::read_file(kRig);
+  std::uint32_t length;
+  std::memcpy(&length, bytes.data() + 12, 4);
+  const auto document = detail::parse_json(bytes.substr(20, length), kRig);
+  const int input = document["animations"][0]["samplers"][0]["input"].get<int>();
+  const auto& accessor = document["accessors"][input];
+  const auto& view = document["bufferViews"][accessor["bufferView"].get<int>()];
+  const std::size_t at = 20 + length + 8 + view.value("byteOffset", 0) + accessor.value("byteOffset", 0) +
+                         4 * (accessor["count"].get<std::size_t>() / 2);
+  const float nan = std::nanf("");
+  std::memcpy(bytes.data() + at, &nan, 4);
+  try {
+    Rig::parse(bytes, "nan.glb", load_rig_profile(kProfile));
+    FAIL() << "a NaN key time was read";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("a key time or value that is not a finite number"), std::string::npos)
+        << error.what();
+  }
+}
+
 TEST(Rig, RefusesBonesAndClipsItLacksAndLegsThatAreNotChains) {
   RigProfile profile = load_rig_profile(kProfile);
   profile.bones["left.foot"] = "Foot_L";
