@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <functional>
 #include <utility>
 #include <stdexcept>
@@ -50,12 +52,51 @@ tinygltf::Model checked(bool ok, tinygltf::Model model, const std::string& error
   return model;
 }
 
+bool is_file(const std::string& path, void*) {
+  std::error_code error;
+  return std::filesystem::is_regular_file(path, error);
+}
+
+bool read_file(std::vector<unsigned char>* out, std::string* error, const std::string& path, void*) {
+  std::ifstream in(path, std::ios::binary);
+  if (!is_file(path, nullptr) || !in) {
+    if (error) *error += "cannot read the file " + path + "\n";
+    return false;
+  }
+  out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return true;
+}
+
+// The files a .gltf names beside it are read as they are named: a URI naming
+// a folder or a device is refused, and nothing is expanded or written.
+tinygltf::FsCallbacks files_beside() {
+  return {is_file, [](const std::string& path, void*) { return path; }, read_file,
+          [](std::string* error, const std::string&, const std::vector<unsigned char>&, void*) {
+            if (error) *error += "writing files is not allowed\n";
+            return false;
+          },
+          nullptr};
+}
+
+// Bytes read from memory stand alone: buffers and images are data URIs or
+// the .glb's own chunk, never files that happen to be near.
+tinygltf::FsCallbacks no_files() {
+  tinygltf::FsCallbacks callbacks = files_beside();
+  callbacks.FileExists = [](const std::string&, void*) { return false; };
+  callbacks.ReadWholeFile = [](std::vector<unsigned char>*, std::string* error, const std::string& path, void*) {
+    if (error) *error += "a rig read from memory cannot name the file " + path + "\n";
+    return false;
+  };
+  return callbacks;
+}
+
 tinygltf::Model read_model(const std::string& path) {
   std::error_code missing;
   if (!std::filesystem::is_regular_file(path, missing))
     throw std::invalid_argument(user_text(path) + ": no such file");
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keep_image_bytes, nullptr);
+  loader.SetFsCallbacks(files_beside());
   tinygltf::Model model;
   std::string error, warning;
   const bool binary = path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
@@ -67,6 +108,7 @@ tinygltf::Model read_model(const std::string& path) {
 tinygltf::Model parse_model(const std::string& bytes, const std::string& name) {
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keep_image_bytes, nullptr);
+  loader.SetFsCallbacks(no_files());
   tinygltf::Model model;
   std::string error, warning;
   const bool ok =

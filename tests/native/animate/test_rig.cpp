@@ -5,7 +5,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <string>
+
+#include <unistd.h>
 
 #include "animate/rig_data.hpp"
 #include "footfall/animate/rig.hpp"
@@ -116,6 +120,38 @@ TEST(Rig, BonesWithoutNamesGoByTheirIndexAndAreFoundByShape) {
   EXPECT_EQ(rig.data().bone_names[rig.data().hips], "nodes[" + std::to_string(rig.data().hips) + "]");
   // Its only animation is an upper-body clip (its feet keep still): not taken as the walk.
   EXPECT_EQ(rig.clip_sources().at("walk"), "procedural");
+}
+
+TEST(Rig, ReadsTheBufferBesideAGltfFileButNoFileFromMemory) {
+  const std::string bytes = detail::read_file(kRig);
+  std::uint32_t length;
+  std::memcpy(&length, bytes.data() + 12, 4);
+  auto document = detail::parse_json(bytes.substr(20, length), kRig);
+  const auto folder = std::filesystem::temp_directory_path() / ("footfall-gltf-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder / "a-folder");
+  std::ofstream(folder / "rig.bin", std::ios::binary) << bytes.substr(20 + length + 8);
+  const auto gltf_naming = [&](const std::string& uri) {
+    document["buffers"][0]["uri"] = uri;
+    const std::string path = (folder / "rig.gltf").string();
+    std::ofstream(path) << document.dump();
+    return path;
+  };
+  const RigProfile profile = load_rig_profile(kProfile);
+  EXPECT_EQ(Rig::load(gltf_naming("rig.bin"), profile).data().hips, Rig::load(kRig, profile).data().hips);
+  const auto refusal = [&](auto read) {
+    try {
+      read();
+    } catch (const std::invalid_argument& error) {
+      return std::string(error.what());
+    }
+    return std::string();
+  };
+  const std::string text = detail::read_file(gltf_naming("rig.bin"));
+  EXPECT_NE(refusal([&] { Rig::parse(text, "memory.gltf", profile); }).find("not a glTF file this Footfall can read"),
+            std::string::npos);
+  EXPECT_NE(refusal([&] { Rig::load(gltf_naming("a-folder"), profile); }).find("not a glTF file this Footfall can read"),
+            std::string::npos);
+  std::filesystem::remove_all(folder);
 }
 
 TEST(Rig, RefusesAClipWhoseKeyTimeIsNotANumber) {
