@@ -45,7 +45,11 @@ LOOK_AHEAD_TRACK = "Footfall look ahead"
 # keyed at every frame was 34 million keys): [m], and per quaternion component.
 KEY_TOLERANCE = (5e-4, 5e-4)
 POLE_TOLERANCE = (5e-3, 5e-4)  # a knee pole half a metre ahead only aims the knee
-SWING_LOOSENESS = 6.0  # a foot in the air, moving fast, is keyed within 3 mm
+# The look-ahead's turns of the chest and head: about 0.2 degrees (the hips and
+# the toes stay at KEY_TOLERANCE: the legs' reach and the toes' contact hang on them).
+LOOK_TOLERANCE = (2e-3, 2e-3)
+INFLUENCE_TOLERANCE = 2e-3  # of a walking clip's strip
+SWING_LOOSENESS = 3.0  # a foot in the air, moving fast, is keyed within 1.5 mm
 _THREADS = ThreadPoolExecutor(max_workers=os.cpu_count() or 1, thread_name_prefix="footfall keys")
 LINEAR, HANDLE_FREE = 1, 0  # KeyframePoint.interpolation and handle type values for foreach_set
 
@@ -275,23 +279,31 @@ def _key_channels(action, frames, channels: Dict[str, Keyed]) -> None:
     in Blender 3.4) pass within its tolerance of every frame's sample and
     through those that stand still."""
     cubic = _free_handles_set_in_bulk()
-    motions = [(bone, path, values, tolerance, [] if keyed.looseness is None else keyed.looseness)
+    # Each component on its own: a hip's height kinked at every step would
+    # otherwise key its smooth glide forward as often.
+    motions = [(bone, path, index, numpy.ascontiguousarray(values[:, index]), tolerance,
+                [] if keyed.looseness is None else keyed.looseness)
                for bone, keyed in channels.items()
                for path, values, tolerance in zip(("location", "rotation_quaternion"),
                                                   (keyed.locations, keyed.quaternions), keyed.tolerance)
-               if values is not None]
+               if values is not None
+               for index in range(values.shape[1])]
     thin = native.load().keys_to_keep
     # The core thins them on every core at once; Blender's data is written from this thread only.
-    thinned = _THREADS.map(lambda m: thin(frames, m[2], [m[3]], cubic=cubic, scale=m[4]), motions)
-    for (bone, path, values, _, _), (kept, slopes) in zip(motions, thinned):
-        at = frames[kept]
-        # Bezier handles a third of the way to the neighbouring keys, along
-        # the slope: each segment is then the cubic keys_to_keep checked.
-        reach = (numpy.diff(at, prepend=at[0] - 1.0) / 3.0, numpy.diff(at, append=at[-1] + 1.0) / 3.0)
-        for index in range(values.shape[1]):
-            curve = action_curves.curve(action, f'pose.bones["{bone}"].{path}', index, bone)
-            _write_keys(curve.keyframe_points, at, values[kept, index], slopes[:, index], reach if cubic else None)
-            curve.update()
+    thinned = _THREADS.map(lambda m: thin(frames, m[3], [m[4]], cubic=cubic, scale=m[5]), motions)
+    for (bone, path, index, values, _, _), (kept, slopes) in zip(motions, thinned):
+        curve = action_curves.curve(action, f'pose.bones["{bone}"].{path}', index, bone)
+        _write_keys(curve.keyframe_points, frames[kept], values[kept], slopes[:, 0], _handle_reach(frames[kept]))
+        curve.update()
+
+
+def _handle_reach(at):
+    """Bezier handles a third of the way to the neighbouring keys (before,
+    after), along the slope: each segment is then the cubic keys_to_keep
+    checked; None where keys are straight (Blender 3.4)."""
+    if not _free_handles_set_in_bulk():
+        return None
+    return numpy.diff(at, prepend=at[0] - 1.0) / 3.0, numpy.diff(at, append=at[-1] + 1.0) / 3.0
 
 
 def _pairs(x, y) -> numpy.ndarray:
@@ -496,13 +508,15 @@ def _upper_body(armature, agent, clips: Dict[str, rig_clips.Clip], fps: float, f
 
 
 def _key_influence(strip, frames, influence) -> None:
-    """Keys the strip's influence at the frames (those it plays)."""
+    """Keys the strip's influence over the frames it plays, within
+    INFLUENCE_TOLERANCE of its value at each."""
     strip.use_animated_influence = True
     curve = strip.fcurves.find("influence")
     curve.keyframe_points.clear()
     inside = (frames >= math.floor(strip.frame_start)) & (frames <= math.ceil(strip.frame_end))
-    curve.keyframe_points.add(int(inside.sum()))
-    curve.keyframe_points.foreach_set("co", numpy.column_stack((frames[inside], influence[inside])).ravel())
+    at, values = frames[inside], influence[inside]
+    kept, slopes = native.load().keys_to_keep(at, values, [INFLUENCE_TOLERANCE], cubic=_free_handles_set_in_bulk())
+    _write_keys(curve.keyframe_points, at[kept], values[kept], slopes[:, 0], _handle_reach(at[kept]))
     curve.update()
 
 
@@ -519,7 +533,7 @@ def _look_ahead(ff, armature, agent_name: str, rest: RigRest, frames, look, twis
         if armature.pose.bones[bone].rotation_mode != "QUATERNION":
             continue
         matrix = armature.data.bones[bone].matrix_local
-        channels[bone] = Keyed(None, _turns(matrix, (0.0, 0.0, 1.0), turns[role]))
+        channels[bone] = Keyed(None, _turns(matrix, (0.0, 0.0, 1.0), turns[role]), tolerance=LOOK_TOLERANCE)
     if not channels:
         bpy.data.actions.remove(action)
         return
