@@ -93,11 +93,8 @@ def _pole_angle(thigh, shin, pole: Vector) -> float:
 
 
 def _forward_yaw(data, bones) -> float:
-    forward = Vector((0.0, 0.0))
-    for side, _suffix in SIDES:
-        foot = data.bones[bones[side]["foot"]]
-        forward += (foot.tail_local - foot.head_local).xy
-    return math.atan2(forward.y, forward.x)
+    forward = rig_clips.feet_forward(data, bones)
+    return math.atan2(forward[1], forward[0])
 
 
 class TransformError(ValueError):

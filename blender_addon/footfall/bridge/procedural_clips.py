@@ -43,11 +43,8 @@ def make(behavior: str, armature, profile) -> bpy.types.Action:
     action[PROCEDURAL_FOR], action[PROCEDURAL_BEHAVIOR] = armature.name, behavior
     cycle = CYCLE_FRAMES[behavior]
     bones = armature.data.bones
-    forward = Vector((0.0, 0.0, 0.0))
-    for side in ("left", "right"):
-        foot = bones[profile.bones[side]["foot"]]
-        forward += foot.tail_local - foot.head_local
-    forward = Vector((forward.x, forward.y, 0.0)).normalized()
+    forward = rig_clips.feet_forward(armature.data, profile.bones)
+    forward = Vector((forward[0], forward[1], 0.0)).normalized()
     right = Vector((forward.y, -forward.x, 0.0))  # turning about it swings a hanging arm forward
     for side, sign in (("left", 1.0), ("right", -1.0)):
         bone = bones[profile.bones[side]["upper_arm"]]

@@ -86,10 +86,7 @@ def measure(rig, profile) -> dict:
     rest = {name: world @ numpy.array(data.bones[name].matrix_local) for name in names}
     ends = {limb: [numpy.linalg.inv(rest[_bone(bones, role)]) @ numpy.append(point, 1.0)
                    for role, point in ((c.bone_a, c.a), (c.bone_b, c.b))] for limb, c in capsules.items()}
-    facing = numpy.zeros(3)
-    for side in ("left", "right"):
-        foot = data.bones[bones[side]["foot"]]
-        facing += world[:3, :3] @ numpy.array(foot.tail_local - foot.head_local)
+    facing = world[:3, :3] @ rig_clips.feet_forward(data, bones)
     motions = {}
     for behavior in PLANNED_BEHAVIORS:
         clip = _clip(rig, profile, behavior)

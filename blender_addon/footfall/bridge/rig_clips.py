@@ -120,6 +120,16 @@ def _chain(data, name: str) -> List[str]:
     return [bone.name] + [b.name for b in bone.parent_recursive]
 
 
+def feet_forward(data, bones: Dict[str, object]) -> numpy.ndarray:
+    """Where the rig faces at rest, in its armature space: the sum of its
+    feet's directions (heel to toe; not of unit length)."""
+    forward = numpy.zeros(3)
+    for side in ("left", "right"):
+        foot = data.bones[bones[side]["foot"]]
+        forward += numpy.array(foot.tail_local - foot.head_local)
+    return forward
+
+
 def find_cycle(rig, action, bones: Dict[str, object]) -> clip_cycle.ClipCycle:
     """The gait cycle of `action` played on `rig`, whose bone map is `bones`."""
     data = rig.data
@@ -131,12 +141,9 @@ def find_cycle(rig, action, bones: Dict[str, object]) -> clip_cycle.ClipCycle:
              for b in data.bones}
     heads = clip_cycle.pose_heads(rests, _bases(rig, _channels(action), needed, frames), list(ends.values()),
                                   SAMPLES)
-    forward = numpy.zeros(3)
-    leg_length = 0.0
-    for side in ("left", "right"):
-        foot, thigh = data.bones[bones[side]["foot"]], data.bones[bones[side]["thigh"]]
-        forward += numpy.array(foot.tail_local - foot.head_local)
-        leg_length += 0.5 * (foot.head_local - thigh.head_local).length
+    leg_length = sum(0.5 * (data.bones[leg["foot"]].head_local - data.bones[leg["thigh"]].head_local).length
+                     for leg in (bones["left"], bones["right"]))
+    forward = feet_forward(data, bones)
     forward[2] = 0.0  # armature space: the rig's own up, as at rest
     forward /= max(numpy.linalg.norm(forward), 1e-12)
     return clip_cycle.find_cycle(forward, leg_length, heads[ends["left", "foot"]], heads[ends["right", "foot"]],
