@@ -147,6 +147,9 @@ void bind_planner(py::module_& m) {
                      "It stands this long [s] at each goal but the last.")
       .def_readwrite("end_facing", &AgentSpec::end_facing,
                      "The facing [rad] it turns to at its last goal, where it has room; None: as it arrives.")
+      .def_readwrite("goal_facings", &AgentSpec::goal_facings,
+                     "Per goal, the facing [rad] it turns to once it stands there, where it has room (None: "
+                     "as it arrives): one per goal, or empty. The last goal's may be end_facing instead.")
       .def_readwrite("scale", &AgentSpec::scale,
                      "Its body's size as a share of the scenario's character, [0.5, 1.6] (set its "
                      "character to scaled() of it).")

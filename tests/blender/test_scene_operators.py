@@ -821,10 +821,40 @@ def test_an_agent_turns_as_its_last_goal_is_turned():
     check(abs(math.remainder(last_phi() - 2.2, math.tau)) > 0.1, "the agent turned without the flag")
 
 
+def test_an_agent_faces_a_goal_it_waits_at_as_that_goal_is_turned():
+    """A scenario's goal_facings load as the goal empties' turns, each goal
+    with footfall_face_goal of its own; Plan turns the agent at the first
+    goal and it waits there facing that way."""
+    from footfall.bridge import plan_store
+
+    fresh_scene()
+    path = write("turns.json", {"format": "footfall-scenario", "version": 1, "agents": [
+        {"name": "ann", "position": [0, 0], "goals": [[3, 0], [3, 3]], "goal_wait": 2.0,
+         "goal_facings": [-1.5, None]}]})
+    check(bpy.ops.footfall.load_scenario(filepath=path) == {"FINISHED"}, "load failed")
+    bpy.context.view_layer.update()
+    first, last = bpy.data.objects["ann goal 1"], bpy.data.objects["ann goal 2"]
+    check(bool(first.get("footfall_face_goal")) and not last.get("footfall_face_goal")
+          and not bpy.data.objects["ann"].get("footfall_face_goal"), "the flags are not the goals' own")
+    facings = extract()["agents"][0].get("goal_facings")
+    check(facings is not None and abs(facings[0] + 1.5) < 1e-6 and facings[1] is None, extract()["agents"][0])
+
+    def waiting_phi():
+        check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+        steps = plan_store.load_plan().agents[0].footsteps
+        return max(steps, key=lambda s: s.end_time - s.start_time).phi  # the wait is its longest step
+
+    check(abs(math.remainder(waiting_phi() + 1.5, math.tau)) < 1e-5, "the agent does not face its goal as it waits")
+    first.rotation_euler.z = 0.5
+    bpy.context.view_layer.update()
+    check(abs(math.remainder(waiting_phi() - 0.5, math.tau)) < 1e-5, "the agent did not follow the turned goal")
+
+
 run([test_load_builds_the_conventions_and_extracts_back, test_obstacles_keep_their_shape_in_3d, test_hand_made_agents_and_obstacles_are_extracted,
      test_plan_is_stored_and_saved_with_the_file, test_the_plan_names_those_that_did_not_arrive,
      test_an_agents_own_speed_and_start, test_randomize_draws_speeds_and_rigs_for_the_selected_agents,
      test_scatter_places_agents_clear_of_obstacles_and_each_other, test_the_plan_is_out_of_date_once_the_scene_changes,
      test_errors_leave_the_scene_as_it_was,
      test_failing_operators_report_and_cancel, test_steersuite_case_loads, test_the_overlay_draws_the_stored_plan,
-     test_the_agent_panel_sets_and_shows_an_agents_properties, test_an_agent_turns_as_its_last_goal_is_turned])
+     test_the_agent_panel_sets_and_shows_an_agents_properties, test_an_agent_turns_as_its_last_goal_is_turned,
+     test_an_agent_faces_a_goal_it_waits_at_as_that_goal_is_turned])

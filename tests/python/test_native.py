@@ -328,3 +328,31 @@ def test_an_agent_turns_to_its_end_facing_at_its_last_goal(ff):
     with pytest.raises(ValueError, match=r"agents\[0\].end_facing: must be a finite number"):
         ff.parse_scenario(scenario_json(agents=[{"position": [0, 0], "goals": [[1, 0]], "end_facing": float("nan")}]),
                           "nan.json")
+
+
+def test_an_agent_turns_to_its_facing_at_each_goal_and_waits_facing_it(ff):
+    def ann(goal_facings=None, **extra):
+        agent = {"name": "ann", "position": [0, 0], "goals": [[3, 0], [3, 3]], "goal_wait": 2.0, **extra}
+        if goal_facings is not None:
+            agent["goal_facings"] = goal_facings
+        return ff.plan_scenario(ff.parse_scenario(scenario_json(agents=[agent]), "turns.json")).agents[0]
+
+    facing = -math.pi / 2  # away from the next goal, as at a shop window behind it
+    turned = ann([facing, None])
+    assert turned.status == ff.AgentStatus.REACHED
+    # It arrives, turns (both feet), then stands facing that way for its whole wait.
+    facing_steps = [s for s in turned.footsteps if abs(math.remainder(s.phi - facing, math.tau)) < 1e-5]
+    assert all(s.kind == ff.StepKind.STOP for s in facing_steps)
+    turned_at = min(s.end_time for s in facing_steps if s.foot != facing_steps[0].foot)
+    for foot in ff.feet_at(turned, turned_at):
+        assert abs(math.remainder(foot.orientation - facing, math.tau)) < 1e-5
+    assert max(s.end_time for s in facing_steps) - turned_at >= 2.0 - 1e-9
+    # And walks on to its last goal, where it stands as it arrives.
+    last_walk = [s for s in turned.footsteps if s.kind == ff.StepKind.WALK][-1]
+    assert turned.footsteps[-1].phi == pytest.approx(last_walk.phi)
+    # The last goal's facing: from either field, not both.
+    assert abs(math.remainder(ann([None, 2.0]).footsteps[-1].phi - 2.0, math.tau)) < 1e-6
+    with pytest.raises(ValueError, match=r"agents\[0\].end_facing: and goal_facings\[1\] both give"):
+        ann([None, 2.0], end_facing=1.0)
+    with pytest.raises(ValueError, match=r"agents\[0\].goal_facings: needs one facing \(or null\) per goal: 2 goals, 1"):
+        ann([1.0])

@@ -179,6 +179,9 @@ def _add_goals(empty, agent: dict, collection) -> None:
     inverse: their locations are in the agent's frame), numbered from 1."""
     x, y = agent["position"]
     cos, sin = math.cos(agent["facing"]), math.sin(agent["facing"])
+    facings = list(agent.get("goal_facings") or [None] * len(agent["goals"]))
+    if agent.get("end_facing") is not None:
+        facings[-1] = agent["end_facing"]
     for number, (gx, gy) in enumerate(agent["goals"], start=1):
         goal = bpy.data.objects.new(f"{agent['name']} goal {number}", None)
         goal.empty_display_type = "SPHERE"
@@ -186,7 +189,10 @@ def _add_goals(empty, agent: dict, collection) -> None:
         goal.parent = empty
         dx, dy = gx - x, gy - y
         goal.location = (cos * dx + sin * dy, -sin * dx + cos * dy, 0.0)
-        if number == len(agent["goals"]) and agent.get("end_facing") is not None:
-            goal.rotation_euler = (0.0, 0.0, agent["end_facing"] - agent["facing"])  # in the agent's frame
+        facing = facings[number - 1]
+        if facing is not None:
+            goal.rotation_euler = (0.0, 0.0, facing - agent["facing"])  # in the agent's frame
+            if number < len(facings) or agent.get("end_facing") is None:
+                goal[FACE_GOAL] = True  # the agent's own flag stands for its last goal's end_facing
         goal[GOAL_INDEX] = number
         collection.objects.link(goal)

@@ -167,9 +167,21 @@ def _agents(objects, depsgraph) -> List[AgentInput]:
             start_delay=_number(agent, START_DELAY, "seconds"),
             goal_wait=_number(agent, GOAL_WAIT, "seconds"),
             scale=_number(agent, AGENT_SCALE, "times the character's size"),
-            end_facing=_facing(goals[-1].evaluated_get(depsgraph).matrix_world) if _flag(agent, FACE_GOAL) else None,
+            **_goal_facings(agent, goals, depsgraph),
         ))
     return agents
+
+
+def _goal_facings(agent, goals, depsgraph) -> dict:
+    """The facings at the agent's goals: a goal empty's turn where the agent
+    (for its last goal) or the goal itself has FACE_GOAL; as end_facing when
+    only the last goal has one."""
+    facings = [_facing(goal.evaluated_get(depsgraph).matrix_world)
+               if _flag(goal, FACE_GOAL) or (goal is goals[-1] and _flag(agent, FACE_GOAL)) else None
+               for goal in goals]
+    if all(f is None for f in facings[:-1]):
+        return {"end_facing": facings[-1]}
+    return {"goal_facings": facings}
 
 
 def agent_empties(scene) -> Dict[str, object]:

@@ -37,6 +37,7 @@ class AgentInput:
     goal_wait: Optional[float] = None
     scale: Optional[float] = None
     end_facing: Optional[float] = None
+    goal_facings: Optional[Sequence[Optional[float]]] = None  # one per goal, None for none
 
 
 @dataclass(frozen=True)
@@ -108,6 +109,8 @@ def scenario_document(scenario: ScenarioInput) -> dict:
             entry["scale"] = float(agent.scale)
         if agent.end_facing is not None:
             entry["end_facing"] = float(agent.end_facing)
+        if agent.goal_facings is not None:
+            entry["goal_facings"] = [None if f is None else float(f) for f in agent.goal_facings]
         agents.append(entry)
     document = {
         "format": "footfall-scenario",
@@ -128,7 +131,8 @@ def document_of(scenario) -> dict:
     return scenario_document(ScenarioInput(
         agents=[AgentInput(a.name, a.position, a.goals, a.facing, a.leave_at_goal, time_limit=a.time_limit or None,
                            start_delay=a.start_delay or None, goal_wait=a.goal_wait or None,
-                           scale=None if a.scale == 1.0 else a.scale, end_facing=a.end_facing)
+                           scale=None if a.scale == 1.0 else a.scale, end_facing=a.end_facing,
+                           goal_facings=list(a.goal_facings) or None)
                 for a in scenario.agents],
         obstacles=[obstacle_input(o) for o in scenario.obstacles]))
 

@@ -152,8 +152,9 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a, Propo
   }
   w.first_way = 0.0;
   w.best_way = std::numeric_limits<double>::infinity();
-  // It stands at the goal for its wait; its patience starts when it walks on.
-  w.start_at = std::max(w.start_at, w.state.time + w.spec->goal_wait);
+  // It stands at the goal for its wait (facing as asked, once it has
+  // turned); its patience starts when it walks on.
+  w.start_at = std::max(w.start_at, (a.turned ? w.rested.time : w.state.time) + w.spec->goal_wait);
   w.improved_at = std::max(w.state.time, w.start_at);
   w.roomy = false;
 }

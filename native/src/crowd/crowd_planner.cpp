@@ -61,8 +61,8 @@ void check_agent(const AgentSpec& agent) {
     throw std::invalid_argument("agent " + agent.name + ": goal_wait must be in [0, 100000] s");
   if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
     throw std::invalid_argument("agent " + agent.name + ": scale " + kScaleRange);
-  if (agent.end_facing && !std::isfinite(*agent.end_facing))
-    throw std::invalid_argument("agent " + agent.name + ": end_facing must be finite");
+  if (const auto problem = facings_problem(agent))
+    throw std::invalid_argument("agent " + agent.name + ": " + problem->first + " " + problem->second);
   if (!in_world(agent.position) || !std::isfinite(agent.facing)) {
     throw std::invalid_argument("agent " + agent.name +
                                 ": position and facing must be finite, within 1e9 m");
@@ -319,14 +319,14 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   if (w.plan.footsteps.empty() && dot(unit(w.state.facing), target.point - w.state.com) < 0.0)
     turn_first(w.state, a);
   if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, others, options, a);
-  if (a.reached && a.rest.complete && w.spec->end_facing && w.goal + 1 == w.spec->goals.size() &&
-      !leaves_now(w, a.reached)) {
-    // At its last goal it turns to face as asked, as far as it has room to.
+  const std::optional<double> facing = goal_facing(*w.spec, w.goal);
+  if (a.reached && a.rest.complete && facing && !leaves_now(w, a.reached)) {
+    // At a goal it turns to face as asked, as far as it has room to.
     const std::optional<WholeBody> following = planner.whole_body(options.sections);
-    Rest turn = planner.validity().turn_to(a.rest.state, *w.spec->end_facing, others,
-                                           following ? &*following : nullptr);
+    Rest turn = planner.validity().turn_to(a.rest.state, *facing, others, following ? &*following : nullptr);
     a.rest.steps.insert(a.rest.steps.end(), turn.steps.begin(), turn.steps.end());
     a.rest.state = turn.state;
+    a.turned = true;
   }
   a.ways.push_back({w.state.com, goal, way});
   if (!a.reached) {
@@ -747,6 +747,27 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     plans.push_back(std::move(w.plan));
   }
   return plans;
+}
+
+std::optional<std::pair<std::string, std::string>> facings_problem(const AgentSpec& agent) {
+  if (agent.end_facing && !std::isfinite(*agent.end_facing)) return std::pair{"end_facing", "must be finite"};
+  const std::vector<std::optional<double>>& facings = agent.goal_facings;
+  if (facings.empty()) return std::nullopt;
+  if (facings.size() != agent.goals.size())
+    return std::pair{"goal_facings", "needs one facing (or null) per goal: " + std::to_string(agent.goals.size()) +
+                                         " goals, " + std::to_string(facings.size()) + " facings"};
+  for (std::size_t k = 0; k < facings.size(); ++k)
+    if (facings[k] && !std::isfinite(*facings[k]))
+      return std::pair{"goal_facings[" + std::to_string(k) + "]", std::string("must be finite")};
+  if (agent.end_facing && facings.back())
+    return std::pair{"end_facing", "and goal_facings[" + std::to_string(facings.size() - 1) +
+                                       "] both give the last goal's facing: give one"};
+  return std::nullopt;
+}
+
+std::optional<double> goal_facing(const AgentSpec& agent, std::size_t goal) {
+  if (goal < agent.goal_facings.size() && agent.goal_facings[goal]) return agent.goal_facings[goal];
+  return goal + 1 == agent.goals.size() ? agent.end_facing : std::nullopt;
 }
 
 double time_limit_of(const AgentSpec& agent, const CharacterParams& character,

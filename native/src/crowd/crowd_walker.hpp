@@ -193,6 +193,7 @@ struct Attempt {
   FootstepState end;
   Rest rest;             ///< After the steps, among the agents the search saw.
   bool reached = false;  ///< The steps reach the current goal itself.
+  bool turned = false;   ///< Its rest ends turning to the goal's facing (goal_facing).
   double way_left = 0.0;
   double way_from = 0.0;  ///< Way left at the start. [m]
   /// The agent's wish (Walker::wish), when it is blocked; empty otherwise.

@@ -104,7 +104,7 @@ void validate(const Scenario& scenario) {
       fail(child(path, "goal_wait"), "must be in [0, 100000] s");
     if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
       fail(child(path, "scale"), kScaleRange);
-    if (agent.end_facing && !std::isfinite(*agent.end_facing)) fail(child(path, "end_facing"), "must be finite");
+    if (const auto problem = facings_problem(agent)) fail(child(path, problem->first), problem->second);
     const FootstepState standing = standing_state(agent.position, agent.facing, character);
     if (planners.planner(agent).validity().collides(standing)) {
       int hit = -1;

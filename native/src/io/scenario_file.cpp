@@ -44,7 +44,7 @@ Scenario read_scenario(const Json& root) {
       const std::string path = item("agents", i);
       expect_object(agents[i], path,
                     {"name", "position", "facing", "goals", "leave_at_goal", "character",
-                     "time_limit", "start_delay", "goal_wait", "scale", "end_facing"});
+                     "time_limit", "start_delay", "goal_wait", "scale", "end_facing", "goal_facings"});
       AgentSpec agent;
       agent.name = agents[i].contains("name") ? string(agents[i]["name"], child(path, "name"))
                                               : "agent" + std::to_string(i);
@@ -72,6 +72,13 @@ Scenario read_scenario(const Json& root) {
         agent.goal_wait = number(agents[i]["goal_wait"], child(path, "goal_wait"));
       if (agents[i].contains("end_facing"))
         agent.end_facing = number(agents[i]["end_facing"], child(path, "end_facing"));
+      if (agents[i].contains("goal_facings")) {
+        const std::string facings_path = child(path, "goal_facings");
+        const Json& facings = array(agents[i]["goal_facings"], facings_path);
+        for (size_t k = 0; k < facings.size(); ++k)
+          agent.goal_facings.push_back(facings[k].is_null() ? std::nullopt
+                                                            : std::optional(number(facings[k], item(facings_path, k))));
+      }
       if (agents[i].contains("scale")) {
         agent.scale = number(agents[i]["scale"], child(path, "scale"));
         if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "footfall/model/footstep.hpp"
@@ -45,11 +46,23 @@ struct AgentSpec {
   /// The facing it turns to on the spot at its last goal, where it has the
   /// room (not for one that leaves there). [rad]
   std::optional<double> end_facing{};
+  /// Per goal, the facing it turns to on the spot once it stands there (then
+  /// it waits goal_wait and walks on), where it has the room: one per goal,
+  /// null for none, or empty. The last goal's may be end_facing instead. [rad]
+  std::vector<std::optional<double>> goal_facings{};
   /// Its body's size, as a share of the character's (`character` is made
   /// from scaled() of the scenario's; its plan keeps it, AgentPlan::scale).
   /// [kLeastScale, kMostScale]
   double scale = 1;
 };
+
+/// What is wrong with an agent's facings at its goals: the field
+/// ("end_facing", "goal_facings" or "goal_facings[k]") and the problem; none.
+std::optional<std::pair<std::string, std::string>> facings_problem(const AgentSpec& agent);
+
+/// The facing `agent` turns to at its goal number `goal`: its goal_facings',
+/// or its end_facing at its last goal; none: it stands as it arrives.
+std::optional<double> goal_facing(const AgentSpec& agent, std::size_t goal);
 
 /// The simulated time an agent may walk: its own time_limit, else the
 /// planner's max_time or four times its route's walking time at the
