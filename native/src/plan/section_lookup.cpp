@@ -1,6 +1,8 @@
 // Footfall — behaviours of places and footsteps from an agent's sections.
 #include "footfall/plan/section_lookup.hpp"
 
+#include <algorithm>
+
 namespace footfall {
 
 SectionLookup::SectionLookup(std::vector<BehaviorSection> sections)
@@ -15,24 +17,40 @@ SectionLookup::SectionLookup(std::vector<BehaviorSection> sections)
   }
 }
 
-Behavior SectionLookup::at(Vec2 point) const {
+SectionLookup::Nearest SectionLookup::nearest(Vec2 point) const {
   bool near = false;
   for (const Box& box : narrower_)
     near = near || (point.x >= box.min.x && point.x <= box.max.x && point.y >= box.min.y &&
                     point.y <= box.max.y);
-  if (!near) return Behavior::kWalk;
+  Nearest found;
+  if (!near) return found;
   double nearest = kSectionReach * kSectionReach;
-  Behavior behavior = Behavior::kWalk;
   for (const BehaviorSection& section : sections_) {
     for (std::size_t k = 1; k < section.points.size(); ++k) {
       const double d = squared_distance_to_segment(point, section.points[k - 1], section.points[k]);
       if (d < nearest) {
         nearest = d;
-        behavior = section.behavior;
+        found = {&section, k};
       }
     }
   }
-  return behavior;
+  return found;
+}
+
+Behavior SectionLookup::at(Vec2 point) const {
+  const Nearest found = nearest(point);
+  return found.section ? found.section->behavior : Behavior::kWalk;
+}
+
+std::optional<WayLine> SectionLookup::side_step_way(Vec2 point) const {
+  const Nearest found = nearest(point);
+  if (!found.section || found.section->behavior != Behavior::kSideStep) return std::nullopt;
+  const Vec2 a = found.section->points[found.segment - 1], b = found.section->points[found.segment];
+  const double length = distance(a, b);
+  if (length < 1e-9) return std::nullopt;
+  const Vec2 direction = (1.0 / length) * (b - a);
+  const double along = std::clamp(dot(point - a, direction), 0.0, length);
+  return WayLine{a + along * direction, direction};
 }
 
 Behavior SectionLookup::along(const Footstep& step) const {

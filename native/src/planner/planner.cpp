@@ -269,6 +269,28 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   add_side_step(across);
   const double skew = std::fabs(wrap_angle(goal_angle - across));
   if (skew > kDuplicateTurn && skew <= kMaxSideStepSkew) add_side_step(goal_angle);
+  // Beside a side-step section's way, squared up to it: a passage barely
+  // wider than the side-on body takes the body turned square across it and
+  // on its way to within millimetres, which the tabled pivots and the steps
+  // toward the goal reach only by chance.
+  const std::optional<WayLine> way =
+      search.whole && search.whole->sections ? search.whole->sections->side_step_way(state.com) : std::nullopt;
+  if (!way) return;
+  const double left = wrap_angle(angle_of(way->direction) + 0.5 * kPi - state.facing);
+  const double turn = std::fabs(left) <= 0.5 * kPi ? left : wrap_angle(left - kPi);  // the nearer of the two
+  const double square = wrap_angle(state.facing + turn);
+  if (std::fabs(turn) > kDuplicateTurn)
+    add(create_footstep(state, {StepKind::kStop, stop_foot, square, 0.0, params.stop_duration}, character), 0.0,
+        square);
+  // The side step that lands on the way, one side step along it (as near as
+  // the skew allows).
+  const double travel = 0.5 * kSideStepSpeed * params.stop_duration;
+  const double aside = cross(way->direction, state.com - way->nearest);
+  const double onto = std::sqrt(std::max(0.0, travel * travel - aside * aside));
+  const double toward = angle_of(way->nearest + onto * way->direction - state.com);
+  if (std::fabs(wrap_angle(toward - across)) > kDuplicateTurn &&
+      std::fabs(wrap_angle(toward - goal_angle)) > kDuplicateTurn)
+    add_side_step(toward);
 }
 
 std::optional<WholeBody> FootstepPlanner::whole_body(const SectionLookup* sections) const {

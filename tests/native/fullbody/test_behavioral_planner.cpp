@@ -2,11 +2,13 @@
 // behaviours, zero contacts along them, the mesh as it was, determinism.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "footfall/fullbody/behavioral_planner.hpp"
 #include "footfall/fullbody/body_check.hpp"
+#include "footfall/fullbody/body_model.hpp"
 #include "footfall/fullbody/body_sweep.hpp"
 #include "footfall/plan/section_lookup.hpp"
 #include "footfall/planner/planner.hpp"
@@ -257,6 +259,37 @@ TEST(BehavioralFootsteps, TheCorridorIsWalkedArmsInThenWalkingThenSideStepping) 
   for (const Footstep& step : agent.footsteps) lateral += step.kind == StepKind::kSideStep ? 1 : 0;
   EXPECT_GE(lateral, 6);  // 1.4 m in steps of 0.25 m at most
   EXPECT_EQ(check_body(plan).penetrations, 0);
+}
+
+// A passage a few millimetres wider than the side-on body and metres deep,
+// at any heading: the character squares up to its way and side-steps
+// through on it (it stalled at the mouth of one 2.1 m deep before), and no
+// limb enters an obstacle.
+TEST(BehavioralFootsteps, ADeepPassageBarelyWideEnoughIsSideSteppedThrough) {
+  for (const double depth : {2.1, 6.0}) {
+    for (const double heading : {0.0, 0.5}) {
+      SCOPED_TRACE(std::to_string(depth) + " m deep, heading " + std::to_string(heading));
+      Scenario s;
+      const double gap = 2.0 * BodyModel(s.character).clearance(Behavior::kSideStep) + 0.004;
+      const auto turned = [&](Vec2 p) {
+        return Vec2{std::cos(heading) * p.x - std::sin(heading) * p.y, std::sin(heading) * p.x + std::cos(heading) * p.y};
+      };
+      for (const double side : {1.0, -1.0}) {
+        const double near = side * 0.5 * gap, far = side * 20.0;
+        s.obstacles.push_back(prism({turned({5.0 - depth / 2, near}), turned({5.0 + depth / 2, near}),
+                                     turned({5.0 + depth / 2, far}), turned({5.0 - depth / 2, far})}));
+      }
+      const Vec2 start = turned({1.0, 0.0}), goal = turned({5.0 + depth / 2 + 3.0, 0.0});
+      s.agents.push_back({"walker", start, heading, {goal}});
+      const Plan plan = plan_scenario(s);
+      const AgentPlan& agent = plan.agents.front();
+      EXPECT_EQ(agent.status, AgentStatus::kReached);
+      int lateral = 0;
+      for (const Footstep& step : agent.footsteps) lateral += step.kind == StepKind::kSideStep ? 1 : 0;
+      EXPECT_GE(lateral, static_cast<int>(depth / 0.25));
+      EXPECT_EQ(check_body(plan).penetrations, 0);
+    }
+  }
 }
 
 // A walking step that passes a waist-high box closely holds the arms in when

@@ -2,6 +2,7 @@
 // place and a footstep.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "footfall/plan/plan.hpp"
@@ -11,6 +12,12 @@ namespace footfall {
 /// A place farther than this from every section (where the crowd pushed the
 /// agent aside) has no section: it walks. [m]
 constexpr double kSectionReach = 0.75;
+
+/// A side-step section's way near a place: the line of its nearest segment.
+struct WayLine {
+  Vec2 nearest;    ///< The point of the segment nearest the place. [m]
+  Vec2 direction;  ///< Unit, from the section's start toward its end.
+};
 
 /// An agent's sections, ready to be asked. Cheap where no section other than
 /// walk is near: most places of most ways.
@@ -32,9 +39,18 @@ class SectionLookup {
   /// arms_in for a walking step reaching a side_step section (the narrowest
   /// frontal behaviour).
   Behavior of(const Footstep& step) const;
+  /// The way of the side-step section nearest `point` within kSectionReach,
+  /// if that is the nearest section there.
+  std::optional<WayLine> side_step_way(Vec2 point) const;
   const std::vector<BehaviorSection>& sections() const { return sections_; }
 
  private:
+  struct Nearest {
+    const BehaviorSection* section = nullptr;  ///< None within kSectionReach.
+    std::size_t segment = 0;                   ///< From points[segment - 1] to points[segment].
+  };
+  Nearest nearest(Vec2 point) const;
+
   std::vector<BehaviorSection> sections_;
   std::vector<Box> narrower_;  // boxes of the sections other than walk, grown by the reach
 };
