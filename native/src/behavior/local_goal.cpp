@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace footfall {
 namespace {
@@ -43,6 +44,32 @@ bool in_sight(const NavMesh* mesh, const CharacterParams& character, Vec2 from, 
   return mesh->clearance_between(from, to, character.torso_radius) >= character.torso_radius;
 }
 
+/// Where a way out of a tight place may end: this far from it, nearest first
+/// ([m]), in kWayOutDirections directions.
+constexpr double kWayOutReach[] = {0.5, 1.0, 1.5, 2.0, 3.0};
+constexpr int kWayOutDirections = 16;
+
+/// The way of `radius` for one standing where such a way cannot start (in a
+/// gap between boxes, stuck there): straight out to the nearest place with
+/// that room, in sight for the torso, then on from there; the shortest such
+/// of the nearest places that have one. None within kWayOutReach.
+std::optional<Way> way_out(const NavMesh& mesh, const CharacterParams& character, Vec2 from, Vec2 goal,
+                           double radius) {
+  for (const double reach : kWayOutReach) {
+    std::optional<Way> best;
+    for (int k = 0; k < kWayOutDirections; ++k) {
+      const Vec2 exit = from + reach * unit(2.0 * kPi * k / kWayOutDirections);
+      if (mesh.clearance(exit) < radius || !in_sight(&mesh, character, from, exit)) continue;
+      PathResult path = mesh.find_path({exit, goal, radius, kRouteArcTolerance});
+      if (path.status != PathStatus::kFound || (best && reach + path.length >= best->length)) continue;
+      path.points.insert(path.points.begin(), from);
+      best = Way{std::move(path.points), reach + path.length};
+    }
+    if (best) return best;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 /// The way on the navigation mesh: the roomiest of three that is not much
@@ -52,7 +79,8 @@ bool in_sight(const NavMesh* mesh, const CharacterParams& character, Vec2 from, 
 /// narrower than the shoulders. With no way at all, the straight line, along
 /// which the local search finds what it can. A `roomy` way (for an agent
 /// stuck once) is the first of the two with room to walk upright that there
-/// is, however long.
+/// is, however long; from a place too tight to walk upright in, it leads
+/// out of it first (way_out).
 Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal,
                bool roomy) {
   Way way{{from, goal}, distance(from, goal)};
@@ -67,6 +95,10 @@ Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from,
   // (most ways, in the open), so most ways take one query, not two.
   PathResult roomiest = mesh->find_path({from, goal, upright + kSwayMargin, kRouteArcTolerance});
   if (roomy_enough(roomiest, way.length)) return {std::move(roomiest.points), roomiest.length};
+  if (roomy && roomiest.status == PathStatus::kStartBlocked &&
+      mesh->find_path({from, goal, upright, kRouteArcTolerance}).status == PathStatus::kStartBlocked) {
+    if (std::optional<Way> out = way_out(*mesh, character, from, goal, upright)) return std::move(*out);
+  }
   PathResult tight = mesh->find_path({from, goal, character.torso_radius, kRouteArcTolerance});
   if (tight.status != PathStatus::kFound) return way;
   if (roomy_enough(roomiest, tight.length)) return {std::move(roomiest.points), roomiest.length};

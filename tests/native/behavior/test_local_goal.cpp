@@ -18,18 +18,18 @@ namespace {
 
 const CharacterParams kCharacter{};
 
-/// A wall along x = `x` from y = -`half_length` to +`half_length`, 0.2 m thick,
-/// open in each gap {centre y, width}, given from low y to high.
+/// A wall along x = `x` from y = -`half_length` to +`half_length`,
+/// `thickness` thick, open in each gap {centre y, width}, given from low y to high.
 std::vector<Obstacle> wall_with_gaps(double x, double half_length,
-                                     const std::vector<std::pair<double, double>>& gaps) {
+                                     const std::vector<std::pair<double, double>>& gaps, double thickness = 0.2) {
   std::vector<Obstacle> wall;
   double from = -half_length;
   for (const auto& [centre, width] : gaps) {
     const double to = centre - 0.5 * width;
-    wall.push_back(box_obstacle({x, 0.5 * (from + to)}, {0.2, to - from}));
+    wall.push_back(box_obstacle({x, 0.5 * (from + to)}, {thickness, to - from}));
     from = centre + 0.5 * width;
   }
-  wall.push_back(box_obstacle({x, 0.5 * (from + half_length)}, {0.2, half_length - from}));
+  wall.push_back(box_obstacle({x, 0.5 * (from + half_length)}, {thickness, half_length - from}));
   return wall;
 }
 
@@ -124,6 +124,25 @@ TEST(LocalGoal, TightWayWhenTheRoomyOneIsFarLongerUnlessRoomy) {
   const Way roomy = way_toward(&mesh, kCharacter, {0, 0}, {10, 0}, true);
   EXPECT_GT(crossing(roomy, 5.0), 15.0);
   EXPECT_GT(roomy.length, 2.0 * 10.0 + 6.0);
+}
+
+// way_toward: one stuck standing in a slot 2 m deep (too tight to walk
+// upright in), half a metre in, takes the roomy way out of it the way it
+// came, to the open side and round through the far door, not on through the
+// slot; the nearest roomy place wins.
+TEST(LocalGoal, ARoomyWayFromInsideATightSlotLeadsOutOfItFirst) {
+  const NavMesh mesh =
+      mesh_of(wall_with_gaps(5.0, 20.0, {{0.0, 0.45}, {16.0, 2.0}}, 2.0), {-2, -20}, {12, 20});
+  const Vec2 in_slot{4.5, 0.0};
+  ASSERT_LT(mesh.clearance(in_slot), 0.5 * kCharacter.torso_width);
+  const Way roomy = way_toward(&mesh, kCharacter, in_slot, {10, 0}, true);
+  ASSERT_GE(roomy.points.size(), 3u);
+  EXPECT_EQ(roomy.points.front(), in_slot);
+  EXPECT_LT(roomy.points[1].x, 4.0);  // out of the slot on the side it came from
+  EXPECT_GE(mesh.clearance(roomy.points[1]), 0.5 * kCharacter.torso_width);
+  EXPECT_GT(crossing(Way{{roomy.points.begin() + 1, roomy.points.end()}, 0.0}, 5.0), 15.0);
+  // Not stuck, the tight way goes on through the slot.
+  EXPECT_NEAR(way_toward(&mesh, kCharacter, in_slot, {10, 0}).length, 5.5, 0.01);
 }
 
 // local_goal: the goal itself when the way to it is within local_goal_distance and in sight.
