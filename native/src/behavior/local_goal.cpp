@@ -51,15 +51,22 @@ constexpr int kWayOutDirections = 16;
 
 /// The way of `radius` for one standing where such a way cannot start (in a
 /// gap between boxes, stuck there): straight out to the nearest place with
-/// that room, in sight for the torso, then on from there; the shortest such
-/// of the nearest places that have one. None within kWayOutReach.
+/// that room, in sight for the torso and passing none of `others` (two
+/// stuck face to face in a gap each back out), then on from there; the
+/// shortest such of the nearest places that have one. None within kWayOutReach.
 std::optional<Way> way_out(const NavMesh& mesh, const CharacterParams& character, Vec2 from, Vec2 goal,
-                           double radius) {
+                           double radius, const std::vector<Vec2>& others) {
+  const auto passes_someone = [&](Vec2 exit) {
+    return std::any_of(others.begin(), others.end(), [&](Vec2 other) {
+      return distance_to_segment(other, from, exit) < 2.0 * character.torso_radius;
+    });
+  };
   for (const double reach : kWayOutReach) {
     std::optional<Way> best;
     for (int k = 0; k < kWayOutDirections; ++k) {
       const Vec2 exit = from + reach * unit(2.0 * kPi * k / kWayOutDirections);
-      if (mesh.clearance(exit) < radius || !in_sight(&mesh, character, from, exit)) continue;
+      if (mesh.clearance(exit) < radius || !in_sight(&mesh, character, from, exit) || passes_someone(exit))
+        continue;
       PathResult path = mesh.find_path({exit, goal, radius, kRouteArcTolerance});
       if (path.status != PathStatus::kFound || (best && reach + path.length >= best->length)) continue;
       path.points.insert(path.points.begin(), from);
@@ -82,7 +89,7 @@ std::optional<Way> way_out(const NavMesh& mesh, const CharacterParams& character
 /// is, however long; from a place too tight to walk upright in, it leads
 /// out of it first (way_out).
 Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal,
-               bool roomy) {
+               bool roomy, const std::vector<Vec2>& others) {
   Way way{{from, goal}, distance(from, goal)};
   if (mesh == nullptr) return way;
   const double upright = 0.5 * character.torso_width;
@@ -97,7 +104,7 @@ Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from,
   if (roomy_enough(roomiest, way.length)) return {std::move(roomiest.points), roomiest.length};
   if (roomy && roomiest.status == PathStatus::kStartBlocked &&
       mesh->find_path({from, goal, upright, kRouteArcTolerance}).status == PathStatus::kStartBlocked) {
-    if (std::optional<Way> out = way_out(*mesh, character, from, goal, upright)) return std::move(*out);
+    if (std::optional<Way> out = way_out(*mesh, character, from, goal, upright, others)) return std::move(*out);
   }
   PathResult tight = mesh->find_path({from, goal, character.torso_radius, kRouteArcTolerance});
   if (tight.status != PathStatus::kFound) return way;

@@ -19,9 +19,10 @@ struct Way {
 /// with a margin for the sway, just upright, or only to side-step) that is not
 /// much longer than the tightest; with no mesh or no path, the straight line.
 /// `roomy`: the roomier of the first two that has a way, however long (else
-/// as above).
+/// as above), from a place too tight for either out of it first, not
+/// through any of `others` (where other agents stand).
 Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal,
-               bool roomy = false);
+               bool roomy = false, const std::vector<Vec2>& others = {});
 
 /// The first `length` metres of `way` (all of it if shorter). [m]
 Way way_start(const Way& way, double length);

@@ -124,15 +124,18 @@ bool guided_way(const std::vector<Vec2>& guide, const NavMesh* mesh,
 /// The way from `from` to walker w's current goal: one of its known ways if
 /// one starts and ends there (the mesh does not change while the agents plan,
 /// so it would come out the same); else its annotated way where it has one
-/// (unless it takes the roomiest ways, stuck once); else measured anew.
-Way way_toward(const Walker& w, const NavMesh* mesh, const CharacterParams& character, Vec2 from) {
+/// (unless it takes the roomiest ways, stuck once); else measured anew, a
+/// roomy way out of a tight place passing none of `others` (where the agents
+/// it sees stand).
+Way way_toward(const Walker& w, const NavMesh* mesh, const CharacterParams& character, Vec2 from,
+               const std::vector<Vec2>& others) {
   const Vec2 goal = w.spec->goals[w.goal];
   for (const KnownWay& k : w.ways)
     if (k.from == from && k.goal == goal) return k.way;
   Way way;
   if (!w.roomy && w.goal < w.guides.size() && guided_way(w.guides[w.goal], mesh, character, from, way))
     return way;
-  return footfall::way_toward(mesh, character, from, goal, w.roomy);
+  return footfall::way_toward(mesh, character, from, goal, w.roomy, others);
 }
 
 /// Near a narrower section (walking with the arms in, side-stepping) a search
@@ -271,7 +274,10 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
                const NavMesh* mesh, const std::vector<std::size_t>& seen, const Snapshot& now) {
   const Walker& w = walkers[i];
   const Vec2 goal = w.spec->goals[w.goal];
-  const Way way = way_toward(w, mesh, planner.character(), w.state.com);
+  std::vector<Vec2> seen_at;
+  for (const std::size_t j : seen)
+    if (now.present[j]) seen_at.push_back(now.com[j]);
+  const Way way = way_toward(w, mesh, planner.character(), w.state.com, seen_at);
   const LocalGoal target =
       keep_right(walkers, i, aim_of(w, planner, mesh, way), seen, now, planner, mesh);
   // One that leaves at this goal needs no room to rest there.
@@ -330,7 +336,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   }
   a.ways.push_back({w.state.com, goal, way});
   if (!a.reached) {
-    Way left = way_toward(w, mesh, planner.character(), a.end.com);
+    Way left = way_toward(w, mesh, planner.character(), a.end.com, seen_at);
     a.way_left = left.length;
     a.ways.push_back({a.end.com, goal, std::move(left)});
   }

@@ -143,6 +143,10 @@ TEST(LocalGoal, ARoomyWayFromInsideATightSlotLeadsOutOfItFirst) {
   EXPECT_GT(crossing(Way{{roomy.points.begin() + 1, roomy.points.end()}, 0.0}, 5.0), 15.0);
   // Not stuck, the tight way goes on through the slot.
   EXPECT_NEAR(way_toward(&mesh, kCharacter, in_slot, {10, 0}).length, 5.5, 0.01);
+  // With another agent standing behind it in the slot, it leads out ahead.
+  const Way ahead = way_toward(&mesh, kCharacter, in_slot, {10, 0}, true, {{4.0, 0.0}});
+  ASSERT_GE(ahead.points.size(), 2u);
+  EXPECT_GT(ahead.points[1].x, 6.0);
 }
 
 // local_goal: the goal itself when the way to it is within local_goal_distance and in sight.
