@@ -102,8 +102,7 @@ Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from,
   // (most ways, in the open), so most ways take one query, not two.
   PathResult roomiest = mesh->find_path({from, goal, upright + kSwayMargin, kRouteArcTolerance});
   if (roomy_enough(roomiest, way.length)) return {std::move(roomiest.points), roomiest.length};
-  if (roomy && roomiest.status == PathStatus::kStartBlocked &&
-      mesh->find_path({from, goal, upright, kRouteArcTolerance}).status == PathStatus::kStartBlocked) {
+  if (roomy && roomiest.status == PathStatus::kStartBlocked && mesh->clearance(from) < upright) {
     if (std::optional<Way> out = way_out(*mesh, character, from, goal, upright, others)) return std::move(*out);
   }
   PathResult tight = mesh->find_path({from, goal, character.torso_radius, kRouteArcTolerance});

@@ -59,7 +59,7 @@ void check_agent(const AgentSpec& agent) {
     throw std::invalid_argument("agent " + agent.name + ": start_delay must be in [0, 100000] s");
   if (!(agent.goal_wait >= 0.0 && agent.goal_wait <= kMaxTimeLimit))
     throw std::invalid_argument("agent " + agent.name + ": goal_wait must be in [0, 100000] s");
-  if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
+  if (!in_scale_range(agent.scale))
     throw std::invalid_argument("agent " + agent.name + ": scale " + kScaleRange);
   if (const auto problem = facings_problem(agent))
     throw std::invalid_argument("agent " + agent.name + ": " + problem->first + " " + problem->second);
@@ -125,16 +125,20 @@ bool guided_way(const std::vector<Vec2>& guide, const NavMesh* mesh,
 /// one starts and ends there (the mesh does not change while the agents plan,
 /// so it would come out the same); else its annotated way where it has one
 /// (unless it takes the roomiest ways, stuck once); else measured anew, a
-/// roomy way out of a tight place passing none of `others` (where the agents
-/// it sees stand).
+/// roomy way out of a tight place passing none of the agents it sees
+/// (`seen`, where they stand `now`).
 Way way_toward(const Walker& w, const NavMesh* mesh, const CharacterParams& character, Vec2 from,
-               const std::vector<Vec2>& others) {
+               const std::vector<std::size_t>& seen, const Snapshot& now) {
   const Vec2 goal = w.spec->goals[w.goal];
   for (const KnownWay& k : w.ways)
     if (k.from == from && k.goal == goal) return k.way;
   Way way;
   if (!w.roomy && w.goal < w.guides.size() && guided_way(w.guides[w.goal], mesh, character, from, way))
     return way;
+  std::vector<Vec2> others;
+  if (w.roomy)
+    for (const std::size_t j : seen)
+      if (now.present[j]) others.push_back(now.com[j]);
   return footfall::way_toward(mesh, character, from, goal, w.roomy, others);
 }
 
@@ -274,10 +278,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
                const NavMesh* mesh, const std::vector<std::size_t>& seen, const Snapshot& now) {
   const Walker& w = walkers[i];
   const Vec2 goal = w.spec->goals[w.goal];
-  std::vector<Vec2> seen_at;
-  for (const std::size_t j : seen)
-    if (now.present[j]) seen_at.push_back(now.com[j]);
-  const Way way = way_toward(w, mesh, planner.character(), w.state.com, seen_at);
+  const Way way = way_toward(w, mesh, planner.character(), w.state.com, seen, now);
   const LocalGoal target =
       keep_right(walkers, i, aim_of(w, planner, mesh, way), seen, now, planner, mesh);
   // One that leaves at this goal needs no room to rest there.
@@ -336,7 +337,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   }
   a.ways.push_back({w.state.com, goal, way});
   if (!a.reached) {
-    Way left = way_toward(w, mesh, planner.character(), a.end.com, seen_at);
+    Way left = way_toward(w, mesh, planner.character(), a.end.com, seen, now);
     a.way_left = left.length;
     a.ways.push_back({a.end.com, goal, std::move(left)});
   }

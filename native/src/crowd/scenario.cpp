@@ -102,7 +102,7 @@ void validate(const Scenario& scenario) {
       fail(child(path, "start_delay"), "must be in [0, 100000] s");
     if (!(agent.goal_wait >= 0.0 && agent.goal_wait <= kMaxTimeLimit))
       fail(child(path, "goal_wait"), "must be in [0, 100000] s");
-    if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
+    if (!in_scale_range(agent.scale))
       fail(child(path, "scale"), kScaleRange);
     if (const auto problem = facings_problem(agent)) fail(child(path, problem->first), problem->second);
     const FootstepState standing = standing_state(agent.position, agent.facing, character);

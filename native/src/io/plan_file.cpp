@@ -174,7 +174,7 @@ AgentPlan read_agent(const Json& json, const std::string& path, const CharacterP
   if (json.contains("leaves")) agent.leaves = boolean(json["leaves"], child(path, "leaves"));
   if (json.contains("scale")) {
     agent.scale = number(json["scale"], child(path, "scale"));
-    if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
+    if (!in_scale_range(agent.scale))
       fail(child(path, "scale"), kScaleRange);
   }
   if (json.contains("reason")) agent.reason = string(json["reason"], child(path, "reason"));

@@ -81,7 +81,7 @@ Scenario read_scenario(const Json& root) {
       }
       if (agents[i].contains("scale")) {
         agent.scale = number(agents[i]["scale"], child(path, "scale"));
-        if (!(agent.scale >= kLeastScale && agent.scale <= kMostScale))
+        if (!in_scale_range(agent.scale))
           fail(child(path, "scale"), kScaleRange);
       }
       scenario.agents.push_back(std::move(agent));

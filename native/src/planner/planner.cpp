@@ -250,12 +250,13 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   }
   // The stop (a wait when standing), and from standing the pivots.
   const Foot stop_foot = other(state.last_foot);
+  const auto add_stop = [&](double phi) {
+    add(create_footstep(state, {StepKind::kStop, stop_foot, phi, 0.0, params.stop_duration}, character), 0.0,
+        phi);
+  };
   for (const double turn : {0.0, kPivotTurn, -kPivotTurn, kMaxPivot, -kMaxPivot}) {
     if (turn != 0.0 && !state.standing()) break;
-    const double phi = wrap_angle(state.facing + turn);
-    add(create_footstep(state, {StepKind::kStop, stop_foot, phi, 0.0, params.stop_duration},
-                        character),
-        0.0, phi);
+    add_stop(wrap_angle(state.facing + turn));
   }
   // And the side steps (the foot that stepped last trails): straight across,
   // and toward the goal if it lies within the skew a side step allows (as the
@@ -279,9 +280,7 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   const double left = wrap_angle(angle_of(way->direction) + 0.5 * kPi - state.facing);
   const double turn = std::fabs(left) <= 0.5 * kPi ? left : wrap_angle(left - kPi);  // the nearer of the two
   const double square = wrap_angle(state.facing + turn);
-  if (std::fabs(turn) > kDuplicateTurn)
-    add(create_footstep(state, {StepKind::kStop, stop_foot, square, 0.0, params.stop_duration}, character), 0.0,
-        square);
+  if (std::fabs(turn) > kDuplicateTurn) add_stop(square);
   // The side step that lands on the way, one side step along it (as near as
   // the skew allows).
   const double travel = 0.5 * kSideStepSpeed * params.stop_duration;

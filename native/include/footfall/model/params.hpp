@@ -241,6 +241,8 @@ struct ParamTable<PlannerParams> {
 /// 0.9 m to a giant of 2.8 m).
 constexpr double kLeastScale = 0.5, kMostScale = 1.6;
 constexpr const char* kScaleRange = "must be in [0.5, 1.6]";
+/// True if `scale` is in [kLeastScale, kMostScale] (NaN is not).
+constexpr bool in_scale_range(double scale) { return scale >= kLeastScale && scale <= kMostScale; }
 
 /// The character `scale` times as large: every length (the body, its
 /// motions' capsules, the step lengths, the clearances) times `scale`;
