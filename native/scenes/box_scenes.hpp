@@ -12,13 +12,16 @@
 
 namespace footfall::bench {
 
-
 /// A box scene: the domain and its boxes, each a turned rectangle.
 struct BoxScene {
   Vec2 min_corner, max_corner;
   std::vector<std::vector<Vec2>> boxes;
 };
 
+/// The upright rectangle with corners `lo` and `hi`, counter-clockwise.
+inline std::vector<Vec2> box_between(Vec2 lo, Vec2 hi) { return {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}; }
+
+/// The rectangle of half sides `half` about `centre`, turned by `angle`. [rad]
 inline std::vector<Vec2> box_at(Vec2 centre, Vec2 half, double angle) {
   std::vector<Vec2> out;
   for (Vec2 corner : {Vec2{-half.x, -half.y}, Vec2{half.x, -half.y}, half, Vec2{-half.x, half.y}})

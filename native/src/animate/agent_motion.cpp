@@ -6,13 +6,13 @@
 #include "animate/clips.hpp"
 #include "animate/section_timing.hpp"
 #include "footfall/animate/upper_body.hpp"
+#include "footfall/model/geometry.hpp"
 
 namespace footfall::animate {
 
 namespace {
 
 constexpr double kReach = 0.995;  // share of the leg's length the hips may stretch it to (a locked knee snaps)
-constexpr double kPi = 3.14159265358979323846;
 
 // glTF's frame (Y up) as seen from the plan's (Z up), and back.
 Mat4 y_up_to_z_up() {

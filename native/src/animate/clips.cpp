@@ -6,6 +6,7 @@
 
 #include "animate/accessor_data.hpp"
 #include "footfall/animate/gait_cycle.hpp"
+#include "footfall/model/geometry.hpp"
 
 namespace footfall::animate {
 
@@ -15,7 +16,6 @@ const double kConvention = GaitCycle{}.strike;  // the right heel strike of a pr
 constexpr int kCycleSamples = 64;     // poses sampled over a clip to find its cycle
 constexpr double kSwing = 0.3490658503988659;  // 20 deg: the procedural arm swing each way
 constexpr int kProceduralKeys = 8;    // keys per procedural cycle
-constexpr double kPi = 3.14159265358979323846;
 
 Track::Interpolation interpolation_of(const std::string& name) {
   if (name == "STEP") return Track::kStep;

@@ -3,13 +3,14 @@
 #include <cmath>
 #include <complex>
 
+#include "footfall/model/geometry.hpp"
+
 namespace footfall::animate {
 
 namespace {
 
 constexpr int kMaxCycles = 4;       // a clip holds at most this many gait cycles
 constexpr double kMinSwing = 0.05;  // of the leg's length: feet (or hands) parting by less show no cycle
-constexpr double kPi = 3.14159265358979323846;
 
 // The strongest of the first kMaxCycles harmonics of a signal sampled evenly
 // over one period: its number, amplitude, and the fraction of a cycle at

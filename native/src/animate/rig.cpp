@@ -29,7 +29,6 @@ using detail::user_text;
 
 constexpr double kStandingDrop = 0.5;  // of the leg's length at least, from the hip joints down to the ankles
 constexpr double kPoleAhead = 0.5;  // [m] knee poles in front of the knees, as the add-on's
-constexpr const char* kBehaviors[] = {"walk", "arms_in", "side_step", "idle"};
 
 // Images are carried over as they are, never decoded.
 bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
@@ -313,7 +312,7 @@ void read_clips(RigData& rig, const RigProfile& profile) {
     }
     return -1;
   };
-  for (const char* behavior : kBehaviors) {
+  for (const char* behavior : kClipBehaviors) {
     const auto named = profile.clips.find(behavior);
     int index = -1;
     if (named != profile.clips.end()) {

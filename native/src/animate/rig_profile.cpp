@@ -14,7 +14,6 @@ using detail::child;
 using detail::fail;
 using detail::Json;
 
-constexpr const char* kBehaviors[] = {"walk", "arms_in", "side_step", "idle"};
 constexpr const char* kDimensions[] = {"hip_height", "leg_length", "shoulder_width", "foot_length"};
 
 void read_bone(const Json& parent, const std::string& path, const std::string& role, const std::string& key,
@@ -46,7 +45,7 @@ RigProfile read_profile(const Json& root) {
     if (!clips->is_object()) fail("clips", "expected an object, got " + detail::type_name(*clips));
     for (auto it = clips->begin(); it != clips->end(); ++it) {
       bool known = false;
-      for (const char* behavior : kBehaviors) known = known || it.key() == behavior;
+      for (const char* behavior : kClipBehaviors) known = known || it.key() == behavior;
       if (!known)
         fail(child("clips", it.key()), "unknown behaviour (one of walk, arms_in, side_step, idle)");
       if (it->is_null()) continue;

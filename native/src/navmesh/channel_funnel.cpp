@@ -116,14 +116,6 @@ std::vector<Vec2> trace(const std::vector<Corner>& corners, const std::vector<To
   return points;
 }
 
-/// True if the segments [a, b] and [c, d] cross at a point inside both.
-bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const double c_side = cross(b - a, c - a), d_side = cross(b - a, d - a);
-  const double a_side = cross(d - c, a - c), b_side = cross(d - c, b - c);
-  return ((c_side > 0 && d_side < 0) || (c_side < 0 && d_side > 0)) &&
-         ((a_side > 0 && b_side < 0) || (a_side < 0 && b_side > 0));
-}
-
 /// The tangent (from corner j to corner j + 1) on which the path crosses
 /// `portal`, which lies between corners k and k + 1; none if it crosses on
 /// an arc. Where neither corner ends the portal, that is tangent k. A corner
@@ -317,10 +309,10 @@ std::vector<Corner> shortest_corners(Vec2 start, Vec2 goal, const std::vector<Po
   }
   nodes.push_back({goal, 0.0, 0, n});
   const int count = static_cast<int>(nodes.size());
-  constexpr double kInf = std::numeric_limits<double>::infinity();
+  constexpr double kUnreached = std::numeric_limits<double>::infinity();
   // reach[b][a]: shortest way from the start to where the tangent from a
   // touches b; a later corner of the same circle is the same corner.
-  std::vector<std::vector<double>> reach(count, std::vector<double>(count, kInf));
+  std::vector<std::vector<double>> reach(count, std::vector<double>(count, kUnreached));
   std::vector<std::vector<int>> before(count, std::vector<int>(count, -1));
   auto link = [&](int a, int b) {
     return !nodes[a].same(nodes[b]) && crosses_cleanly(nodes[a], nodes[b], portals, nodes[a].portal,
@@ -335,11 +327,11 @@ std::vector<Corner> shortest_corners(Vec2 start, Vec2 goal, const std::vector<Po
     if (link(0, b)) reach[b][0] = span(0, b);
   std::vector<char> links(count);
   for (int b = 1; b + 1 < count; ++b) {
-    if (std::all_of(reach[b].begin(), reach[b].end(), [&](double r) { return r == kInf; }))
+    if (std::all_of(reach[b].begin(), reach[b].end(), [&](double r) { return r == kUnreached; }))
       continue;
     for (int c = b + 1; c < count; ++c) links[c] = nodes[c].portal != nodes[b].portal && link(b, c);
     for (int a = 0; a < b; ++a) {
-      if (reach[b][a] == kInf) continue;
+      if (reach[b][a] == kUnreached) continue;
       for (int c = b + 1; c < count; ++c) {
         if (!links[c]) continue;
         if (nodes[b].radius > 0 &&
@@ -356,7 +348,7 @@ std::vector<Corner> shortest_corners(Vec2 start, Vec2 goal, const std::vector<Po
   const int last = count - 1;
   int b = static_cast<int>(std::min_element(reach[last].begin(), reach[last].end()) -
                            reach[last].begin());
-  if (reach[last][b] == kInf) return {};
+  if (reach[last][b] == kUnreached) return {};
   std::vector<Corner> out{nodes[last]};
   for (int c = last; b >= 0;) {
     out.push_back(nodes[b]);

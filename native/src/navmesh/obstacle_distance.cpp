@@ -14,13 +14,6 @@
 namespace footfall {
 namespace {
 
-double side(Vec2 a, Vec2 b, Vec2 p) { return cross(b - a, p - a); }
-
-bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const double d1 = side(c, d, a), d2 = side(c, d, b), d3 = side(a, b, c), d4 = side(a, b, d);
-  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
-}
-
 /// The part of [p, q] inside the wedge at `apex` from ray `from` counter-
 /// clockwise to ray `to` (an angle below pi); false if none of it is.
 bool clip_to_wedge(Vec2 apex, Vec2 from, Vec2 to, Vec2& p, Vec2& q) {

@@ -45,15 +45,6 @@ std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, F
          static_cast<std::uint64_t>(last_foot) << 48 | 1ull << 63;
 }
 
-// The state keys a search has seen, kept per thread from search to search.
-struct KeyHash {
-  std::size_t operator()(std::uint64_t key) const {
-    key ^= key >> 33;
-    key *= 0xFF51AFD7ED558CCDull;
-    return static_cast<std::size_t>(key ^ (key >> 33));
-  }
-};
-using KeySet = util::OpenHashMap<std::uint64_t, util::NoValue, KeyHash, 2048, HugePageAllocator>;
 
 // The search took walking agents' rests to end after their grace; nothing
 // returned may rely on that, so the steps stop before the first that runs
@@ -106,6 +97,21 @@ void split_set_offs(std::vector<Footstep>& steps, const FootstepState& start) {
 
 }  // namespace
 
+// Named, not anonymous: FootstepPlanner::Search holds one.
+namespace planner::detail {
+
+// The state keys a search has seen, kept per thread from search to search.
+struct KeyHash {
+  std::size_t operator()(std::uint64_t key) const {
+    key ^= key >> 33;
+    key *= 0xFF51AFD7ED558CCDull;
+    return static_cast<std::size_t>(key ^ (key >> 33));
+  }
+};
+using KeySet = util::OpenHashMap<std::uint64_t, util::NoValue, KeyHash, 2048, HugePageAllocator>;
+
+}  // namespace planner::detail
+
 // A search node: the state reached and the action that reached it; the step
 // itself is rebuilt (bit for bit) when needed.
 struct FootstepPlanner::Node {
@@ -130,7 +136,7 @@ struct FootstepPlanner::Search {
   };
   LargeVector<Node> nodes;
   LargeVector<OpenEntry> open;  // a binary heap
-  KeySet seen;
+  planner::detail::KeySet seen;
   detail::SampledAgents others;  // the plans the search avoids
   std::optional<WholeBody> whole;  // the full-body checks, if any
   int generated = 0;

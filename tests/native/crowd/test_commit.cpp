@@ -19,7 +19,7 @@ namespace footfall::crowd {
 namespace {
 
 /// A few agents standing on open ground.
-struct Crowd : CrowdFixture {
+struct OpenGround : CrowdFixture {
   using CrowdFixture::CrowdFixture;
 
   /// Agent i's attempt toward `goal`, searched alone (whoever is in the way),
@@ -60,14 +60,14 @@ struct Crowd : CrowdFixture {
 };
 
 /// Agent 0 at the origin facing +x; the others as given, standing.
-Crowd crowd_with(std::vector<AgentSpec> others, bool leaves = false) {
+OpenGround crowd_with(std::vector<AgentSpec> others, bool leaves = false) {
   others.insert(others.begin(), AgentSpec{"mover", {0, 0}, 0.0, {{6, 0}}, leaves});
-  return Crowd(std::move(others));
+  return OpenGround(std::move(others));
 }
 
 // rest_until: a standing agent stands until t in waits no longer than kMaxWait, in place.
 TEST(Commit, RestUntilStandsUntilTInWaitsOfAtMostMaxWait) {
-  Crowd crowd = crowd_with({});
+  OpenGround crowd = crowd_with({});
   Walker& w = crowd.walkers[0];
   const std::uint64_t version = w.version;
   rest_until(w, crowd.planner, 12.0);
@@ -87,7 +87,7 @@ TEST(Commit, RestUntilStandsUntilTInWaitsOfAtMostMaxWait) {
 
 // rest_until: the provisional rest happens; nothing is added when it ends after t.
 TEST(Commit, RestUntilLetsTheProvisionalRestHappen) {
-  Crowd crowd = crowd_with({});
+  OpenGround crowd = crowd_with({});
   const Attempt a = crowd.attempt(0, {3, 0});
   ASSERT_EQ(crowd.propose_and_commit(0, a, {}, 0.0), -1);
   Walker& w = crowd.walkers[0];
@@ -109,7 +109,7 @@ TEST(Commit, RestUntilLetsTheProvisionalRestHappen) {
 
 // progress: the best way and its time change only on a gain of min_progress or more.
 TEST(Commit, ProgressRecordsWhenTheWayLastShortenedByMinProgress) {
-  Crowd crowd = crowd_with({});
+  OpenGround crowd = crowd_with({});
   Walker& w = crowd.walkers[0];
   const double min_progress = crowd.planner.params().min_progress;
   w.state.time = 1.0;
@@ -134,7 +134,7 @@ TEST(Commit, ProgressRecordsWhenTheWayLastShortenedByMinProgress) {
 
 // propose/refusal/commit: a clear proposal is committed, its steps then a provisional rest.
 TEST(Commit, ClearProposalIsCommittedWithAProvisionalRest) {
-  Crowd crowd = crowd_with({{"aside", {0, 5}, 0.0, {{0, 5}}}});
+  OpenGround crowd = crowd_with({{"aside", {0, 5}, 0.0, {{0, 5}}}});
   const Attempt a = crowd.attempt(0, {3, 0});
   Proposal p = propose(crowd.walkers, 0, a, crowd.planner, {1}, crowd.at(0.0));
   EXPECT_TRUE(p.new_place);
@@ -161,7 +161,7 @@ TEST(Commit, ClearProposalIsCommittedWithAProvisionalRest) {
 
 // refusal: a proposal whose steps run into another's plan is refused for that agent.
 TEST(Commit, ProposalIntoAnotherPlanIsRefusedForThatAgent) {
-  Crowd crowd =
+  OpenGround crowd =
       crowd_with({{"far", {0, 8}, 0.0, {{0, 8}}}, {"in the way", {1.5, 0}, kPi, {{1.5, 0}}}});
   const Attempt a = crowd.attempt(0, {3, 0});
   Proposal p = propose(crowd.walkers, 0, a, crowd.planner, {1, 2}, crowd.at(0.0));
@@ -171,7 +171,7 @@ TEST(Commit, ProposalIntoAnotherPlanIsRefusedForThatAgent) {
 
 // refusal: plans changed since the proposal are checked anew.
 TEST(Commit, PlanChangedSinceTheProposalIsCheckedAnew) {
-  Crowd crowd = crowd_with({{"other", {0, 8}, 0.0, {{0, 8}}}});
+  OpenGround crowd = crowd_with({{"other", {0, 8}, 0.0, {{0, 8}}}});
   const Attempt a = crowd.attempt(0, {3, 0});
   Proposal p = propose(crowd.walkers, 0, a, crowd.planner, {1}, crowd.at(0.0));
   ASSERT_EQ(refusal(crowd.walkers, p, crowd.planner), -1);
@@ -191,7 +191,7 @@ TEST(Commit, RestWithNoRoomBesideAnotherIsRefused) {
   // but there is no room to turn (half the torso width and 0.1 m).
   const FootstepState& rest = a.rest.state;
   const Vec2 beside = rest.com + 0.69 * unit(rest.facing + 0.5 * kPi);
-  Crowd crowd = crowd_with({{"beside", beside, rest.facing, {beside}}});
+  OpenGround crowd = crowd_with({{"beside", beside, rest.facing, {beside}}});
   Proposal p = propose(crowd.walkers, 0, a, crowd.planner, {1}, crowd.at(0.0));
   EXPECT_TRUE(p.new_place);
   EXPECT_EQ(p.hits, std::vector<char>{0});
@@ -201,7 +201,7 @@ TEST(Commit, RestWithNoRoomBesideAnotherIsRefused) {
 
 // commit: a refused proposal leaves the agent waiting at its old rest, noticing who refused it.
 TEST(Commit, RefusedProposalLeavesTheAgentAtItsOldRest) {
-  Crowd crowd =
+  OpenGround crowd =
       crowd_with({{"far", {0, 8}, 0.0, {{0, 8}}}, {"in the way", {4.5, 0}, kPi, {{4.5, 0}}}});
   const Attempt first = crowd.attempt(0, {2, 0});
   ASSERT_EQ(crowd.propose_and_commit(0, first, {}, 0.0), -1);
@@ -224,7 +224,7 @@ TEST(Commit, RefusedProposalLeavesTheAgentAtItsOldRest) {
 
 // commit: an agent with nothing to commit retries later, twice as late each time, up to 8 times.
 TEST(Commit, WaitingRetriesLaterBackingOff) {
-  Crowd crowd = crowd_with({});
+  OpenGround crowd = crowd_with({});
   const Attempt wait;  // nothing found
   double t = 0.0;
   for (const double after : {0.1, 0.2, 0.4, 0.8, 0.8}) {
@@ -240,7 +240,7 @@ TEST(Commit, WaitingRetriesLaterBackingOff) {
 TEST(Commit, ReachingTheLastGoalEndsTheWalk) {
   for (const bool leaves : {false, true}) {
     SCOPED_TRACE(leaves ? "leaves" : "stays");
-    Crowd crowd = crowd_with({}, leaves);
+    OpenGround crowd = crowd_with({}, leaves);
     Attempt a = crowd.attempt(0, {6, 0});
     a.reached = true;
     Proposal p = propose(crowd.walkers, 0, a, crowd.planner, {}, crowd.at(0.0));

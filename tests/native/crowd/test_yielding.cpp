@@ -21,7 +21,7 @@ namespace footfall::crowd {
 namespace {
 
 /// A few agents among obstacles.
-struct Crowd : CrowdFixture {
+struct AmongObstacles : CrowdFixture {
   using CrowdFixture::CrowdFixture;
 
   /// Agent i's steps toward `goal`, searched alone (whoever is in the way).
@@ -57,15 +57,15 @@ bool covers(const KeepOut& discs, Vec2 point) {
 
 /// Agent 0 at the origin on its way east; then agent 1 standing in its way
 /// facing it, bound west with more way left; then `more`.
-Crowd face_off(std::vector<AgentSpec> more = {}) {
+AmongObstacles face_off(std::vector<AgentSpec> more = {}) {
   std::vector<AgentSpec> agents{{"blocked", {0, 0}, 0.0, {{10, 0}}},
                                 {"in the way", {1.2, 0}, kPi, {{-12, 0}}}};
   agents.insert(agents.end(), more.begin(), more.end());
-  return Crowd(std::move(agents));
+  return AmongObstacles(std::move(agents));
 }
 
 /// Agent 0's wish in a face_off(), blocked where it stands.
-Attempt wish_of_blocked(Crowd& crowd) {
+Attempt wish_of_blocked(AmongObstacles& crowd) {
   crowd.walkers[0].blocked = 1;
   Attempt a;
   a.wish = wish_discs(crowd.steps_toward(0, {10, 0}), crowd.planner.character());
@@ -74,7 +74,7 @@ Attempt wish_of_blocked(Crowd& crowd) {
 
 // wish_discs: the first kWishReach of the way is covered, and nothing much beyond it.
 TEST(Yielding, WishCoversTheFirstWishReachOfTheWay) {
-  const Crowd crowd({{"a", {0, 0}, 0.0, {{8, 0}}}});
+  const AmongObstacles crowd({{"a", {0, 0}, 0.0, {{8, 0}}}});
   const std::vector<Footstep> steps = crowd.steps_toward(0, {8, 0});
   const CharacterParams& character = crowd.planner.character();
   const KeepOut wish = wish_discs(steps, character);
@@ -88,7 +88,7 @@ TEST(Yielding, WishCoversTheFirstWishReachOfTheWay) {
 
 // wish_discs: steps that end within reach add room to rest where they end.
 TEST(Yielding, ShortWishEndsWithRoomToRest) {
-  const Crowd crowd({{"a", {0, 0}, 0.0, {{1.5, 0}}}});
+  const AmongObstacles crowd({{"a", {0, 0}, 0.0, {{1.5, 0}}}});
   const std::vector<Footstep> steps = crowd.steps_toward(0, {1.5, 0});
   ASSERT_LT(distance(steps.back().com_end, {0, 0}), kWishReach);
   const KeepOut wish = wish_discs(steps, crowd.planner.character());
@@ -98,7 +98,7 @@ TEST(Yielding, ShortWishEndsWithRoomToRest) {
 
 // show_wish: of those resting in the wish, only those that go after the blocked agent are asked.
 TEST(Yielding, BlockedAgentAsksThoseInItsWayWithMoreWayLeft) {
-  Crowd crowd = face_off({{"ahead of it", {2.4, 0}, kPi, {{3, 0}}},         // less way left
+  AmongObstacles crowd = face_off({{"ahead of it", {2.4, 0}, kPi, {{3, 0}}},         // less way left
                           {"out of the way", {1.2, 3}, kPi, {{-12, 3}}}});  // more, but aside
   for (Walker& w : crowd.walkers) w.retry_at = 9.0;
   Attempt a = wish_of_blocked(crowd);
@@ -122,7 +122,7 @@ TEST(Yielding, BlockedAgentAsksThoseInItsWayWithMoreWayLeft) {
 
 // show_wish: one that gives way goes after all, so it is asked even with less way left.
 TEST(Yielding, OneThatGivesWayIsAskedWhateverItsWay) {
-  Crowd crowd = face_off();
+  AmongObstacles crowd = face_off();
   crowd.walkers[1].way = 1.0;  // less than agent 0's 10 m
   Attempt a = wish_of_blocked(crowd), again = a;  // show_wish takes the attempt's wish
   Snapshot now = crowd.at(0.0);
@@ -136,7 +136,7 @@ TEST(Yielding, OneThatGivesWayIsAskedWhateverItsWay) {
 
 // show_wish: a dormant agent asked is woken, and no one is asked twice.
 TEST(Yielding, AskedAgentIsWokenAndAskedOnce) {
-  Crowd crowd = face_off();
+  AmongObstacles crowd = face_off();
   crowd.walkers[1].dormant = true;
   Attempt a = wish_of_blocked(crowd), again = a;
   std::vector<std::size_t> asked;
@@ -149,7 +149,7 @@ TEST(Yielding, AskedAgentIsWokenAndAskedOnce) {
 
 // show_wish: an agent no longer blocked withdraws its wish and asks no one.
 TEST(Yielding, WishIsWithdrawnOnceNotBlocked) {
-  Crowd crowd = face_off();
+  AmongObstacles crowd = face_off();
   Walker& w = crowd.walkers[0];
   w.wish = wish_discs(crowd.steps_toward(0, {10, 0}), crowd.planner.character());
   w.wish_makes_room = true;
@@ -168,7 +168,7 @@ TEST(Yielding, WishIsWithdrawnOnceNotBlocked) {
 TEST(Yielding, MustMakeRoomInTheWishOfOneBoundAgainstIt) {
   // Agent 2 stands in the wish too but is bound the same way (a queue);
   // agent 3 is bound against it but stands out of its wish.
-  Crowd crowd = face_off({{"queued", {1.2, 0}, 0.0, {{12, 0}}},
+  AmongObstacles crowd = face_off({{"queued", {1.2, 0}, 0.0, {{12, 0}}},
                           {"aside", {1.2, 3}, kPi, {{-12, 3}}}});
   crowd.walkers[0].wish = wish_discs(crowd.steps_toward(0, {10, 0}), crowd.planner.character());
   for (std::size_t j = 1; j < 4; ++j) crowd.walkers[j].yielding_to = {0};
@@ -185,7 +185,7 @@ TEST(Yielding, MustMakeRoomInTheWishOfOneBoundAgainstIt) {
 
 // step_aside: the one asked steps to a place nearby whose rest keeps out of the wish.
 TEST(Yielding, OneAskedStepsAsideOutOfTheWish) {
-  Crowd crowd = face_off();
+  AmongObstacles crowd = face_off();
   const KeepOut wish = wish_discs(crowd.steps_toward(0, {10, 0}), crowd.planner.character());
   const Walker& asked = crowd.walkers[1];
   ASSERT_FALSE(out_of(asked.state, wish, crowd.planner.character()));
@@ -214,7 +214,7 @@ TEST(Yielding, NoStepAsideWhenBoxedIn) {
       box_obstacle({0.7, 0}, {0.2, 1.6}), box_obstacle({-0.7, 0}, {0.2, 1.6})};
   NavMesh mesh({-5, -5}, {5, 5});
   for (const Obstacle& wall : walls) mesh.add_polygon(wall.polygon);
-  const Crowd crowd({{"boxed", {0, 0}, 0.0, {{3, 0}}}}, walls);
+  const AmongObstacles crowd({{"boxed", {0, 0}, 0.0, {{3, 0}}}}, walls);
   const KeepOut here{{{0, 0}, 0.5}};
   SearchOptions options;
   options.keep_out = here;
@@ -222,7 +222,7 @@ TEST(Yielding, NoStepAsideWhenBoxedIn) {
   EXPECT_FALSE(
       step_aside(crowd.walkers[0].state, here, {}, crowd.planner, &mesh, options).has_value());
   // Without the walls it finds a way out of the disc.
-  const Crowd open({{"free", {0, 0}, 0.0, {{3, 0}}}});
+  const AmongObstacles open({{"free", {0, 0}, 0.0, {{3, 0}}}});
   EXPECT_TRUE(
       step_aside(open.walkers[0].state, here, {}, open.planner, nullptr, options).has_value());
 }
@@ -230,7 +230,7 @@ TEST(Yielding, NoStepAsideWhenBoxedIn) {
 // gives_way: only one blocked kGiveWayBlocked times, out of patience, near one bound against it.
 TEST(Yielding, GivesWayOnlyWhenStalledFacingOneBoundAgainstIt) {
   const auto gives = [](Vec2 other_at, Vec2 other_goal, int blocked, double improved_at) {
-    Crowd crowd({{"stalled", {0, 0}, 0.0, {{10, 0}}}, {"other", other_at, kPi, {other_goal}}});
+    AmongObstacles crowd({{"stalled", {0, 0}, 0.0, {{10, 0}}}, {"other", other_at, kPi, {other_goal}}});
     Walker& w = crowd.walkers[0];
     w.blocked = blocked;
     w.state.time = 10.0;
@@ -247,7 +247,7 @@ TEST(Yielding, GivesWayOnlyWhenStalledFacingOneBoundAgainstIt) {
 /// Agent 0 at the origin bound east, agent 1 walking west from (8, 0) toward
 /// `its_goal` (its plan heads west whatever its goal), seen by agent 0.
 struct Oncoming {
-  Crowd crowd;
+  AmongObstacles crowd;
   Snapshot now;
   Oncoming(Vec2 its_goal, std::vector<Obstacle> obstacles = {})
       : crowd({{"east", {0, 0}, 0.0, {{20, 0}}}, {"west", {8, 0}, kPi, {its_goal}}},

@@ -47,15 +47,8 @@ double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
   return length(p - (a + t * ab));
 }
 
-/// True if the segments cross at a point inside both. Touching and collinear
-/// cases are left to the endpoint distances, which are then 0.
-bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const double c_side = cross(b - a, c - a), d_side = cross(b - a, d - a);
-  const double a_side = cross(d - c, a - c), b_side = cross(d - c, b - c);
-  return ((c_side > 0 && d_side < 0) || (c_side < 0 && d_side > 0)) &&
-         ((a_side > 0 && b_side < 0) || (a_side < 0 && b_side > 0));
-}
-
+/// Touching and collinear segments are left to the endpoint distances,
+/// which are then 0.
 double segment_distance(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   if (segments_cross(a, b, c, d)) return 0.0;
   return std::min({point_segment_distance(a, c, d), point_segment_distance(b, c, d),

@@ -16,7 +16,7 @@
 namespace footfall {
 namespace {
 
-std::vector<Vec2> box(Vec2 lo, Vec2 hi) { return {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}; }
+using bench::box_between;
 
 PathResult path(const NavMesh& mesh, Vec2 from, Vec2 to, double radius) {
   return mesh.find_path({from, to, radius, 0.01});
@@ -25,8 +25,8 @@ PathResult path(const NavMesh& mesh, Vec2 from, Vec2 to, double radius) {
 // A wall across a 10 x 10 room at x = 5 with a gap of `gap` metres around y = 5.
 NavMesh room_with_gap(double gap) {
   NavMesh mesh({0, 0}, {10, 10});
-  mesh.add_polygon(box({4.9, 0}, {5.1, 5 - gap / 2}));
-  mesh.add_polygon(box({4.9, 5 + gap / 2}, {5.1, 10}));
+  mesh.add_polygon(box_between({4.9, 0}, {5.1, 5 - gap / 2}));
+  mesh.add_polygon(box_between({4.9, 5 + gap / 2}, {5.1, 10}));
   return mesh;
 }
 
@@ -46,7 +46,7 @@ TEST(NavMesh, GapOpensAndClosesWithTheRadius) {
 
 TEST(NavMesh, ReportsBlockedAndOutsideEnds) {
   NavMesh mesh({0, 0}, {10, 10});
-  mesh.add_polygon(box({4, 4}, {6, 6}));
+  mesh.add_polygon(box_between({4, 4}, {6, 6}));
   EXPECT_EQ(path(mesh, {5, 5}, {9, 9}, 0.1).status, PathStatus::kStartBlocked);
   EXPECT_EQ(path(mesh, {3.8, 5}, {9, 9}, 0.3).status, PathStatus::kStartBlocked);
   EXPECT_EQ(path(mesh, {1, 1}, {6.2, 5}, 0.3).status, PathStatus::kGoalBlocked);
@@ -59,7 +59,7 @@ TEST(NavMesh, ReportsBlockedAndOutsideEnds) {
 
 TEST(NavMesh, ZeroRadiusWrapsTheCorners) {
   NavMesh mesh({0, 0}, {10, 10});
-  mesh.add_polygon(box({4, 4}, {6, 6}));
+  mesh.add_polygon(box_between({4, 4}, {6, 6}));
   const PathResult r = path(mesh, {1, 5}, {9, 5}, 0.0);
   ASSERT_EQ(r.status, PathStatus::kFound);
   EXPECT_NEAR(r.length, 2 * std::sqrt(10.0) + 2, 1e-9);
@@ -110,12 +110,12 @@ TEST(NavMesh, DuplicateVerticesAndPointsOnEdgesAreHarmless) {
 TEST(NavMesh, TouchingOverlappingAndNestedPolygons) {
   NavMesh mesh({0, 0}, {10, 10});
   // Two boxes sharing the edge x = 5 close the room between y = 0 and 10.
-  const int left = mesh.add_polygon(box({4, 0}, {5, 10}));
-  mesh.add_polygon(box({5, 0}, {6, 10}));
+  const int left = mesh.add_polygon(box_between({4, 0}, {5, 10}));
+  mesh.add_polygon(box_between({5, 0}, {6, 10}));
   EXPECT_EQ(path(mesh, {1, 5}, {9, 5}, 0.0).status, PathStatus::kNoPath);
   // Inside the overlap of two boxes, and inside a box nested in another.
-  const int big = mesh.add_polygon(box({4.5, 2}, {8, 8}));
-  const int nested = mesh.add_polygon(box({6.5, 4}, {7.5, 6}));
+  const int big = mesh.add_polygon(box_between({4.5, 2}, {8, 8}));
+  const int nested = mesh.add_polygon(box_between({6.5, 4}, {7.5, 6}));
   EXPECT_EQ(path(mesh, {7, 5}, {9, 9.5}, 0.0).status, PathStatus::kStartBlocked);
   mesh.remove(big);
   EXPECT_EQ(path(mesh, {7, 5}, {9, 9.5}, 0.0).status, PathStatus::kStartBlocked);
@@ -132,15 +132,15 @@ TEST(NavMesh, TouchingOverlappingAndNestedPolygons) {
 // beside them, not across a piece whose constraint contexts miss one.
 TEST(NavMesh, UpdatesBesideNearlyCollinearEdgesKeepFreeFacesFree) {
   NavMesh mesh({0, 0}, {8, 8});
-  const int first = mesh.add_polygon(box({3, 6.5}, {4, 8}));
-  mesh.add_polygon(box({2.5, 7.5}, {4.5, 8.5}));
-  mesh.add_polygon(box({2.5, 7.5}, {4, 9.5}));
+  const int first = mesh.add_polygon(box_between({3, 6.5}, {4, 8}));
+  mesh.add_polygon(box_between({2.5, 7.5}, {4.5, 8.5}));
+  mesh.add_polygon(box_between({2.5, 7.5}, {4, 9.5}));
   mesh.remove(first);
-  mesh.add_polygon(box({3.5, 6.5}, {4.5, 8}));
+  mesh.add_polygon(box_between({3.5, 6.5}, {4.5, 8}));
   NavMesh rebuilt({0, 0}, {8, 8});
-  rebuilt.add_polygon(box({2.5, 7.5}, {4.5, 8.5}));
-  rebuilt.add_polygon(box({2.5, 7.5}, {4, 9.5}));
-  rebuilt.add_polygon(box({3.5, 6.5}, {4.5, 8}));
+  rebuilt.add_polygon(box_between({2.5, 7.5}, {4.5, 8.5}));
+  rebuilt.add_polygon(box_between({2.5, 7.5}, {4, 9.5}));
+  rebuilt.add_polygon(box_between({3.5, 6.5}, {4.5, 8}));
   for (const Vec2 p : {Vec2{3.25, 7.25}, Vec2{4, 1}, Vec2{1, 1}, Vec2{6, 4}, Vec2{3.4, 7}})
     EXPECT_NEAR(mesh.clearance(p), rebuilt.clearance(p), 1e-9) << p.x << ", " << p.y;
   EXPECT_EQ(path(mesh, {1, 1}, {7, 1}, 0.2).status, PathStatus::kFound);
@@ -153,15 +153,15 @@ TEST(NavMesh, UpdatesBesideNearlyCollinearEdgesKeepFreeFacesFree) {
 // Found by fuzz_navmesh_updates.
 TEST(NavMesh, ALaterCornerOnACrossingMeetsItExactly) {
   NavMesh mesh({0, 0}, {8, 8});
-  const int tall = mesh.add_polygon(box({3, 6.5}, {4, 8}));
-  mesh.add_polygon(box({2.5, 7.5}, {4.5, 8.5}));                   // crosses it at y = 7.5
-  const int narrow = mesh.add_polygon(box({2.5, 7.5}, {4, 9.5}));  // a corner on the crossing
+  const int tall = mesh.add_polygon(box_between({3, 6.5}, {4, 8}));
+  mesh.add_polygon(box_between({2.5, 7.5}, {4.5, 8.5}));                   // crosses it at y = 7.5
+  const int narrow = mesh.add_polygon(box_between({2.5, 7.5}, {4, 9.5}));  // a corner on the crossing
   mesh.remove(tall);
-  mesh.add_polygon(box({3.5, 6.5}, {4.5, 8}));
+  mesh.add_polygon(box_between({3.5, 6.5}, {4.5, 8}));
   mesh.remove(narrow);
   NavMesh rebuilt({0, 0}, {8, 8});
-  rebuilt.add_polygon(box({2.5, 7.5}, {4.5, 8.5}));
-  rebuilt.add_polygon(box({3.5, 6.5}, {4.5, 8}));
+  rebuilt.add_polygon(box_between({2.5, 7.5}, {4.5, 8.5}));
+  rebuilt.add_polygon(box_between({3.5, 6.5}, {4.5, 8}));
   for (double x = 0.25; x < 8; x += 0.5)
     for (double y = 0.25; y < 8; y += 0.5)
       ASSERT_NEAR(mesh.clearance({x, y}), rebuilt.clearance({x, y}), 1e-9) << x << ", " << y;
@@ -176,17 +176,17 @@ TEST(NavMesh, ALaterCornerOnACrossingMeetsItExactly) {
 // the gap and went round by 14 %. Found by fuzz_navmesh_updates.
 TEST(NavMesh, AGateClippedAtItsEndLetsThePathTurnThere) {
   NavMesh mesh({0, 0}, {8, 8});
-  mesh.add_polygon(box({1.5, 0}, {2, 1.5}));
-  const int gone = mesh.add_polygon(box({0, 1.5}, {2, 3}));
-  mesh.add_polygon(box({0.5, 1.5}, {1, 2}));
-  mesh.add_polygon(box({1, 1}, {2.5, 2.5}));
-  mesh.add_polygon(box({0.5, 3.5}, {2.5, 5}));
+  mesh.add_polygon(box_between({1.5, 0}, {2, 1.5}));
+  const int gone = mesh.add_polygon(box_between({0, 1.5}, {2, 3}));
+  mesh.add_polygon(box_between({0.5, 1.5}, {1, 2}));
+  mesh.add_polygon(box_between({1, 1}, {2.5, 2.5}));
+  mesh.add_polygon(box_between({0.5, 3.5}, {2.5, 5}));
   mesh.remove(gone);
   NavMesh rebuilt({0, 0}, {8, 8});
-  rebuilt.add_polygon(box({1.5, 0}, {2, 1.5}));
-  rebuilt.add_polygon(box({0.5, 1.5}, {1, 2}));
-  rebuilt.add_polygon(box({1, 1}, {2.5, 2.5}));
-  rebuilt.add_polygon(box({0.5, 3.5}, {2.5, 5}));
+  rebuilt.add_polygon(box_between({1.5, 0}, {2, 1.5}));
+  rebuilt.add_polygon(box_between({0.5, 1.5}, {1, 2}));
+  rebuilt.add_polygon(box_between({1, 1}, {2.5, 2.5}));
+  rebuilt.add_polygon(box_between({0.5, 3.5}, {2.5, 5}));
   const PathResult updated = path(mesh, {0.25, 0.25}, {7.75, 7.6}, 0.1);
   const PathResult fresh = path(rebuilt, {0.25, 0.25}, {7.75, 7.6}, 0.1);
   ASSERT_EQ(updated.status, PathStatus::kFound);
@@ -205,7 +205,7 @@ TEST(NavMesh, SelfIntersectingPolygonBlocksBothLobes) {
 
 TEST(NavMesh, ClearanceBetweenTwoPointsSeesPastAndThroughObstacles) {
   NavMesh mesh({0, 0}, {10, 10});
-  mesh.add_polygon(box({4, 4}, {6, 6}));
+  mesh.add_polygon(box_between({4, 4}, {6, 6}));
   EXPECT_NEAR(mesh.clearance_between({1, 7}, {9, 7}), 1.0, 1e-12);         // past the box's top
   EXPECT_NEAR(mesh.clearance_between({1, 9.5}, {9, 9.5}), 0.5, 1e-12);     // nearer the boundary
   EXPECT_EQ(mesh.clearance_between({1, 5}, {9, 5}), 0.0);                  // through the box
@@ -216,7 +216,7 @@ TEST(NavMesh, ClearanceBetweenTwoPointsSeesPastAndThroughObstacles) {
 
 TEST(NavMesh, LineOfSightStopsAtAnythingItTouches) {
   NavMesh mesh({0, 0}, {10, 10});
-  mesh.add_polygon(box({4, 4}, {6, 6}));
+  mesh.add_polygon(box_between({4, 4}, {6, 6}));
   mesh.add_polygon({{1, 1}, {3, 1}});  // a wall
   mesh.add_point({8, 2});
   EXPECT_TRUE(mesh.line_of_sight({1, 7}, {9, 7}));               // past the box
@@ -304,7 +304,7 @@ void check_updates_against_rebuilds(bool overlapping) {
            b.hi.y + 0.01 < a.lo.y;
   };
   auto add = [](NavMesh& mesh, const Item& item) {
-    return item.point ? mesh.add_point(item.lo) : mesh.add_polygon(box(item.lo, item.hi));
+    return item.point ? mesh.add_point(item.lo) : mesh.add_polygon(box_between(item.lo, item.hi));
   };
   NavMesh mesh({0, 0}, {30, 30});
   std::map<int, Item> live;
@@ -357,11 +357,11 @@ void check_updates_against_rebuilds(bool overlapping) {
 // (inside) on the outside, which once closed the way past them.
 TEST(NavMesh, FindsThePathPastStackedBoxes) {
   NavMesh mesh({0, 0}, {30, 30});
-  mesh.add_polygon(box({8.96301, 17.8174}, {13.5103, 23.6061}));
+  mesh.add_polygon(box_between({8.96301, 17.8174}, {13.5103, 23.6061}));
   mesh.add_point({23.9675, 5.08172});
-  mesh.add_polygon(box({6.83971, 14.3971}, {9.66794, 20.3869}));
+  mesh.add_polygon(box_between({6.83971, 14.3971}, {9.66794, 20.3869}));
   mesh.add_point({23.8305, 26.638});
-  mesh.add_polygon(box({12.9283, 3.09438}, {16.7835, 7.32426}));
+  mesh.add_polygon(box_between({12.9283, 3.09438}, {16.7835, 7.32426}));
   EXPECT_EQ(path(mesh, {8.3778079519034936, 3.3595511495690511},
                  {26.1619550833936, 11.936105124241561}, 0.30892760615123638)
                 .status,
@@ -375,13 +375,13 @@ TEST(NavMesh, AGoalWalledInAcrossAWideFieldHasNoPath) {
     NavMesh mesh({0, 0}, {200, 200});
     for (double x = 2; x < 200; x += 4)
       for (double y = 2; y < 200; y += 4)
-        if (std::hypot(x - 150, y - 150) > 6) mesh.add_polygon(box({x, y}, {x + 1, y + 1}));
+        if (std::hypot(x - 150, y - 150) > 6) mesh.add_polygon(box_between({x, y}, {x + 1, y + 1}));
     // A 4 x 4 m pen round (150, 150), its door (if any) in the west wall.
-    mesh.add_polygon(box({147.8, 147.8}, {152.2, 148}));
-    mesh.add_polygon(box({147.8, 152}, {152.2, 152.2}));
-    mesh.add_polygon(box({152, 148}, {152.2, 152}));
-    mesh.add_polygon(box({147.8, 148}, {148, 150 - door / 2}));
-    mesh.add_polygon(box({147.8, 150 + door / 2}, {148, 152}));
+    mesh.add_polygon(box_between({147.8, 147.8}, {152.2, 148}));
+    mesh.add_polygon(box_between({147.8, 152}, {152.2, 152.2}));
+    mesh.add_polygon(box_between({152, 148}, {152.2, 152}));
+    mesh.add_polygon(box_between({147.8, 148}, {148, 150 - door / 2}));
+    mesh.add_polygon(box_between({147.8, 150 + door / 2}, {148, 152}));
     const PathResult in = path(mesh, {1, 1}, {150, 150}, 0.5);
     const PathResult out = path(mesh, {150, 150}, {1, 1}, 0.5);
     const PathStatus expected = door > 0 ? PathStatus::kFound : PathStatus::kNoPath;
@@ -420,11 +420,11 @@ TEST(NavMesh, WallsMeetingOneUlpApartLeaveTheRoomFree) {
 // they cross each other and the domain's boundary.
 TEST(NavMesh, InsertionOrderDoesNotChangeWhatIsFree) {
   const std::vector<std::vector<Vec2>> obstacles{
-      box({20.36, 24.09}, {21.29, 28.95}),  // across the top of the domain
+      box_between({20.36, 24.09}, {21.29, 28.95}),  // across the top of the domain
       {{21.93, 26.42}, {18.36, 25.87}, {20.78, 22.35}, {21.59, 22.65}, {22.49, 23.64}},
       {{11.65, 5.28}, {16.76, 6.56}},  // a wall from outside the domain
-      box({18.0, 24.5}, {19.0, 25.5}),
-      box({18.5, 25.0}, {21.0, 30.0})};
+      box_between({18.0, 24.5}, {19.0, 25.5}),
+      box_between({18.5, 25.0}, {21.0, 30.0})};
   auto free_area = [&](const std::vector<std::size_t>& order) {
     NavMesh mesh({15.77, 5.12}, {36.55, 26.84});
     for (std::size_t i : order) mesh.add_polygon(obstacles[i]);

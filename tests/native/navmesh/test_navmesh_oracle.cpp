@@ -12,11 +12,13 @@
 #include <vector>
 
 #include "footfall/navmesh/navmesh.hpp"
+#include "footfall/scenes/box_scenes.hpp"
 #include "navmesh/navmesh_oracle.hpp"
 
 namespace footfall {
 namespace {
 
+using bench::box_between;
 using testing::NavScene;
 using testing::OracleAnswer;
 
@@ -49,7 +51,6 @@ std::vector<Vec2> placed(const std::vector<Vec2>& shape, Vec2 centre, double ang
 }
 
 /// The corners of the rectangle [lo, hi], counter-clockwise.
-std::vector<Vec2> rectangle(Vec2 lo, Vec2 hi) { return {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}; }
 
 /// A box, turned box, triangle, convex polygon or wall (a segment) near
 /// `centre`, in either winding.
@@ -59,7 +60,7 @@ std::vector<Vec2> random_obstacle(Random& random, Vec2 centre) {
   if (kind <= 1) {
     const Vec2 half{random.uniform(0.2, 2.5), random.uniform(0.2, 2.5)};
     shape =
-        placed(rectangle(-1.0 * half, half), centre, kind == 0 ? 0.0 : random.uniform(0, 2 * kPi));
+        placed(box_between(-1.0 * half, half), centre, kind == 0 ? 0.0 : random.uniform(0, 2 * kPi));
   } else if (kind == 2) {
     const Vec2 reach{2.5, 2.5};
     for (int i = 0; i < 3; ++i) shape.push_back(random.point(centre - reach, centre + reach));
@@ -219,7 +220,7 @@ TEST(NavMeshOracle, OracleMatchesTheLengthAroundAPoint) {
 }
 
 TEST(NavMeshOracle, OraclePathClearanceSeesBetweenThePoints) {
-  const NavScene scene{{0, 0}, {10, 10}, {rectangle({4, 4}, {6, 6})}, {{5, 8.5}}};
+  const NavScene scene{{0, 0}, {10, 10}, {box_between({4, 4}, {6, 6})}, {{5, 8.5}}};
   EXPECT_DOUBLE_EQ(testing::path_clearance(scene, {{1, 8}, {9, 8}}), 0.5);
   EXPECT_DOUBLE_EQ(testing::path_clearance(scene, {{1, 1}, {9, 9}}), 0.0);  // through the box
   EXPECT_DOUBLE_EQ(testing::path_clearance(scene, {{1, 2}, {9, 2}, {9, 3}}), 1.0);
@@ -328,7 +329,7 @@ TEST(NavMeshOracle, RandomScenesAgreeWithTheOracle) {
 /// open there by a gap `gap` wide between the square ends of two boxes.
 NavScene wall_with_gap(Vec2 centre, double angle, double gap) {
   NavScene scene{{0, 0}, {20, 20}, {}, {}};
-  const std::vector<Vec2> half_wall = rectangle({0.5 * gap, -0.2}, {0.5 * gap + 60, 0.2});
+  const std::vector<Vec2> half_wall = box_between({0.5 * gap, -0.2}, {0.5 * gap + 60, 0.2});
   scene.polygons.push_back(placed(half_wall, centre, angle));
   scene.polygons.push_back(placed(half_wall, centre, angle + kPi));
   return scene;
@@ -340,8 +341,8 @@ NavScene wall_with_gap(Vec2 centre, double angle, double gap) {
 NavScene wall_with_point(Vec2 corner, double angle, double lean, double gap) {
   NavScene scene{{0, 0}, {20, 20}, {}, {}};
   const double slot = 2 * gap * std::cos(lean);
-  scene.polygons.push_back(placed(rectangle({-60, -0.4}, {0, 0}), corner, angle));
-  scene.polygons.push_back(placed(rectangle({slot, -0.4}, {slot + 60, 0}), corner, angle));
+  scene.polygons.push_back(placed(box_between({-60, -0.4}, {0, 0}), corner, angle));
+  scene.polygons.push_back(placed(box_between({slot, -0.4}, {slot + 60, 0}), corner, angle));
   scene.points.push_back(corner + rotate(gap * unit(lean), angle));
   return scene;
 }

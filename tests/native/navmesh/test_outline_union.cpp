@@ -7,12 +7,13 @@
 
 #include "footfall/crowd/scenario.hpp"
 #include "footfall/navmesh/navmesh.hpp"
+#include "footfall/scenes/box_scenes.hpp"
 #include "navmesh/outline_union.hpp"
 
 namespace footfall {
 namespace {
 
-std::vector<Vec2> box(Vec2 lo, Vec2 hi) { return {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}; }
+using bench::box_between;
 
 // `count` boxes of 5 m at random with their corners in a square of `side`.
 std::vector<std::vector<Vec2>> scattered_boxes(int count, double side, unsigned seed) {
@@ -21,19 +22,19 @@ std::vector<std::vector<Vec2>> scattered_boxes(int count, double side, unsigned 
   std::vector<std::vector<Vec2>> boxes;
   for (int i = 0; i < count; ++i) {
     const Vec2 lo{at(random), at(random)};
-    boxes.push_back(box(lo, lo + Vec2{5, 5}));
+    boxes.push_back(box_between(lo, lo + Vec2{5, 5}));
   }
   return boxes;
 }
 
 TEST(OutlineUnion, GroupsOnlyWhatOverlaps) {
   const std::vector<std::vector<Vec2>> outlines{
-      box({0, 0}, {2, 2}),    box({1, 1}, {3, 3}),  // overlapping
-      box({10, 0}, {12, 2}),                          // apart
-      box({2.5, 2.5}, {4, 4}),                        // overlapping the second
-      box({4, 4}, {5, 5}),                            // touching the fourth at a corner only
+      box_between({0, 0}, {2, 2}),    box_between({1, 1}, {3, 3}),  // overlapping
+      box_between({10, 0}, {12, 2}),                          // apart
+      box_between({2.5, 2.5}, {4, 4}),                        // overlapping the second
+      box_between({4, 4}, {5, 5}),                            // touching the fourth at a corner only
       {{20, 0}, {22, 2}, {22, 0}, {20, 2}},           // a bow tie: crosses itself, left alone
-      box({21, 0}, {23, 2})};
+      box_between({21, 0}, {23, 2})};
   const std::vector<OverlapGroup> groups = overlapping_groups(outlines);
   ASSERT_EQ(groups.size(), 1u);
   EXPECT_EQ(groups[0].members, (std::vector<int>{0, 1, 3}));
@@ -42,8 +43,8 @@ TEST(OutlineUnion, GroupsOnlyWhatOverlaps) {
 
 TEST(OutlineUnion, AWalledCourtyardKeepsItsHoleOpen) {
   // Four overlapping walls round a 6 x 6 m courtyard.
-  const std::vector<std::vector<Vec2>> walls{box({0, 0}, {8, 1}), box({7, 0}, {8, 8}), box({0, 7}, {8, 8}),
-                                             box({0, 0}, {1, 8})};
+  const std::vector<std::vector<Vec2>> walls{box_between({0, 0}, {8, 1}), box_between({7, 0}, {8, 8}), box_between({0, 7}, {8, 8}),
+                                             box_between({0, 0}, {1, 8})};
   const std::vector<OverlapGroup> groups = overlapping_groups(walls);
   ASSERT_EQ(groups.size(), 1u);
   ASSERT_EQ(groups[0].region.outlines.size(), 1u);

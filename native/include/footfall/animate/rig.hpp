@@ -9,6 +9,9 @@
 
 namespace footfall {
 
+/// The behaviours a rig may have a clip for, as a profile's `clips` names them.
+inline constexpr const char* kClipBehaviors[] = {"walk", "arms_in", "side_step", "idle"};
+
 /// A rig profile: bone roles, clips and dimensions (docs/rig-profile.md).
 /// Any part may be left out: detection (bone_map.hpp) finds the bones it
 /// does not name.

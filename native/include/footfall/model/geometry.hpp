@@ -77,6 +77,15 @@ inline double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
   return std::sqrt(squared_distance_to_segment(p, a, b));
 }
 
+/// True if the segments [a, b] and [c, d] cross at a point inside both
+/// (touching at an end, or lying on one line, is not crossing).
+inline bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double c_side = cross(b - a, c - a), d_side = cross(b - a, d - a);
+  const double a_side = cross(d - c, a - c), b_side = cross(d - c, b - c);
+  return ((c_side > 0 && d_side < 0) || (c_side < 0 && d_side > 0)) &&
+         ((a_side > 0 && b_side < 0) || (a_side < 0 && b_side > 0));
+}
+
 /// An axis-aligned box in the ground plane.
 struct Box {
   Vec2 min, max;  ///< Its corners. [m]
