@@ -79,6 +79,10 @@ std::optional<Way> way_out(const NavMesh& mesh, const CharacterParams& character
 
 }  // namespace
 
+bool cramped(const NavMesh* mesh, const CharacterParams& character, Vec2 at) {
+  return mesh != nullptr && mesh->clearance(at) < 0.5 * character.torso_width + kSwayMargin;
+}
+
 /// The way on the navigation mesh: the roomiest of three that is not much
 /// longer than the tightest (at most kRoomyDetour times plus kRoomyExtra):
 /// room to walk upright with a margin for the sway, just upright (half the
@@ -144,11 +148,13 @@ LocalGoal local_goal(const FootstepPlanner& planner, const NavMesh* mesh, const 
   constexpr double kStep = 0.25;  // [m]
   // Not within the goal tolerance of the agent: it would count as there
   // already, and stand still for good (beside a box, where the way hugs it).
+  // (A way that doubles back, out of a gap and in again, comes near it
+  // farther along.)
   for (double along = reach; along > planner.params().goal_tolerance; along -= kStep) {
     const Vec2 point = point_along(way.points, along);
     const Vec2 ahead = point_along(way.points, along + kStep);
     const double facing = angle_of(ahead - point);
-    if (planner.validity().room_to_turn(point) &&
+    if (distance(point, from) > planner.params().goal_tolerance && planner.validity().room_to_turn(point) &&
         !planner.validity().collides(standing_state(point, facing, planner.character())))
       return {point, false};
   }

@@ -372,11 +372,18 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
         return a;
       }
     }
+    // Where it stands cramped (in a gap between boxes) the way on may be
+    // many nodes deep (a side step takes some 140), which a blocked search's
+    // short horizon or stall cuts off: the wish, which settles who makes room
+    // for whom, is searched in full there.
+    const bool tight = cramped(mesh, planner.character(), w.state.com);
+    SearchOptions wish_options = options;
+    if (tight) wish_options.horizon = wish_options.stall = 0;
     const bool same =
-        std::all_of(result.refused_by.begin(), result.refused_by.end(),
-                    [&](std::size_t k) { return goes_first(walkers, now, seen[k], i); });
+        !tight && std::all_of(result.refused_by.begin(), result.refused_by.end(),
+                              [&](std::size_t k) { return goes_first(walkers, now, seen[k], i); });
     const SearchResult wish =
-        same ? result : planner.plan(w.state, target.point, plans_of(walkers, first), options);
+        same ? result : planner.plan(w.state, target.point, plans_of(walkers, first), wish_options);
     const Vec2 from = w.state.com, to = wish.end_state.com;
     const bool gains = distance(to, target.point) < distance(from, target.point) - min_progress;
     const bool leaves_a_wish =

@@ -10,23 +10,25 @@
 namespace footfall::crowd {
 namespace {
 
-/// The nearest places round `state` (in rings 0.75 m apart, up to 2.25 m)
+/// The nearest places round `state` (in rings 0.75 m apart, up to 3.75 m)
 /// where the agent could stand out of `keep_out`, clear of the obstacles and
-/// of the plans of `others`, nearest first (of those on one ring, the one
-/// with the most room round it, from the others where they are now); at most
-/// kAsideTries of them.
+/// of the plans of `others`, nearest first by the way there in steps of a
+/// ring (on the mesh, for the torso circle: out of a gap between boxes the
+/// room may be round its end, and only side-on may it get there; of places as near, the one with the most room round it,
+/// from the others where they are now); at most kAsideTries of them.
 std::vector<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_out,
                              const MovingObstacles& others, const FootstepPlanner& planner,
                              const NavMesh* mesh) {
-  constexpr int kDirections = 16, kRings = 3;
+  constexpr int kDirections = 16, kRings = 5;
   constexpr double kRingStep = 0.75;  // [m]
-  const double half_torso = 0.5 * planner.character().torso_width;
+  constexpr double kDetour = 1.5;     // [m] at most this much longer than the straight line
   std::vector<Vec2> now;
   for (const MovingObstacle& other : others)
     now.push_back(com_at(*other.plan, state.time).position);
   struct Place {
     FootstepState standing;
-    double ring, room;
+    int rings;  // the way there, in rings (rounded up)
+    double room;
   };
   std::vector<Place> places;
   for (int r = 1; r <= kRings; ++r) {
@@ -39,14 +41,19 @@ std::vector<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_out
       FootstepState there = standing_state(point, state.facing, planner.character());
       there.time = state.time;
       if (!planner.validity().room_to_turn(point) || !planner.validity().keeps_out(there, keep_out) ||
-          planner.validity().collides(there) ||
-          (mesh != nullptr && mesh->clearance_between(state.com, point, half_torso) < half_torso))
+          planner.validity().collides(there))
         continue;
-      places.push_back({there, ring, room});
+      int rings = r;
+      if (mesh != nullptr) {
+        const PathResult path = mesh->find_path({state.com, point, planner.character().torso_radius});
+        if (path.status != PathStatus::kFound || path.length > ring + kDetour) continue;
+        rings = static_cast<int>(std::ceil(path.length / kRingStep - 1e-6));
+      }
+      places.push_back({there, rings, room});
     }
   }
   std::stable_sort(places.begin(), places.end(), [](const Place& a, const Place& b) {
-    return a.ring < b.ring || (a.ring == b.ring && a.room > b.room);
+    return a.rings < b.rings || (a.rings == b.rings && a.room > b.room);
   });
   std::vector<FootstepState> states;
   for (const Place& place : places) states.push_back(place.standing);

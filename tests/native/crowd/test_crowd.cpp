@@ -273,6 +273,24 @@ TEST(Crowd, AnAgentStuckAtASlotTooNarrowForItsStepsGoesRound) {
   EXPECT_GT(farthest, 20.0);
 }
 
+// Two agents meet face to face in a gap between two boxes, 4 m deep and a
+// few centimetres wider than the shoulders, each bound through it and on to
+// the side of its far end: neither can pass the other. The room for one to
+// make is out of the gap's end behind it (round the box's corner, where the
+// boxes are staggered, which no place in a straight line from it is), and
+// then it goes in again. Both stayed stuck (as pairs did among 700 boxes).
+TEST(Crowd, TwoMeetingInAGapBetweenBoxesOneBacksOut) {
+  for (const auto& [gap, stagger] : {std::pair{0.62, 0.8}, std::pair{0.66, -1.5}}) {
+    SCOPED_TRACE("gap " + std::to_string(gap));
+    Scenario scenario;
+    scenario.obstacles.push_back(box_obstacle({-1.5 - 0.5 * gap, 0.0}, {3.0, 4.0}));
+    scenario.obstacles.push_back(box_obstacle({1.5 + 0.5 * gap, stagger}, {3.0, 4.0}));
+    scenario.agents.push_back({"north", {0.0, -0.35}, 0.5 * kPi, {{-3.0, 6.0}}});
+    scenario.agents.push_back({"south", {0.0, 0.35}, -0.5 * kPi, {{3.0, -6.0}}});
+    plan_clear_of_each_other(scenario);
+  }
+}
+
 // The crowd's checks take their bounds from PlanBounds, and pass over pairs
 // whose COM boxes keep apart: each must hold what it bounds, or a touch goes
 // unseen; and the bounds from a time hold those from any later time, as a
