@@ -48,6 +48,8 @@ void bind_params(py::module_& m) {
   m.def(
       "validate", [](const PlannerParams& p) { validate(p); },
       "Raises ValueError naming the field and the limit it breaks.", py::arg("params"));
+  m.attr("MOST_SPEED") = kMostSpeed;
+  m.attr("SCALE_RANGE") = py::make_tuple(kLeastScale, kMostScale);
   m.def("parameter_docs", &parameter_docs,
         "docs/parameters.md as the parameter tables give it: every field of every parameter "
         "struct with its unit, valid range, default and meaning.");

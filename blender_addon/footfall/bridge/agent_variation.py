@@ -7,10 +7,8 @@ imported rigs. The same seed and agents draw the same values."""
 import random
 from typing import Dict, Sequence
 
+from ..core import native
 from .scene_extract import AGENT_RIG, AGENT_SCALE, AGENT_SPEED, SceneError, agent_empties
-
-MAX_SPEED = 10.0  # [m/s] the core's bound on a preferred speed
-SCALES = (0.5, 1.6)  # the core's bounds on an agent's scale
 
 
 def randomize(scene, names: Sequence[str], seed: int, speeds: Sequence[float],
@@ -20,13 +18,15 @@ def randomize(scene, names: Sequence[str], seed: int, speeds: Sequence[float],
     given, and sets them on the agents' empties; returns what each agent got.
     Raises SceneError, changing nothing, for no agents or a bad range."""
     low, high = speeds
+    core = native.load()  # the core's bounds, which it checks the agents against
+    most_speed, (least_scale, most_scale) = core.MOST_SPEED, core.SCALE_RANGE
     if not names:
         raise SceneError("No agents selected: select agents (their empties, goals or animated rigs) to vary")
-    if not (0.0 < low <= high <= MAX_SPEED):
-        raise SceneError(f"Speed range {low:g}-{high:g} m/s: needs 0 < lowest <= highest <= {MAX_SPEED:g}")
-    if not (SCALES[0] <= scales[0] <= scales[1] <= SCALES[1]):
-        raise SceneError(f"Size range {scales[0]:g}-{scales[1]:g}: needs {SCALES[0]:g} <= lowest <= highest "
-                         f"<= {SCALES[1]:g}")
+    if not (0.0 < low <= high <= most_speed):
+        raise SceneError(f"Speed range {low:g}-{high:g} m/s: needs 0 < lowest <= highest <= {most_speed:g}")
+    if not (least_scale <= scales[0] <= scales[1] <= most_scale):
+        raise SceneError(f"Size range {scales[0]:g}-{scales[1]:g}: needs {least_scale:g} <= lowest <= highest "
+                         f"<= {most_scale:g}")
     empties = agent_empties(scene)
     draw = random.Random(seed)
     drawn = {}

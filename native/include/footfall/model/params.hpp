@@ -26,6 +26,9 @@ struct FootLimits {
   double max_speed = 2.5;
 };
 
+/// The fastest speed any speed parameter may ask for. [m/s]
+constexpr double kMostSpeed = 10.0;
+
 template <>
 struct ParamTable<FootLimits> {
   using S = FootLimits;
@@ -38,9 +41,9 @@ struct ParamTable<FootLimits> {
             "Shortest COM travel (chord) over a walking step."),
       param("max_step_length", &S::max_step_length, "m", from_field("min_step_length", 3),
             "Longest COM travel (chord) over a walking step."),
-      param("min_speed", &S::min_speed, "m/s", above_up_to(0, 10),
+      param("min_speed", &S::min_speed, "m/s", above_up_to(0, kMostSpeed),
             "Slowest desired COM speed of a walking step."),
-      param("max_speed", &S::max_speed, "m/s", from_field("min_speed", 10),
+      param("max_speed", &S::max_speed, "m/s", from_field("min_speed", kMostSpeed),
             "Fastest desired COM speed of a walking step."));
 };
 
@@ -99,7 +102,7 @@ struct ParamTable<CharacterParams> {
             "Radius of each shoulder circle; its outer edge is at torso_width / 2."),
       param("foot_radius", &S::foot_radius, "m", above_up_to(0, 0.5),
             "Radius of a planted foot's circle."),
-      param("preferred_speed", &S::preferred_speed, "m/s", above_up_to(0, 10),
+      param("preferred_speed", &S::preferred_speed, "m/s", above_up_to(0, kMostSpeed),
             "Speed of a normal step, used by the heuristic."),
       param("preferred_step_duration", &S::preferred_step_duration, "s", above_up_to(0, 5),
             "Duration of a normal step, used by the heuristic."),
@@ -143,7 +146,7 @@ struct ParamTable<Gait> {
   using S = Gait;
   static constexpr const char* name = "Gait";
   static constexpr auto fields =
-      std::make_tuple(param("speed", &S::speed, "m/s", above_up_to(0, 10), "Desired COM speed."),
+      std::make_tuple(param("speed", &S::speed, "m/s", above_up_to(0, kMostSpeed), "Desired COM speed."),
                       param("duration", &S::duration, "s", above_up_to(0, 5), "Step duration."));
 };
 
