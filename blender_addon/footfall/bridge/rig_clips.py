@@ -271,9 +271,16 @@ def choose(rig, bones: Dict[str, object], given: Dict[str, Optional[str]], actio
         else:
             chosen[behavior] = _named(behavior, actions)
     notes = []
+    cycles = {}  # each action's cycle, found once
+
+    def cycle_of(action):
+        if action.name not in cycles:
+            cycles[action.name] = find_cycle(rig, action, bones)
+        return cycles[action.name]
+
     if chosen["walk"] is None:
         free = [a for a in actions if a not in chosen.values()]
-        stepping = [a for a in free if find_cycle(rig, a, bones).source == "feet"]
+        stepping = [a for a in free if cycle_of(a).source == "feet"]
         if len(stepping) == 1:
             chosen["walk"] = stepping[0]
         elif stepping:
@@ -283,7 +290,7 @@ def choose(rig, bones: Dict[str, object], given: Dict[str, Optional[str]], actio
         if action is None:
             notes.append(f"no '{behavior}' clip: a procedural one will be used")
             continue
-        cycle = find_cycle(rig, action, bones)
+        cycle = cycle_of(action)
         first, last = _frame_range(action)
         timed = {"feet": f"right heel strike at {100 * cycle.strike:.0f} % of the cycle, from its feet",
                  "hands": f"right heel strike at {100 * cycle.strike:.0f} % of the cycle, from its hands",
