@@ -50,27 +50,41 @@ constexpr double kWayOutReach[] = {0.5, 1.0, 1.5, 2.0, 3.0};
 constexpr int kWayOutDirections = 16;
 
 /// The way of `radius` for one standing where such a way cannot start (in a
-/// gap between boxes, stuck there): straight out to the nearest place with
-/// that room, in sight for the torso and passing none of `others` (two
-/// stuck face to face in a gap each back out), then on from there; the
-/// shortest such of the nearest places that have one. None within kWayOutReach.
+/// gap between boxes, stuck there): out to a place with that room, passing
+/// none of `others` (two stuck face to face in a gap each back out), then on
+/// from there. Back to `back` (where it last had that room) along the mesh
+/// for the torso circle, if it can; else straight out to the nearest place
+/// in sight, the shortest such of the nearest places that have one. None
+/// within kWayOutReach.
 std::optional<Way> way_out(const NavMesh& mesh, const CharacterParams& character, Vec2 from, Vec2 goal,
-                           double radius, const std::vector<Vec2>& others) {
-  const auto passes_someone = [&](Vec2 exit) {
-    return std::any_of(others.begin(), others.end(), [&](Vec2 other) {
-      return distance_to_segment(other, from, exit) < 2.0 * character.torso_radius;
-    });
+                           double radius, const std::vector<Vec2>& others, std::optional<Vec2> back) {
+  const auto passes_someone = [&](const std::vector<Vec2>& points) {
+    for (std::size_t k = 1; k < points.size(); ++k)
+      for (const Vec2 other : others)
+        if (distance_to_segment(other, points[k - 1], points[k]) < 2.0 * character.torso_radius) return true;
+    return false;
   };
+  // The way from `from` to `exit` (`to_exit`, its points from `from` on), then on.
+  const auto through = [&](std::vector<Vec2> to_exit, double reach) -> std::optional<Way> {
+    PathResult on = mesh.find_path({to_exit.back(), goal, radius, kRouteArcTolerance});
+    if (on.status != PathStatus::kFound) return std::nullopt;
+    to_exit.insert(to_exit.end(), on.points.begin() + 1, on.points.end());
+    return Way{std::move(to_exit), reach + on.length};
+  };
+  if (back && mesh.clearance(*back) >= radius) {
+    PathResult to_back = mesh.find_path({from, *back, character.torso_radius, kRouteArcTolerance});
+    if (to_back.status == PathStatus::kFound && !passes_someone(to_back.points))
+      if (std::optional<Way> way = through(std::move(to_back.points), to_back.length)) return way;
+  }
   for (const double reach : kWayOutReach) {
     std::optional<Way> best;
     for (int k = 0; k < kWayOutDirections; ++k) {
       const Vec2 exit = from + reach * unit(2.0 * kPi * k / kWayOutDirections);
-      if (mesh.clearance(exit) < radius || !in_sight(&mesh, character, from, exit) || passes_someone(exit))
+      if (mesh.clearance(exit) < radius || !in_sight(&mesh, character, from, exit) ||
+          passes_someone({from, exit}))
         continue;
-      PathResult path = mesh.find_path({exit, goal, radius, kRouteArcTolerance});
-      if (path.status != PathStatus::kFound || (best && reach + path.length >= best->length)) continue;
-      path.points.insert(path.points.begin(), from);
-      best = Way{std::move(path.points), reach + path.length};
+      std::optional<Way> way = through({from, exit}, reach);
+      if (way && (!best || way->length < best->length)) best = std::move(way);
     }
     if (best) return best;
   }
@@ -93,7 +107,7 @@ bool cramped(const NavMesh* mesh, const CharacterParams& character, Vec2 at) {
 /// is, however long; from a place too tight to walk upright in, it leads
 /// out of it first (way_out).
 Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal,
-               bool roomy, const std::vector<Vec2>& others) {
+               bool roomy, const std::vector<Vec2>& others, std::optional<Vec2> back) {
   Way way{{from, goal}, distance(from, goal)};
   if (mesh == nullptr) return way;
   const double upright = 0.5 * character.torso_width;
@@ -107,7 +121,7 @@ Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from,
   PathResult roomiest = mesh->find_path({from, goal, upright + kSwayMargin, kRouteArcTolerance});
   if (roomy_enough(roomiest, way.length)) return {std::move(roomiest.points), roomiest.length};
   if (roomy && roomiest.status == PathStatus::kStartBlocked && mesh->clearance(from) < upright) {
-    if (std::optional<Way> out = way_out(*mesh, character, from, goal, upright, others)) return std::move(*out);
+    if (std::optional<Way> out = way_out(*mesh, character, from, goal, upright, others, back)) return std::move(*out);
   }
   PathResult tight = mesh->find_path({from, goal, character.torso_radius, kRouteArcTolerance});
   if (tight.status != PathStatus::kFound) return way;

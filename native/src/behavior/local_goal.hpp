@@ -2,6 +2,7 @@
 // on the navigation mesh, and the local goal along that way.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "footfall/navmesh/navmesh.hpp"
@@ -20,9 +21,12 @@ struct Way {
 /// much longer than the tightest; with no mesh or no path, the straight line.
 /// `roomy`: the roomier of the first two that has a way, however long (else
 /// as above), from a place too tight for either out of it first, not
-/// through any of `others` (where other agents stand).
+/// through any of `others` (where other agents stand): back to `back`, where
+/// the agent last stood with room to walk upright, if given (the way it came
+/// in is one its steps passed), else to the nearest such place in sight.
 Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 goal,
-               bool roomy = false, const std::vector<Vec2>& others = {});
+               bool roomy = false, const std::vector<Vec2>& others = {},
+               std::optional<Vec2> back = std::nullopt);
 
 /// The first `length` metres of `way` (all of it if shorter). [m]
 Way way_start(const Way& way, double length);

@@ -139,7 +139,7 @@ Way way_toward(const Walker& w, const NavMesh* mesh, const CharacterParams& char
   if (w.roomy)
     for (const std::size_t j : seen)
       if (now.present[j]) others.push_back(now.com[j]);
-  return footfall::way_toward(mesh, character, from, goal, w.roomy, others);
+  return footfall::way_toward(mesh, character, from, goal, w.roomy, others, w.roomy_at);
 }
 
 /// Near a narrower section (walking with the arms in, side-stepping) a search
@@ -420,6 +420,19 @@ void wake_near(std::vector<Walker>& walkers, std::size_t i, const Snapshot& now,
   }
 }
 
+/// Keeps the last place its committed steps `a` stand with room to walk
+/// upright (Walker::roomy_at).
+void note_roomy_place(Walker& w, const Attempt& a, const NavMesh* mesh) {
+  if (mesh == nullptr) return;
+  const double upright = 0.5 * w.planner->character().torso_width;
+  for (auto step = a.steps.rbegin(); step != a.steps.rend(); ++step) {
+    if (mesh->clearance(step->com_end) >= upright) {
+      w.roomy_at = step->com_end;
+      return;
+    }
+  }
+}
+
 /// True if agent `i` is stuck: its way has not shortened by min_progress for
 /// kStuckAfter, and neither has that of any agent within kQueueDistance. One
 /// waiting behind others that move is queueing (at a crowded exit, for
@@ -619,7 +632,10 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       const int refused = refusal(walkers, jobs.proposals[k], *w.planner);
       commit(walkers, i, a, jobs.proposals[k], refused, *w.planner, t);
       others.clear();
-      if (w.committed_at == t) wake_near(walkers, i, jobs.at, others);
+      if (w.committed_at == t) {
+        wake_near(walkers, i, jobs.at, others);
+        note_roomy_place(w, a, mesh);
+      }
       if (a.searched) {
         w.ways = std::move(jobs.attempts[k].ways);
         w.searched_at = t;

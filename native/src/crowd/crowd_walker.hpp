@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "crowd/agent_grid.hpp"
@@ -142,6 +143,10 @@ struct Walker {
   double first_way = 0.0;  ///< Way to the current goal when it was first measured. [m]
   double best_way = std::numeric_limits<double>::infinity();  ///< Shortest way left so far. [m]
   double improved_at = 0.0;  ///< Plan time when best_way last shortened by min_progress. [s]
+  /// Where its plan last stood with room to walk upright: stuck in a tight
+  /// place, it backs out toward there (the way it came in, which its steps
+  /// passed).
+  std::optional<Vec2> roomy_at;
   /// Agents a plan of this one's was refused for touching (or for resting
   /// too close to), while they stay within kNoticeDistance: seen or not, its
   /// searches avoid them (it has bumped into them). Without them, an agent

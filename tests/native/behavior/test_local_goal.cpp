@@ -3,6 +3,7 @@
 // and the local goal along it, in sight, where a character can stand.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <limits>
 #include <utility>
@@ -147,6 +148,24 @@ TEST(LocalGoal, ARoomyWayFromInsideATightSlotLeadsOutOfItFirst) {
   const Way ahead = way_toward(&mesh, kCharacter, in_slot, {10, 0}, true, {{4.0, 0.0}});
   ASSERT_GE(ahead.points.size(), 2u);
   EXPECT_GT(ahead.points[1].x, 6.0);
+}
+
+// way_toward: stuck deep in the same slot, nearer its far end, the nearest
+// roomy place is ahead, on through the slot its steps did not pass; given
+// where it last had room to walk upright, it backs out there instead.
+TEST(LocalGoal, ARoomyWayOutOfATightSlotLeadsBackTheWayItCame) {
+  const NavMesh mesh =
+      mesh_of(wall_with_gaps(5.0, 20.0, {{0.0, 0.45}, {16.0, 2.0}}, 2.0), {-2, -20}, {12, 20});
+  const Vec2 in_slot{5.6, 0.0}, came_from{2.5, 0.3};
+  const Way nearest = way_toward(&mesh, kCharacter, in_slot, {10, 0}, true);
+  ASSERT_GE(nearest.points.size(), 2u);
+  EXPECT_GT(nearest.points[1].x, 6.0);
+  const Way back = way_toward(&mesh, kCharacter, in_slot, {10, 0}, true, {}, came_from);
+  ASSERT_GE(back.points.size(), 3u);
+  EXPECT_EQ(back.points.front(), in_slot);
+  const auto at_back = std::find(back.points.begin(), back.points.end(), came_from);
+  ASSERT_NE(at_back, back.points.end());
+  EXPECT_GT(crossing(Way{{at_back, back.points.end()}, 0.0}, 5.0), 15.0);  // round through the far door
 }
 
 // local_goal: the goal itself when the way to it is within local_goal_distance and in sight.
