@@ -172,9 +172,13 @@ class Reader {
   }
 
   // True if an agent facing `facing` can stand at `position`, clear of
-  // obstacles and of the agents placed so far (their radii apart).
+  // obstacles and free to set off from there (wedged against a tree, one
+  // could never step), and clear of the agents placed so far (their radii
+  // apart).
   bool free(Vec2 position, double facing, double radius) const {
-    if (planner_->validity().collides(standing_state(position, facing, scenario_.character))) return false;
+    const FootstepState standing = standing_state(position, facing, scenario_.character);
+    if (planner_->validity().collides(standing) || !planner_->validity().free_to_set_off(standing))
+      return false;
     for (size_t i = 0; i < scenario_.agents.size(); ++i) {
       if (distance(position, scenario_.agents[i].position) < radius + radii_[i]) return false;
     }
