@@ -19,7 +19,9 @@ struct BoxScene {
 };
 
 /// The upright rectangle with corners `lo` and `hi`, counter-clockwise.
-inline std::vector<Vec2> box_between(Vec2 lo, Vec2 hi) { return {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}}; }
+inline std::vector<Vec2> box_between(Vec2 lo, Vec2 hi) {
+  return {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
+}
 
 /// The rectangle of half sides `half` about `centre`, turned by `angle`. [rad]
 inline std::vector<Vec2> box_at(Vec2 centre, Vec2 half, double angle) {

@@ -61,7 +61,8 @@ std::optional<Way> way_out(const NavMesh& mesh, const CharacterParams& character
   const auto passes_someone = [&](const std::vector<Vec2>& points) {
     for (std::size_t k = 1; k < points.size(); ++k)
       for (const Vec2 other : others)
-        if (distance_to_segment(other, points[k - 1], points[k]) < 2.0 * character.torso_radius) return true;
+        if (distance_to_segment(other, points[k - 1], points[k]) < 2.0 * character.torso_radius)
+          return true;
     return false;
   };
   // The way from `from` to `exit` (`to_exit`, its points from `from` on), then on.
@@ -121,7 +122,8 @@ Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from,
   PathResult roomiest = mesh->find_path({from, goal, upright + kSwayMargin, kRouteArcTolerance});
   if (roomy_enough(roomiest, way.length)) return {std::move(roomiest.points), roomiest.length};
   if (roomy && roomiest.status == PathStatus::kStartBlocked && mesh->clearance(from) < upright) {
-    if (std::optional<Way> out = way_out(*mesh, character, from, goal, upright, others, back)) return std::move(*out);
+    if (std::optional<Way> out = way_out(*mesh, character, from, goal, upright, others, back))
+      return std::move(*out);
   }
   PathResult tight = mesh->find_path({from, goal, character.torso_radius, kRouteArcTolerance});
   if (tight.status != PathStatus::kFound) return way;
@@ -168,7 +170,8 @@ LocalGoal local_goal(const FootstepPlanner& planner, const NavMesh* mesh, const 
     const Vec2 point = point_along(way.points, along);
     const Vec2 ahead = point_along(way.points, along + kStep);
     const double facing = angle_of(ahead - point);
-    if (distance(point, from) > planner.params().goal_tolerance && planner.validity().room_to_turn(point) &&
+    if (distance(point, from) > planner.params().goal_tolerance &&
+        planner.validity().room_to_turn(point) &&
         !planner.validity().collides(standing_state(point, facing, planner.character())))
       return {point, false};
   }

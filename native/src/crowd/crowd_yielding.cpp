@@ -14,8 +14,9 @@ namespace {
 /// where the agent could stand out of `keep_out`, clear of the obstacles and
 /// of the plans of `others`, nearest first by the way there in steps of a
 /// ring (on the mesh, for the torso circle: out of a gap between boxes the
-/// room may be round its end, and only side-on may it get there; of places as near, the one with the most room round it,
-/// from the others where they are now); at most kAsideTries of them.
+/// room may be round its end, and only side-on may it get there; of places
+/// as near, the one with the most room round it, from the others where they
+/// are now); at most kAsideTries of them.
 std::vector<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_out,
                              const MovingObstacles& others, const FootstepPlanner& planner,
                              const NavMesh* mesh) {
@@ -45,7 +46,8 @@ std::vector<Vec2> room_aside(const FootstepState& state, const KeepOut& keep_out
         continue;
       int rings = r;
       if (mesh != nullptr) {
-        const PathResult path = mesh->find_path({state.com, point, planner.character().torso_radius});
+        const PathResult path =
+            mesh->find_path({state.com, point, planner.character().torso_radius});
         if (path.status != PathStatus::kFound || path.length > ring + kDetour) continue;
         rings = static_cast<int>(std::ceil(path.length / kRingStep - 1e-6));
       }

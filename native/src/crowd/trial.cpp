@@ -40,7 +40,7 @@ bool Trial::touches(const AgentPlan& other, const PlanBounds& bounds,
   // While the pair is far apart, instants they cannot close the distance
   // in are skipped (most of those checked are never near).
   const auto [closing, near] = reach_to(theirs);
-  // The gap where the trial starts (see touching()).
+  // The gap where the pair last stood still (see touching()).
   double start_gap = std::numeric_limits<double>::infinity();
   const long first = first_contact_instant(from_);
   PlanWalk them_at(other);  // at instants in order
@@ -68,8 +68,11 @@ bool Trial::touches(const AgentPlan& other, const PlanBounds& bounds,
     Gap gap;
     for (int i = 0; i < count; ++i)
       for (int m = 0; m < now.count; ++m) gap.add(now.circles[m], theirs_now[i], pad);
-    if (k == first && standing_still(length(me.velocity), length(them.velocity)))
-      start_gap = gap.outright;
+    // The gap where the pair last stood still, as the search takes it where
+    // each of its steps starts, so that what the search finds passes here: a
+    // pivot may turn a shoulder nearer, and the walk after it sets off from
+    // there.
+    if (standing_still(length(me.velocity), length(them.velocity))) start_gap = gap.outright;
     if (touching(gap, start_gap)) return true;
   }
   return false;

@@ -165,7 +165,8 @@ TEST(LocalGoal, ARoomyWayOutOfATightSlotLeadsBackTheWayItCame) {
   EXPECT_EQ(back.points.front(), in_slot);
   const auto at_back = std::find(back.points.begin(), back.points.end(), came_from);
   ASSERT_NE(at_back, back.points.end());
-  EXPECT_GT(crossing(Way{{at_back, back.points.end()}, 0.0}, 5.0), 15.0);  // round through the far door
+  // Round through the far door.
+  EXPECT_GT(crossing(Way{{at_back, back.points.end()}, 0.0}, 5.0), 15.0);
 }
 
 // local_goal: the goal itself when the way to it is within local_goal_distance and in sight.
