@@ -45,7 +45,6 @@ std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, F
          static_cast<std::uint64_t>(last_foot) << 48 | 1ull << 63;
 }
 
-
 // The search took walking agents' rests to end after their grace; nothing
 // returned may rely on that, so the steps stop before the first that runs
 // into one taken for good.

@@ -146,7 +146,8 @@ struct ParamTable<Gait> {
   using S = Gait;
   static constexpr const char* name = "Gait";
   static constexpr auto fields =
-      std::make_tuple(param("speed", &S::speed, "m/s", above_up_to(0, kMostSpeed), "Desired COM speed."),
+      std::make_tuple(param("speed", &S::speed, "m/s", above_up_to(0, kMostSpeed),
+                            "Desired COM speed."),
                       param("duration", &S::duration, "s", above_up_to(0, 5), "Step duration."));
 };
 
