@@ -273,8 +273,9 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   };
   const double across = wrap_angle(state.facing + outward_sign(stop_foot) * 0.5 * kPi);
   add_side_step(across);
-  const double skew = std::fabs(wrap_angle(goal_angle - across));
-  if (skew > kDuplicateTurn && skew <= kMaxSideStepSkew) add_side_step(goal_angle);
+  const double skew = wrap_angle(goal_angle - across);
+  if (std::fabs(skew) > kDuplicateTurn && std::fabs(skew) < 0.5 * kPi)
+    add_side_step(wrap_angle(across + std::clamp(skew, -kMaxSideStepSkew, kMaxSideStepSkew)));
   // Beside a side-step section's way, squared up to it: a passage barely
   // wider than the side-on body takes the body turned square across it and
   // on its way to within millimetres, which the tabled pivots and the steps

@@ -207,6 +207,24 @@ TEST(Planner, PassesAGapNarrowerThanTheSwingWithTheArmsIn) {
   }
 }
 
+// Issue 32: agent357 of the box field (seed 29) stood side-on, facing the
+// upper wall of a slot 0.45 m wide, 0.16 m short of that wall's end; its goal
+// lay round the corner, 52° off its way across. A side step straight across
+// (toward the lower wall, 0.17 m from its COM a little on) touched it; one
+// aimed at the goal is beyond a side step's skew; no other step fits the
+// slot. A side step toward the goal as far as the skew allows clears both.
+TEST(Planner, SideStepsOutOfASlotTowardAGoalRoundItsEnd) {
+  const auto box = [](double x0, double y0, double x1, double y1) {
+    return prism({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, 1.0);
+  };
+  const std::vector<Obstacle> boxes = {box(-11.886, 4.045, -10.515, 5.036),
+                                       box(-10.948, 3.845, -9.575, 5.057),
+                                       box(-12.829, 5.482, -11.729, 6.952)};
+  const Vec2 goal{-11.31, 5.94};
+  const AgentPlan agent = plan_and_check(one_agent(boxes, {-11.887, 5.225}, 1.51, goal));
+  expect_reached(agent, goal);
+}
+
 TEST(Planner, EnclosedGoalGivesAPartialPlanEndingInStops) {
   // A closed room around the goal: unreachable, though not inside an obstacle.
   const std::vector<Obstacle> room = {
