@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "footfall/fullbody/behavioral_planner.hpp"
 #include "footfall/planner/validity_checker.hpp"
 #include "footfall/scenes/scenes.hpp"
 #include "util/seeded_random.hpp"
@@ -47,10 +48,17 @@ class Room {
 /// Adds `count` agents whose start and goal `draw` returns, drawing again
 /// while the start (facing its goal) does not fit among the starts, or the
 /// goal among the goals (only when `goals_apart`: agents that leave may
-/// share their exit). Every agent leaves at its goal.
+/// share their exit), or, given `ways`, they find no way from the start to
+/// the goal that the body passes, side-stepping where it must (a goal in a
+/// pocket that boxes seal, or that only gaps narrower than the body lead to,
+/// is no workload: nobody could reach it). Every agent leaves at its goal.
 template <typename Draw>
-void add_agents(Scenario& scenario, int count, bool goals_apart, Draw draw) {
+void add_agents(Scenario& scenario, int count, bool goals_apart, Draw draw,
+                BehavioralPlanner* ways = nullptr) {
   Room starts(scenario), goals(scenario);
+  const auto reachable = [&](Vec2 start, Vec2 goal) {
+    return ways == nullptr || ways->plan(start, goal).status == BehaviorPathStatus::kFound;
+  };
   for (int i = 0; i < count; ++i) {
     for (int attempt = 0;; ++attempt) {
       if (attempt == kMaxAttempts)
@@ -58,7 +66,9 @@ void add_agents(Scenario& scenario, int count, bool goals_apart, Draw draw) {
                                     ": the generator's region is too small for the crowd");
       const auto [start, goal] = draw();
       const double facing = angle_of(goal - start);
-      if (!starts.fits(start, facing) || (goals_apart && !goals.fits(goal, facing))) continue;
+      if (!starts.fits(start, facing) || (goals_apart && !goals.fits(goal, facing)) ||
+          !reachable(start, goal))
+        continue;
       starts.keep(start);
       goals.keep(goal);
       scenario.agents.push_back({"agent" + std::to_string(i), start, facing, {goal}, true});
@@ -106,14 +116,22 @@ Scenario box_field_crowd_scenario(int agents, int boxes, std::uint64_t seed) {
   Scenario scenario;
   scenario.obstacles = box_field(boxes, 80.0, seed);
   SeededRandom random(seed + 1);
-  // Each walks 10-20 m in a random direction, within the field.
-  add_agents(scenario, agents, true, [&] {
-    const Vec2 start{random.uniform(-38.0, 38.0), random.uniform(-38.0, 38.0)};
-    Vec2 goal;
-    do goal = start + random.uniform(10.0, 20.0) * unit(random.uniform(-kPi, kPi));
-    while (std::abs(goal.x) > 38.0 || std::abs(goal.y) > 38.0);
-    return std::pair{start, goal};
-  });
+  // Each walks 10-20 m in a random direction, within the field (the mesh
+  // spans the boxes and beyond).
+  NavMesh mesh = navmesh_of(scenario);
+  const CollisionScene scene(scenario.obstacles);
+  const BodyModel body(scenario.character);
+  BehavioralPlanner ways(mesh, scene, body, scenario.planner);
+  add_agents(
+      scenario, agents, true,
+      [&] {
+        const Vec2 start{random.uniform(-38.0, 38.0), random.uniform(-38.0, 38.0)};
+        Vec2 goal;
+        do goal = start + random.uniform(10.0, 20.0) * unit(random.uniform(-kPi, kPi));
+        while (std::abs(goal.x) > 38.0 || std::abs(goal.y) > 38.0);
+        return std::pair{start, goal};
+      },
+      &ways);
   return scenario;
 }
 

@@ -14,6 +14,7 @@
 #include "footfall/plan/motion_check.hpp"
 #include "footfall/plan/plan.hpp"
 #include "footfall/io/plan_file.hpp"
+#include "footfall/fullbody/behavioral_planner.hpp"
 #include "footfall/scenes/scenes.hpp"
 #include "footfall/io/steersuite.hpp"
 #include "model/contact.hpp"
@@ -409,6 +410,23 @@ TEST(Crowd, TableOneWorkloadsAreValidSeededScenes) {
     const double walk = distance(field.agents[i].position, field.agents[i].goals.back());
     EXPECT_GE(walk, 10.0);
     EXPECT_LE(walk, 20.0);
+  }
+}
+
+// Issue 32: among 700 boxes a goal was drawn in a pocket that four boxes
+// seal (seed 89), and a start in one that only gaps narrower than the body
+// side-on lead out of (seed 182): those agents could only ever be stuck.
+// Every agent now has a way to its goal that its body passes.
+TEST(Crowd, EveryGoalAmongBoxesCanBeReached) {
+  for (const int seed : {89, 182}) {
+    const Scenario field = box_field_crowd_scenario(500, 700, seed);
+    NavMesh mesh = navmesh_of(field);
+    const CollisionScene scene(field.obstacles);
+    const BodyModel body(field.character);
+    BehavioralPlanner ways(mesh, scene, body, field.planner);
+    for (const AgentSpec& agent : field.agents)
+      EXPECT_EQ(ways.plan(agent.position, agent.goals.back()).status, BehaviorPathStatus::kFound)
+          << "seed " << seed << ", " << agent.name;
   }
 }
 
