@@ -607,6 +607,10 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
   std::vector<std::uint64_t> changed_at(walkers.size(), 0);
   const auto touch = [&](std::size_t i) { changed_at[i] = epoch; };
   std::vector<char> in_flight(walkers.size(), 0);
+  // Where and when agents leave at their goals: a stuck agent near wakes
+  // then (wake_near() wakes it when one near moves, and one leaving last
+  // moves before it goes).
+  std::vector<std::pair<double, Vec2>> departures;
   std::unique_ptr<TickJobs> pending, current;
   Workers workers(control.threads);  // after what its jobs read: it ends first
   // The tick's results, committed in the agents' order against the walkers
@@ -631,6 +635,8 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       const Attempt& a = jobs.attempts[k];
       const int refused = refusal(walkers, jobs.proposals[k], *w.planner);
       commit(walkers, i, a, jobs.proposals[k], refused, *w.planner, t);
+      if (w.done && w.plan.leaves)
+        departures.emplace_back(w.plan.footsteps.back().end_time, w.plan.footsteps.back().com_end);
       others.clear();
       if (w.committed_at == t) {
         wake_near(walkers, i, jobs.at, others);
@@ -661,7 +667,18 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
   for (long tick = 0;; ++tick) {
     const double t = static_cast<double>(tick) * kTick;
     std::vector<std::size_t> due;
-    bool active = false;
+    const auto gone = std::stable_partition(departures.begin(), departures.end(),
+                                            [&](const auto& d) { return d.first > t; });
+    for (auto d = gone; d != departures.end(); ++d) {
+      for (std::size_t j = 0; j < walkers.size(); ++j) {
+        if (walkers[j].dormant && distance(walkers[j].state.com, d->second) <= kFreezeRadius) {
+          wake(walkers[j], t);
+          touch(j);
+        }
+      }
+    }
+    departures.erase(gone, departures.end());
+    bool active = !departures.empty();
     for (std::size_t i = 0; i < walkers.size(); ++i) {
       if (walkers[i].done || walkers[i].dormant) continue;
       if (!in_flight[i] && t > walkers[i].deadline) {  // it stands where its plan ends
