@@ -299,7 +299,8 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
                               w.blocked >= 1 && jammed ? kBlockedHorizon : 0,
                               kRestGrace,
                               jammed && patient(w, w.state) ? kJamStall : 0,
-                              w.following()};
+                              w.following(),
+                              w.roomy};
   SearchResult result = planner.plan(w.state, target.point, others, options);
   const bool moves =
       std::any_of(result.footsteps.begin(), result.footsteps.end(),

@@ -138,6 +138,7 @@ struct FootstepPlanner::Search {
   planner::detail::KeySet seen;
   detail::SampledAgents others;  // the plans the search avoids
   std::optional<WholeBody> whole;  // the full-body checks, if any
+  bool fine_pivots = false;        // SearchOptions::fine_pivots
   int generated = 0;
 
   void push(Node node, double weight) {
@@ -263,10 +264,14 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
     if (turn != 0.0 && !state.standing()) break;
     add_stop(wrap_angle(state.facing + turn));
   }
+  if (search.fine_pivots && state.standing())
+    for (const double turn : {0.5 * kPivotTurn, -0.5 * kPivotTurn})
+      add_stop(wrap_angle(state.facing + turn));
   // And the side steps (the foot that stepped last trails): straight across,
-  // and toward the goal if it lies within the skew a side step allows (as the
-  // goal-directed phi of a walk: a crowd's way through a gap narrower than the
-  // shoulders leads to a local goal in sight beyond it).
+  // and toward the goal as far as the skew a side step allows, when it lies
+  // on that side (as the goal-directed phi of a walk: a crowd's way through a
+  // gap narrower than the shoulders leads to a local goal in sight beyond it;
+  // out of a slot's end, toward a goal round the corner).
   if (!state.standing()) return;
   const auto add_side_step = [&](double way) {
     add(checks.side_step(state, way), kSideStepSpeed, state.facing);
@@ -349,6 +354,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   search.others.reset(others, character, start.time);
   search.others.set_rest_grace(options.rest_grace);
   search.whole = following;
+  search.fine_pivots = options.fine_pivots;
   search.seen.clear();
   const detail::Heading start_heading = detail::heading_of(start);
   search.seen.insert(state_key(start.com, start_heading.angle, start_heading.speed,

@@ -41,6 +41,12 @@ struct SearchOptions {
   /// side-step section only lateral steps and stops are tried. Must outlive
   /// the search.
   const SectionLookup* sections = nullptr;
+  /// From standing, also pivots of half the smaller tabled pivot (22.5
+  /// degrees) either way: a body side-on in a slot may square up to step out
+  /// only so. For a search the usual pivots left stuck (a crowd's stuck
+  /// agent's second chance); everywhere, they made more agents stuck than
+  /// they freed.
+  bool fine_pivots = false;
 };
 
 /// Result of one footstep search.
