@@ -2,21 +2,44 @@
 // from its start through its goals.
 #pragma once
 
+#include <map>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "crowd/character_planners.hpp"
 #include "footfall/crowd/scenario.hpp"
+#include "footfall/fullbody/behavioral_planner.hpp"
 #include "footfall/fullbody/collision_scene.hpp"
 
 namespace footfall::detail {
 
-/// Plans the annotated way of every agent of `scenario` (its obstacles in
-/// `scene`, each agent's body from `planners`) into agents[i].sections
-/// (agents: the scenario's, in its order): from its start to its first goal,
-/// on to the next, as far as there is a way. Agents that `fixed` (empty, or
-/// one per agent) gives a plan keep that plan's sections.
-void plan_sections(const Scenario& scenario, const CollisionScene& scene,
-                   const CharacterPlanners& planners, std::vector<AgentSpec>& agents,
+/// The full-body planner for each body of a scenario's agents, made when
+/// first asked. Not thread-safe: a query changes its planner's mesh.
+class SectionPlanners {
+ public:
+  /// `scene` and `planners` must outlive it.
+  SectionPlanners(const Scenario& scenario, const CollisionScene& scene,
+                  const CharacterPlanners& planners);
+
+  /// The annotated way of `agent` from `from` through its goals from
+  /// `first_goal` on, joined end to end, as far as there is a way.
+  std::vector<BehaviorSection> plan(const AgentSpec& agent, Vec2 from, std::size_t first_goal);
+
+ private:
+  const Scenario& scenario_;
+  const CollisionScene& scene_;
+  const CharacterPlanners& planners_;
+  // A planner per body. It puts point obstacles into its mesh while it
+  // works: a mesh of its own, not the one the agents share.
+  std::map<const BodyModel*, std::pair<NavMesh, std::unique_ptr<BehavioralPlanner>>> by_body_;
+};
+
+/// Plans the annotated way of every agent (the scenario's, in its order)
+/// into agents[i].sections: from its start to its first goal, on to the
+/// next, as far as there is a way. Agents that `fixed` (empty, or one per
+/// agent) gives a plan keep that plan's sections.
+void plan_sections(SectionPlanners& sections, std::vector<AgentSpec>& agents,
                    const std::vector<const AgentPlan*>& fixed);
 
 }  // namespace footfall::detail

@@ -73,12 +73,15 @@ void check_agent(const AgentSpec& agent) {
   }
 }
 
-/// An agent's annotated way split at its goals (the sections end each leg
-/// exactly at its goal).
-std::vector<std::vector<Vec2>> guides_of(const AgentSpec& agent) {
+/// An agent's annotated way from its goal `first` on (`sections`), split at
+/// its goals (the sections end each leg exactly at its goal); the legs
+/// before `first` are empty.
+std::vector<std::vector<Vec2>> guides_of(const AgentSpec& agent,
+                                         const std::vector<BehaviorSection>& sections,
+                                         std::size_t first) {
   std::vector<std::vector<Vec2>> guides(agent.goals.size());
-  std::size_t leg = 0;
-  for (const BehaviorSection& section : agent.sections) {
+  std::size_t leg = first;
+  for (const BehaviorSection& section : sections) {
     for (const Vec2 p : section.points) {
       if (leg >= guides.size()) break;
       if (guides[leg].empty() || !(guides[leg].back() == p)) guides[leg].push_back(p);
@@ -89,6 +92,20 @@ std::vector<std::vector<Vec2>> guides_of(const AgentSpec& agent) {
     }
   }
   return guides;
+}
+
+/// Gives stuck walker w (agent i) its way annotated anew from where it
+/// stands (`annotate`), to follow from now on. Its steps so far keep their
+/// sections: the lookup holds both.
+void annotate_anew(Walker& w, std::size_t i, const Annotator& annotate,
+                   const PlannerParams& params) {
+  std::vector<BehaviorSection> fresh = annotate(i, w.state.com, w.goal);
+  const SectionLookup lookup(fresh);
+  if (params.follow_sections == 1 && lookup.any_narrower())
+    w.guides = guides_of(*w.spec, fresh, w.goal);
+  std::vector<BehaviorSection> both = w.sections->sections();
+  both.insert(both.end(), fresh.begin(), fresh.end());
+  w.sections = std::make_shared<const SectionLookup>(std::move(both));
 }
 
 /// The annotated way to the goal from `from`: from the nearest point of the
@@ -565,7 +582,8 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
 std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
                                    const std::vector<const FootstepPlanner*>& planners,
                                    const NavMesh* mesh, const RunControl& control,
-                                   const std::vector<const AgentPlan*>& fixed) {
+                                   const std::vector<const AgentPlan*>& fixed,
+                                   const Annotator& annotate) {
   if (planners.size() != agents.size() ||
       std::find(planners.begin(), planners.end(), nullptr) != planners.end())
     throw std::invalid_argument("plan_agents: give one planner per agent");
@@ -584,7 +602,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     w.planner = planners[i];
     w.sections = std::make_shared<const SectionLookup>(agents[i].sections);
     if (params.follow_sections == 1 && w.sections->any_narrower())
-      w.guides = guides_of(agents[i]);
+      w.guides = guides_of(agents[i], agents[i].sections, 0);
     w.plan.name = agents[i].name;
     // Every plan carries its character while the crowd plans (the others
     // check against it), its planner's: not owned, it outlives the run.
@@ -656,6 +674,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       if (!w.done && stuck(walkers, i)) {
         if (!w.roomy) {
           take_roomy_ways(w, t);
+          if (annotate) annotate_anew(w, i, annotate, params);
         } else {
           w.plan.reason = "stuck";
           w.dormant = true;
@@ -789,7 +808,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     for (Footstep& step : w.plan.footsteps)
       step.behavior = std::max(step.behavior, w.sections->of(step));
     w.planner->hold_arms_in(w.plan.footsteps);
-    w.plan.sections = w.spec->sections;
+    w.plan.sections = w.sections->sections();
     w.plan.character = w.spec->character;
     w.plan.scale = w.spec->scale;
     plans.push_back(std::move(w.plan));

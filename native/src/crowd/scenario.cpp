@@ -145,10 +145,14 @@ Plan plan_among(const Scenario& scenario, const RunControl& control,
   plan.character = scenario.character;
   plan.obstacles = scenario.obstacles;
   std::vector<AgentSpec> agents = scenario.agents;
-  detail::plan_sections(scenario, scene, planners, agents, fixed);
+  detail::SectionPlanners sections(scenario, scene, planners);
+  detail::plan_sections(sections, agents, fixed);
   std::vector<const FootstepPlanner*> each;
   for (const AgentSpec& agent : agents) each.push_back(&planners.planner(agent));
-  plan.agents = plan_agents(agents, each, &mesh, control, fixed);
+  const Annotator annotate = [&](std::size_t i, Vec2 from, std::size_t first_goal) {
+    return sections.plan(agents[i], from, first_goal);
+  };
+  plan.agents = plan_agents(agents, each, &mesh, control, fixed, annotate);
   if (control.cancelled()) plan.status = Status::kCancelled;
   return plan;
 }

@@ -109,6 +109,14 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
                                    const FootstepPlanner& planner, const NavMesh* mesh = nullptr,
                                    const RunControl& control = {});
 
+/// The full-body planner's sections for agents[agent] of plan_agents from
+/// `from` through its goals from `first_goal` on, as far as there is a way.
+/// Asked for a stuck agent, which the crowd may have pushed off its
+/// annotated way, into a gap it walks through only with the arms in or
+/// side-stepping.
+using Annotator =
+    std::function<std::vector<BehaviorSection>(std::size_t agent, Vec2 from, std::size_t first_goal)>;
+
 /// The same with a planner per agent: agent i searches with planners[i],
 /// made for its own character (plan_scenario makes one per character), and
 /// every check of one agent's body against another's takes each one's own.
@@ -116,11 +124,13 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
 /// one per agent) gives agent i a plan, the agent keeps that plan as it is:
 /// the others plan among it as among an agent that has finished planning
 /// (it walks its plan, asked to make room by none), and its plan comes back
-/// unchanged.
+/// unchanged. With `annotate`, a stuck agent's second chance (the roomiest
+/// way) also follows its way annotated anew from where it stands.
 std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
                                    const std::vector<const FootstepPlanner*>& planners,
                                    const NavMesh* mesh = nullptr, const RunControl& control = {},
-                                   const std::vector<const AgentPlan*>& fixed = {});
+                                   const std::vector<const AgentPlan*>& fixed = {},
+                                   const Annotator& annotate = {});
 
 /// One agent's walk alone (plan_agents with no one else).
 AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
