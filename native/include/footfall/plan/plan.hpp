@@ -47,8 +47,9 @@ struct AgentPlan {
   int searches = 0;               ///< Footstep searches run.
   long long nodes_generated = 0;  ///< Summed over the searches.
   long long nodes_expanded = 0;   ///< Summed over the searches.
-  /// The annotated way from the start through every goal, joined end to end;
-  /// each footstep's behaviour is that of its section.
+  /// The annotated way from the start through every goal, joined end to end,
+  /// then for an agent stuck in a crowd its way annotated anew from where it
+  /// stood; each footstep's behaviour is that of its section.
   std::vector<BehaviorSection> sections;
   /// The agent's own character, where it has one (a scenario's per-agent
   /// `character`); null: the plan's. Its body is measured with it.
