@@ -245,12 +245,7 @@ TEST(Crowd, BlocksMeetingHeadOnMakeRoomAndPass) {
 TEST(Crowd, AStuckAgentTriesAgainWhenOneNearMoves) {
   Scenario scenario = box_field_crowd_scenario(500, 700, 28);
   scenario.planner.follow_sections = 0;
-  RunControl control;
-  control.threads = 2;
-  const Plan plan = plan_scenario(scenario, control);
-  for (const AgentPlan& agent : plan.agents)
-    EXPECT_EQ(agent.status, AgentStatus::kReached) << agent.name << ": " << agent.reason;
-  EXPECT_EQ(measure_plan(plan).overlaps, 0);
+  const Plan plan = plan_clear_of_each_other(scenario, 2);
   EXPECT_EQ(plan_to_json(plan_scenario(scenario)), plan_to_json(plan));
 }
 
@@ -299,13 +294,7 @@ TEST(Crowd, TwoMeetingInAGapBetweenBoxesOneBacksOut) {
 // with its way annotated from there (arms in through the gap), it walks on at
 // once. Stuck, an agent now annotates its way anew from where it stands.
 TEST(Crowd, AStuckAgentFollowsItsWayAnnotatedAnew) {
-  const Scenario scenario = box_field_crowd_scenario(500, 700, 190);
-  RunControl control;
-  control.threads = 2;
-  const Plan plan = plan_scenario(scenario, control);
-  for (const AgentPlan& agent : plan.agents)
-    EXPECT_EQ(agent.status, AgentStatus::kReached) << agent.name << ": " << agent.reason;
-  EXPECT_EQ(measure_plan(plan).overlaps, 0);
+  plan_clear_of_each_other(box_field_crowd_scenario(500, 700, 190), 2);
 }
 
 // The crowd's checks take their bounds from PlanBounds, and pass over pairs
