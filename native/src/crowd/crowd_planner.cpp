@@ -654,7 +654,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       const Attempt& a = jobs.attempts[k];
       const int refused = refusal(walkers, jobs.proposals[k], *w.planner);
       commit(walkers, i, a, jobs.proposals[k], refused, *w.planner, t);
-      if (w.done && w.plan.leaves)
+      if (w.done && w.plan.leaves && !w.plan.footsteps.empty())
         departures.emplace_back(w.plan.footsteps.back().end_time, w.plan.footsteps.back().com_end);
       others.clear();
       if (w.committed_at == t) {
