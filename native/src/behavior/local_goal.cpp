@@ -36,12 +36,13 @@ Vec2 point_along(const std::vector<Vec2>& points, double along) {
   return points.back();
 }
 
-/// True if the agent at `from` sees `to`: a straight line with room for the
-/// torso circle joins them. A short-horizon search cannot go round a wall to
-/// reach a point behind it.
-bool in_sight(const NavMesh* mesh, const CharacterParams& character, Vec2 from, Vec2 to) {
+/// True if the agent at `from` sees `to`: a straight line with room for a
+/// circle of `radius` (the torso's, grown as the footsteps' checks grow it)
+/// joins them. A short-horizon search cannot go round a wall to reach a
+/// point behind it.
+bool in_sight(const NavMesh* mesh, double radius, Vec2 from, Vec2 to) {
   if (mesh == nullptr) return true;
-  return mesh->clearance_between(from, to, character.torso_radius) >= character.torso_radius;
+  return mesh->clearance_between(from, to, radius) >= radius;
 }
 
 /// Where a way out of a tight place may end: this far from it, nearest first
@@ -81,7 +82,7 @@ std::optional<Way> way_out(const NavMesh& mesh, const CharacterParams& character
     std::optional<Way> best;
     for (int k = 0; k < kWayOutDirections; ++k) {
       const Vec2 exit = from + reach * unit(2.0 * kPi * k / kWayOutDirections);
-      if (mesh.clearance(exit) < radius || !in_sight(&mesh, character, from, exit) ||
+      if (mesh.clearance(exit) < radius || !in_sight(&mesh, character.torso_radius, from, exit) ||
           passes_someone({from, exit}))
         continue;
       std::optional<Way> way = through({from, exit}, reach);
@@ -157,8 +158,11 @@ Way way_start(const Way& way, double length) {
 LocalGoal local_goal(const FootstepPlanner& planner, const NavMesh* mesh, const Way& way) {
   const Vec2 from = way.points.front();
   double reach = std::min(planner.params().local_goal_distance, way.length);
-  while (reach > kMinAhead &&
-         !in_sight(mesh, planner.character(), from, point_along(way.points, reach)))
+  // A moving step's torso is grown by half the sample spacing: a line with
+  // room for the torso alone can lead through a gap no step passes.
+  const double torso =
+      planner.character().torso_radius + 0.5 * planner.params().collision_sample_spacing;
+  while (reach > kMinAhead && !in_sight(mesh, torso, from, point_along(way.points, reach)))
     reach = std::max(kMinAhead, kSightBackOff * reach);
   if (way.length <= reach) return {way.points.back(), true};
   constexpr double kStep = 0.25;  // [m]
