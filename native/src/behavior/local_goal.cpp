@@ -37,8 +37,8 @@ Vec2 point_along(const std::vector<Vec2>& points, double along) {
 }
 
 /// True if the agent at `from` sees `to`: a straight line with room for a
-/// circle of `radius` (the torso's, grown as the footsteps' checks grow it)
-/// joins them. A short-horizon search cannot go round a wall to reach a
+/// circle of `radius` (the torso's, for a local goal grown as the
+/// footsteps' checks grow it) joins them. A short-horizon search cannot go round a wall to reach a
 /// point behind it.
 bool in_sight(const NavMesh* mesh, double radius, Vec2 from, Vec2 to) {
   if (mesh == nullptr) return true;
