@@ -38,8 +38,8 @@ Vec2 point_along(const std::vector<Vec2>& points, double along) {
 
 /// True if the agent at `from` sees `to`: a straight line with room for a
 /// circle of `radius` (the torso's, for a local goal grown as the
-/// footsteps' checks grow it) joins them. A short-horizon search cannot go round a wall to reach a
-/// point behind it.
+/// footsteps' checks grow it) joins them. A short-horizon search cannot go
+/// round a wall to reach a point behind it.
 bool in_sight(const NavMesh* mesh, double radius, Vec2 from, Vec2 to) {
   if (mesh == nullptr) return true;
   return mesh->clearance_between(from, to, radius) >= radius;
@@ -58,7 +58,8 @@ constexpr int kWayOutDirections = 16;
 /// in sight, the shortest such of the nearest places that have one. None
 /// within kWayOutReach.
 std::optional<Way> way_out(const NavMesh& mesh, const CharacterParams& character, Vec2 from, Vec2 goal,
-                           double radius, const std::vector<Vec2>& others, std::optional<Vec2> back) {
+                           double radius, const std::vector<Vec2>& others,
+                           std::optional<Vec2> back) {
   const auto passes_someone = [&](const std::vector<Vec2>& points) {
     for (std::size_t k = 1; k < points.size(); ++k)
       for (const Vec2 other : others)

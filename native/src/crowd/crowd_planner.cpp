@@ -100,9 +100,10 @@ std::vector<std::vector<Vec2>> guides_of(const AgentSpec& agent,
 void annotate_anew(Walker& w, std::size_t i, const Annotator& annotate,
                    const PlannerParams& params) {
   std::vector<BehaviorSection> fresh = annotate(i, w.state.com, w.goal);
-  const SectionLookup lookup(fresh);
-  if (params.follow_sections == 1 && lookup.any_narrower())
-    w.guides = guides_of(*w.spec, fresh, w.goal);
+  const bool narrower = std::any_of(fresh.begin(), fresh.end(), [](const BehaviorSection& s) {
+    return s.behavior != Behavior::kWalk;
+  });
+  if (params.follow_sections == 1 && narrower) w.guides = guides_of(*w.spec, fresh, w.goal);
   std::vector<BehaviorSection> both = w.sections->sections();
   both.insert(both.end(), fresh.begin(), fresh.end());
   w.sections = std::make_shared<const SectionLookup>(std::move(both));
@@ -438,6 +439,31 @@ void wake_near(std::vector<Walker>& walkers, std::size_t i, const Snapshot& now,
   }
 }
 
+/// Where and when an agent leaves at its goal (the end of its last step).
+struct Departure {
+  double time;  ///< [s]
+  Vec2 at;
+};
+
+/// Wakes the dormant agents within kFreezeRadius of where one of
+/// `departures` left by time `t`, and forgets those departures: what held
+/// them may have gone. wake_near() wakes them when one near moves, but one
+/// that leaves moves last before it goes. Those woken go into `woken`.
+void wake_where_gone(std::vector<Walker>& walkers, std::vector<Departure>& departures, double t,
+                     std::vector<std::size_t>& woken) {
+  const auto gone = std::stable_partition(departures.begin(), departures.end(),
+                                          [t](const Departure& d) { return d.time > t; });
+  for (auto d = gone; d != departures.end(); ++d) {
+    for (std::size_t j = 0; j < walkers.size(); ++j) {
+      if (walkers[j].dormant && distance(walkers[j].state.com, d->at) <= kFreezeRadius) {
+        wake(walkers[j], t);
+        woken.push_back(j);
+      }
+    }
+  }
+  departures.erase(gone, departures.end());
+}
+
 /// Keeps the last place its committed steps `a` stand with room to walk
 /// upright (Walker::roomy_at).
 void note_roomy_place(Walker& w, const Attempt& a, const NavMesh* mesh) {
@@ -626,10 +652,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
   std::vector<std::uint64_t> changed_at(walkers.size(), 0);
   const auto touch = [&](std::size_t i) { changed_at[i] = epoch; };
   std::vector<char> in_flight(walkers.size(), 0);
-  // Where and when agents leave at their goals: a stuck agent near wakes
-  // then (wake_near() wakes it when one near moves, and one leaving last
-  // moves before it goes).
-  std::vector<std::pair<double, Vec2>> departures;
+  std::vector<Departure> departures;  // still to come (wake_where_gone())
   std::unique_ptr<TickJobs> pending, current;
   Workers workers(control.threads);  // after what its jobs read: it ends first
   // The tick's results, committed in the agents' order against the walkers
@@ -655,7 +678,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       const int refused = refusal(walkers, jobs.proposals[k], *w.planner);
       commit(walkers, i, a, jobs.proposals[k], refused, *w.planner, t);
       if (w.done && w.plan.leaves && !w.plan.footsteps.empty())
-        departures.emplace_back(w.plan.footsteps.back().end_time, w.plan.footsteps.back().com_end);
+        departures.push_back({w.plan.footsteps.back().end_time, w.plan.footsteps.back().com_end});
       others.clear();
       if (w.committed_at == t) {
         wake_near(walkers, i, jobs.at, others);
@@ -687,17 +710,9 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
   for (long tick = 0;; ++tick) {
     const double t = static_cast<double>(tick) * kTick;
     std::vector<std::size_t> due;
-    const auto gone = std::stable_partition(departures.begin(), departures.end(),
-                                            [&](const auto& d) { return d.first > t; });
-    for (auto d = gone; d != departures.end(); ++d) {
-      for (std::size_t j = 0; j < walkers.size(); ++j) {
-        if (walkers[j].dormant && distance(walkers[j].state.com, d->second) <= kFreezeRadius) {
-          wake(walkers[j], t);
-          touch(j);
-        }
-      }
-    }
-    departures.erase(gone, departures.end());
+    std::vector<std::size_t> woken;
+    wake_where_gone(walkers, departures, t, woken);
+    for (const std::size_t j : woken) touch(j);
     bool active = !departures.empty();
     for (std::size_t i = 0; i < walkers.size(); ++i) {
       if (walkers[i].done || walkers[i].dormant) continue;

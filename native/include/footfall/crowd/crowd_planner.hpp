@@ -114,8 +114,8 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
 /// Asked for a stuck agent, which the crowd may have pushed off its
 /// annotated way, into a gap it walks through only with the arms in or
 /// side-stepping.
-using Annotator =
-    std::function<std::vector<BehaviorSection>(std::size_t agent, Vec2 from, std::size_t first_goal)>;
+using Annotator = std::function<std::vector<BehaviorSection>(std::size_t agent, Vec2 from,
+                                                              std::size_t first_goal)>;
 
 /// The same with a planner per agent: agent i searches with planners[i],
 /// made for its own character (plan_scenario makes one per character), and
