@@ -157,6 +157,7 @@ void commit(std::vector<Walker>& walkers, std::size_t i, const Attempt& a, Propo
   w.start_at = std::max(w.start_at, (a.turned ? w.rested.time : w.state.time) + w.spec->goal_wait);
   w.improved_at = std::max(w.state.time, w.start_at);
   w.roomy = false;
+  w.stuck_times = 0;
 }
 
 }  // namespace footfall::crowd

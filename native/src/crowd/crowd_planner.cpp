@@ -103,7 +103,8 @@ void annotate_anew(Walker& w, std::size_t i, const Annotator& annotate,
   const bool narrower = std::any_of(fresh.begin(), fresh.end(), [](const BehaviorSection& s) {
     return s.behavior != Behavior::kWalk;
   });
-  if (params.follow_sections == 1 && narrower) w.guides = guides_of(*w.spec, fresh, w.goal);
+  if (params.follow_sections == 1 && (narrower || w.stuck_times > 1))
+    w.guides = guides_of(*w.spec, fresh, w.goal);
   std::vector<BehaviorSection> both = w.sections->sections();
   both.insert(both.end(), fresh.begin(), fresh.end());
   w.sections = std::make_shared<const SectionLookup>(std::move(both));
@@ -695,9 +696,14 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       show_wish(walkers, i, jobs.attempts[k], jobs.at, jobs.proposals[k].close, others);
       for (const std::size_t j : others) touch(j);
       if (!w.done && stuck(walkers, i)) {
-        if (!w.roomy) {
+        ++w.stuck_times;
+        if (w.stuck_times == 1) {
           take_roomy_ways(w, t);
           if (annotate) annotate_anew(w, i, annotate, params);
+        } else if (w.stuck_times == 2 && annotate) {
+          take_roomy_ways(w, t);
+          w.roomy = false;
+          annotate_anew(w, i, annotate, params);
         } else {
           w.plan.reason = "stuck";
           w.dormant = true;

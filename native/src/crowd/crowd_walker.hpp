@@ -172,6 +172,7 @@ struct Walker {
   /// Its ways to the current goal are the roomiest there are: it was stuck
   /// once on the usual ones (take_roomy_ways()).
   bool roomy = false;
+  int stuck_times = 0;
   bool done = false;
 
   /// The sections its searches, rests and waits follow (none when it does

@@ -17,6 +17,17 @@ void pose_during(const BodyModel& body, const Footstep& step, double t, BodyPose
     const double fraction = std::clamp((t - step.start_time) / span, 0.0, 1.0);
     const double phase = 0.5 * fraction + (step.foot == Foot::kLeft ? 0.0 : 0.5);
     body.pose_at(step.behavior, phase * body.motion(step.behavior).cycle_duration, pose);
+    // A walk from standing parts the feet over the step: the motion's pose at
+    // its start has a foot a stride behind, where none stands yet (beside a
+    // wall behind, every way out would seem to kick it).
+    if (step.kind != StepKind::kSideStep && step.com_velocity_start == Vec2{0.0, 0.0}) {
+      const BodyPose& standing = body.standing(step.behavior);
+      for (std::size_t c = 0; c < pose.size(); ++c) {
+        pose[c].a = standing[c].a + fraction * (pose[c].a - standing[c].a);
+        pose[c].b = standing[c].b + fraction * (pose[c].b - standing[c].b);
+        pose[c].radius = standing[c].radius + fraction * (pose[c].radius - standing[c].radius);
+      }
+    }
   }
   placement.position = com_at(step, t).position;
   placement.heading = step.behavior == Behavior::kSideStep ? step.phi - 0.5 * kPi : step.phi;

@@ -2,6 +2,7 @@
 #include "footfall/plan/section_lookup.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace footfall {
 
@@ -42,15 +43,43 @@ Behavior SectionLookup::at(Vec2 point) const {
   return found.section ? found.section->behavior : Behavior::kWalk;
 }
 
+namespace {
+
+/// The point `reach` along polyline `points` from `from`, which lies on
+/// the segment ending at points[segment]: forward for a positive reach,
+/// back for a negative one, and no farther than its ends.
+Vec2 along_polyline(const std::vector<Vec2>& points, std::size_t segment, Vec2 from, double reach) {
+  const int step = reach >= 0.0 ? 1 : -1;
+  double left = std::fabs(reach);
+  // The next point in that direction: the segment's end ahead, its start back.
+  long next = step > 0 ? static_cast<long>(segment) : static_cast<long>(segment) - 1;
+  Vec2 at = from;
+  for (; next >= 0 && next < static_cast<long>(points.size()); next += step) {
+    const Vec2 to = points[static_cast<std::size_t>(next)];
+    const double d = distance(at, to);
+    if (d >= left) return left > 0.0 ? at + (left / d) * (to - at) : at;
+    left -= d;
+    at = to;
+  }
+  return at;
+}
+
+}  // namespace
+
 std::optional<WayLine> SectionLookup::side_step_way(Vec2 point) const {
   const Nearest found = nearest(point);
   if (!found.section || found.section->behavior != Behavior::kSideStep) return std::nullopt;
-  const Vec2 a = found.section->points[found.segment - 1], b = found.section->points[found.segment];
-  const double length = distance(a, b);
+  const std::vector<Vec2>& points = found.section->points;
+  const Vec2 a = points[found.segment - 1], b = points[found.segment];
+  const Vec2 nearest = closest_on_segment(point, a, b);
+  // The way's direction over a stretch of it, not its nearest segment's: a
+  // way planned from where the agent stands starts with segments of a few
+  // millimetres, pointing anywhere.
+  const Vec2 chord = along_polyline(points, found.segment, nearest, kWayLineSpan) -
+                     along_polyline(points, found.segment, nearest, -kWayLineSpan);
+  const double length = std::sqrt(dot(chord, chord));
   if (length < 1e-9) return std::nullopt;
-  const Vec2 direction = (1.0 / length) * (b - a);
-  const double along = std::clamp(dot(point - a, direction), 0.0, length);
-  return WayLine{a + along * direction, direction};
+  return WayLine{nearest, (1.0 / length) * chord};
 }
 
 Behavior SectionLookup::along(const Footstep& step) const {

@@ -13,7 +13,13 @@ namespace footfall {
 /// agent aside) has no section: it walks. [m]
 constexpr double kSectionReach = 0.75;
 
-/// A side-step section's way near a place: the line of its nearest segment.
+/// Half the stretch of a side-step section's way whose chord gives the way's
+/// direction at a place (SectionLookup::side_step_way). [m]
+constexpr double kWayLineSpan = 0.25;
+
+/// A side-step section's way near a place: its nearest point, and the
+/// direction of the way's chord from kWayLineSpan before it to kWayLineSpan
+/// after it.
 struct WayLine {
   Vec2 nearest;    ///< The point of the segment nearest the place. [m]
   Vec2 direction;  ///< Unit, from the section's start toward its end.
