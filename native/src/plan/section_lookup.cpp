@@ -66,9 +66,9 @@ Vec2 along_polyline(const std::vector<Vec2>& points, std::size_t segment, Vec2 f
 
 }  // namespace
 
-std::optional<WayLine> SectionLookup::side_step_way(Vec2 point) const {
+std::optional<WayLine> SectionLookup::narrower_way(Vec2 point) const {
   const Nearest found = nearest(point);
-  if (!found.section || found.section->behavior != Behavior::kSideStep) return std::nullopt;
+  if (!found.section || found.section->behavior == Behavior::kWalk) return std::nullopt;
   const std::vector<Vec2>& points = found.section->points;
   const Vec2 a = points[found.segment - 1], b = points[found.segment];
   const Vec2 nearest = closest_on_segment(point, a, b);
@@ -79,7 +79,7 @@ std::optional<WayLine> SectionLookup::side_step_way(Vec2 point) const {
                      along_polyline(points, found.segment, nearest, -kWayLineSpan);
   const double length = std::sqrt(dot(chord, chord));
   if (length < 1e-9) return std::nullopt;
-  return WayLine{nearest, (1.0 / length) * chord};
+  return WayLine{nearest, (1.0 / length) * chord, found.section->behavior};
 }
 
 Behavior SectionLookup::along(const Footstep& step) const {

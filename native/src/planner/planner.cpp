@@ -281,17 +281,21 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   const double skew = wrap_angle(goal_angle - across);
   if (std::fabs(skew) > kDuplicateTurn && std::fabs(skew) < 0.5 * kPi)
     add_side_step(wrap_angle(across + std::clamp(skew, -kMaxSideStepSkew, kMaxSideStepSkew)));
-  // Beside a side-step section's way, squared up to it: a passage barely
-  // wider than the side-on body takes the body turned square across it and
-  // on its way to within millimetres, which the tabled pivots and the steps
-  // toward the goal reach only by chance.
+  // Beside a narrower section's way, squared up to it: a passage barely
+  // wider than the body takes the body turned square to it (across it to
+  // side-step; in an arms-in section along it too, to walk) and on its way
+  // to within millimetres, which the tabled pivots and the steps toward the
+  // goal reach only by chance.
   const std::optional<WayLine> way =
-      search.whole && search.whole->sections ? search.whole->sections->side_step_way(state.com) : std::nullopt;
+      search.whole && search.whole->sections ? search.whole->sections->narrower_way(state.com) : std::nullopt;
   if (!way) return;
-  const double left = wrap_angle(angle_of(way->direction) + 0.5 * kPi - state.facing);
-  const double turn = std::fabs(left) <= 0.5 * kPi ? left : wrap_angle(left - kPi);  // the nearer of the two
-  const double square = wrap_angle(state.facing + turn);
-  if (std::fabs(turn) > kDuplicateTurn) add_stop(square);
+  const double along = angle_of(way->direction);
+  for (const double square : {along + 0.5 * kPi, along}) {
+    if (square == along && way->behavior != Behavior::kArmsIn) break;
+    const double off = wrap_angle(square - state.facing);
+    const double turn = std::fabs(off) <= 0.5 * kPi ? off : wrap_angle(off - kPi);  // the nearer way round
+    if (std::fabs(turn) > kDuplicateTurn) add_stop(wrap_angle(state.facing + turn));
+  }
   // The side step that lands on the way, one side step along it (as near as
   // the skew allows).
   const double travel = 0.5 * kSideStepSpeed * params.stop_duration;

@@ -14,15 +14,16 @@ namespace footfall {
 constexpr double kSectionReach = 0.75;
 
 /// Half the stretch of a side-step section's way whose chord gives the way's
-/// direction at a place (SectionLookup::side_step_way). [m]
+/// direction at a place (SectionLookup::narrower_way). [m]
 constexpr double kWayLineSpan = 0.25;
 
-/// A side-step section's way near a place: its nearest point, and the
+/// A narrower section's way near a place: its nearest point, and the
 /// direction of the way's chord from kWayLineSpan before it to kWayLineSpan
 /// after it.
 struct WayLine {
-  Vec2 nearest;    ///< The point of the segment nearest the place. [m]
+  Vec2 nearest;    ///< The point of the way nearest the place. [m]
   Vec2 direction;  ///< Unit, from the section's start toward its end.
+  Behavior behavior = Behavior::kArmsIn;  ///< The section's: arms_in or side_step.
 };
 
 /// An agent's sections, ready to be asked. Cheap where no section other than
@@ -45,9 +46,9 @@ class SectionLookup {
   /// arms_in for a walking step reaching a side_step section (the narrowest
   /// frontal behaviour).
   Behavior of(const Footstep& step) const;
-  /// The way of the side-step section nearest `point` within kSectionReach,
-  /// if that is the nearest section there.
-  std::optional<WayLine> side_step_way(Vec2 point) const;
+  /// The way of the section nearest `point` within kSectionReach, if that
+  /// section is narrower than walk.
+  std::optional<WayLine> narrower_way(Vec2 point) const;
   const std::vector<BehaviorSection>& sections() const { return sections_; }
 
  private:
