@@ -264,7 +264,9 @@ def test_arms_swing_as_far_as_the_steps_are_fast():
 def test_the_head_and_chest_look_into_a_turn():
     """On the demo the head turns from the hips by the look angle's share
     (the chest's and its own) and the chest's twist at every frame, and
-    ahead of every turn of the body the head is already turned that way."""
+    ahead of every turn of the body that walks (at half its preferred speed
+    or more) the head is already turned that way; standing, the body turns
+    whole, in its pivots."""
     ff, plan = demo_applied()
     rig, profile = imported_rig()
     shares = ff.LOOK_SHARES["chest"] + ff.LOOK_SHARES["head"]
@@ -287,7 +289,9 @@ def test_the_head_and_chest_look_into_a_turn():
             most = max(most, abs(look[i]))
             ahead = facing[min(i + round(0.4 * fps), len(frames) - 1)]  # the body's facing 0.4 s later
             coming = math.remainder(ahead - facing[i], math.tau)
-            if abs(coming) > math.radians(10):
+            speed = math.hypot(*ff.com_at(agent, min((frame - scene.frame_start) / fps, agent.end_time())).velocity)
+            walking = speed >= 0.5 * (agent.character or plan.character).preferred_speed
+            if walking and abs(coming) > math.radians(10):
                 turns += 1
                 leads += turned * coming > 0 and abs(turned) > math.radians(2)
     print(f"head from the hips: at most {math.degrees(worst):.2f} degrees off its share of the look; "

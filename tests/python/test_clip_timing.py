@@ -28,8 +28,19 @@ def test_sections_split_on_behaviour_and_stops():
     assert len(result[0].steps) == 4
 
 
+def test_a_stop_held_arms_in_or_side_on_plays_its_behaviours_clip():
+    """Waiting in a door frame, the arms stay in: the planner tested the stop
+    in that behaviour's standing pose, not idle's."""
+    steps = (walk(2, behavior="arms_in") + [Step(1.0, 1.5, "left", "stop", "arms_in")]
+             + [Step(1.5, 2.0, "right", "side_step", "side_step"), Step(2.0, 2.5, "left", "stop", "side_step")]
+             + [Step(2.5, 3.0, "right", "stop", "walk")])
+    result = sections(steps)
+    assert [s.behavior for s in result] == ["arms_in", "side_step", "idle"]
+    assert [len(s.steps) for s in result] == [3, 2, 1]
+
+
 def test_cross_fades_lie_in_the_section_that_reaches_wider():
-    steps = (walk(2) + walk(2, start=1.0, behavior="arms_in") + [Step(2.0, 2.5, "left", "stop", "arms_in")]
+    steps = (walk(2) + walk(2, start=1.0, behavior="arms_in") + [Step(2.0, 2.5, "left", "stop", "walk")]
              + [Step(2.5, 3.0, "right", "side_step", "side_step")] + walk(2, start=3.0))
     result = sections(steps)
     assert [s.behavior for s in result] == ["walk", "arms_in", "idle", "side_step", "walk"]

@@ -6,7 +6,9 @@ A clip cycle spans two steps (a left and a right). Walking clips are phased so
 that the clip's right heel strike (where its right foot is furthest ahead;
 in the procedural clips and an upper-body clip, its left arm swung furthest
 forward: arms swing opposite to the legs) falls on the plan's right heel
-strikes. A stop and standing still play "idle".
+strikes. A stop and standing still play "idle", except where the planner held
+the arms in or turned the body side-on (it tests a stop there in that
+behaviour's standing pose): there the stop plays its behaviour's clip.
 """
 
 from dataclasses import dataclass
@@ -28,7 +30,7 @@ class Step:
 
 @dataclass(frozen=True)
 class Section:
-    """Consecutive steps of one behaviour (stops are "idle")."""
+    """Consecutive steps playing one clip (clip_of())."""
 
     behavior: str
     start: float
@@ -48,13 +50,17 @@ class StripTiming:
     repeat: float
 
 
+def clip_of(step: Step) -> str:
+    """The clip a step plays: its behaviour's, "idle" for a stop walking."""
+    return "idle" if step.kind == "stop" and step.behavior == "walk" else step.behavior
+
+
 def sections(steps: Sequence[Step]) -> List[Section]:
-    """The steps grouped into runs of one behaviour."""
+    """The steps grouped into runs of one clip."""
     result: List[Section] = []
     run: List[Step] = []
     for step in steps:
-        behavior = "idle" if step.kind == "stop" else step.behavior
-        if run and behavior != (("idle" if run[0].kind == "stop" else run[0].behavior)):
+        if run and clip_of(step) != clip_of(run[0]):
             result.append(_section(run))
             run = []
         run.append(step)
@@ -64,8 +70,7 @@ def sections(steps: Sequence[Step]) -> List[Section]:
 
 
 def _section(run: List[Step]) -> Section:
-    behavior = "idle" if run[0].kind == "stop" else run[0].behavior
-    return Section(behavior, run[0].start, run[-1].end, tuple(run))
+    return Section(clip_of(run[0]), run[0].start, run[-1].end, tuple(run))
 
 
 # How far each behaviour's arms reach across the way, narrowest first: the

@@ -8,8 +8,11 @@ namespace footfall::animate {
 
 namespace {
 
+// A stop plays "idle", but where the planner held the arms in or turned the
+// body side-on (it tests a stop there in that behaviour's standing pose),
+// the stop plays its behaviour's clip: waiting in a door frame, the arms stay in.
 const char* behavior_of(const Footstep& step) {
-  if (step.kind == StepKind::kStop) return "idle";
+  if (step.kind == StepKind::kStop && step.behavior == Behavior::kWalk) return "idle";
   switch (step.behavior) {
     case Behavior::kArmsIn: return "arms_in";
     case Behavior::kSideStep: return "side_step";

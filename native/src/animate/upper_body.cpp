@@ -19,7 +19,8 @@ double body_facing(const AgentPlan& plan, double t) {
   return across;
 }
 
-UpperBodyFollower::UpperBodyFollower(const AgentPlan& plan, double full_speed) : plan_(plan) {
+UpperBodyFollower::UpperBodyFollower(const AgentPlan& plan, double full_speed)
+    : plan_(plan), full_speed_(std::max(full_speed, 1e-9)) {
   for (const Footstep& s : plan.footsteps) {
     if (s.kind != StepKind::kWalk && s.kind != StepKind::kStart) continue;
     const double duration = std::max(s.end_time - s.start_time, 1e-9);
@@ -45,7 +46,13 @@ double UpperBodyFollower::look_at(double t) const {
   double sum = 0;
   for (int k = 1; k <= kLookSamples; ++k)
     sum += wrap_angle(body_facing(plan_, std::min(t + kLookAhead * k / kLookSamples, end)) - now);
-  return std::clamp(sum / kLookSamples, -kMostLook, kMostLook);
+  // A standing body turns whole, in its pivots, as the planner tests it (in
+  // a door frame, a chest turned ahead of them would swing the arms into
+  // it): the look fades with the speed.
+  if (plan_.footsteps.empty()) return 0.0;
+  const double speed = length(com_at(plan_, std::min(t, end)).velocity);
+  const double moving = std::min(1.0, speed / full_speed_);
+  return moving * std::clamp(sum / kLookSamples, -kMostLook, kMostLook);
 }
 
 double UpperBodyFollower::twist_at(double t) const {

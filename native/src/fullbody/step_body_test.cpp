@@ -19,10 +19,12 @@ void pose_during(const BodyModel& body, const Footstep& step, double t, BodyPose
     body.pose_at(step.behavior, phase * body.motion(step.behavior).cycle_duration, pose);
     // A walk from standing parts the feet over the step: the motion's pose at
     // its start has a foot a stride behind, where none stands yet (beside a
-    // wall behind, every way out would seem to kick it).
+    // wall behind, every way out would seem to kick it). The legs go from
+    // the standing pose to the motion's as the feet do; the arms swing as
+    // the animation swings them, with the motion.
     if (step.kind != StepKind::kSideStep && step.com_velocity_start == Vec2{0.0, 0.0}) {
       const BodyPose& standing = body.standing(step.behavior);
-      for (std::size_t c = 0; c < pose.size(); ++c) {
+      for (std::size_t c = static_cast<std::size_t>(Limb::kThighLeft); c < pose.size(); ++c) {
         pose[c].a = standing[c].a + fraction * (pose[c].a - standing[c].a);
         pose[c].b = standing[c].b + fraction * (pose[c].b - standing[c].b);
         pose[c].radius = standing[c].radius + fraction * (pose[c].radius - standing[c].radius);

@@ -87,6 +87,19 @@ TEST(UpperBody, LooksIntoATurnBeforeTheBodyTurns) {
   }
 }
 
+// Standing, the body turns whole in its pivots, as the planner tests it:
+// the chest and head do not turn ahead of them (in a door frame the arms
+// would swing into it). Waiting facing +x, then two pivots toward +y.
+TEST(UpperBody, AStandingBodyDoesNotLookAheadOfItsPivots) {
+  const AgentPlan plan = plan_of({{StepKind::kStop, Foot::kLeft, 0.0, 0.0, 0.5},
+                                  {StepKind::kStop, Foot::kRight, 0.0, 0.0, 0.5},
+                                  {StepKind::kStop, Foot::kLeft, 0.25 * kPi, 0.0, 0.5},
+                                  {StepKind::kStop, Foot::kRight, 0.5 * kPi, 0.0, 0.5}});
+  ASSERT_GT(body_facing(plan, plan.end_time()), 0.7);  // turned, the feet by 45 degrees a pivot
+  const UpperBodyFollower follower(plan, 1.3);
+  for (double t = 0; t <= plan.end_time(); t += 0.05) EXPECT_EQ(follower.look_at(t), 0.0) << t;
+}
+
 TEST(UpperBody, LookIsBoundedInASharpTurn) {
   const AgentPlan plan = turning_plan(4, 8, 0.6);
   const UpperBodyFollower follower(plan, 1.3);

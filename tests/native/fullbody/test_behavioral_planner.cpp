@@ -10,6 +10,7 @@
 #include "footfall/fullbody/body_check.hpp"
 #include "footfall/fullbody/body_model.hpp"
 #include "footfall/fullbody/body_sweep.hpp"
+#include "footfall/fullbody/step_body_test.hpp"
 #include "footfall/plan/section_lookup.hpp"
 #include "footfall/planner/planner.hpp"
 #include "footfall/scenes/behavior_scenes.hpp"
@@ -290,6 +291,38 @@ TEST(BehavioralFootsteps, ADeepPassageBarelyWideEnoughIsSideSteppedThrough) {
       EXPECT_EQ(check_body(plan).penetrations, 0);
     }
   }
+}
+
+// Seed 128 of the box field: an agent stood side-on, 10 degrees askew, in a
+// gap 0.42 m wide between two boxes, where its annotated way was arms-in
+// along the gap. A side step straight across its askew facing drifts 5 cm
+// toward one box or the other, and neither the tabled pivots nor the steps
+// toward its goal leave a body that fits; squared up to the way (across it,
+// to side-step along it, or along it, to walk) it steps out.
+TEST(BehavioralFootsteps, ABodyAskewInAnArmsInGapSquaresUpToItsWay) {
+  const auto box = [](double x0, double y0, double x1, double y1) {
+    return prism({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, 1.0);
+  };
+  const std::vector<Obstacle> boxes{box(-9.17, 29.845, -7.673, 30.887),
+                                    box(-9.225, 31.308, -8.393, 32.539)};
+  BehaviorSection gap;
+  gap.behavior = Behavior::kArmsIn;
+  gap.points = {{-8.2, 31.098}, {-9.4, 31.098}};
+  gap.length = 1.2;
+  const SectionLookup sections({gap});
+  const CharacterParams character;
+  const BodyModel body(character);
+  const CollisionScene scene(boxes);
+  const StepBodyTest test(scene, body, 30);
+  const ObstacleMap map(boxes);
+  const FootstepPlanner planner(character, PlannerParams{}, map, &test);
+  FootstepState start = standing_state({-8.888, 31.116}, -1.73, character);
+  start.before_first_step = false;
+  SearchOptions options;
+  options.sections = &sections;
+  const SearchResult result = planner.plan(start, {-10.35, 30.78}, {}, options);
+  EXPECT_EQ(result.status, Status::kSuccess);
+  EXPECT_LT(result.end_state.com.x, -9.3);  // out of the gap
 }
 
 // A walking step that passes a waist-high box closely holds the arms in when

@@ -12,10 +12,11 @@
 namespace footfall {
 namespace {
 
-/// How far the pose reaches behind its root (along -x). [m]
-double reach_behind(const BodyPose& pose) {
+/// How far the pose's legs reach behind its root (along -x). [m]
+double legs_behind(const BodyPose& pose) {
   double behind = 0.0;
-  for (const Capsule& c : pose) behind = std::max({behind, c.radius - c.a.x, c.radius - c.b.x});
+  for (std::size_t c = static_cast<std::size_t>(Limb::kThighLeft); c < pose.size(); ++c)
+    behind = std::max({behind, pose[c].radius - pose[c].a.x, pose[c].radius - pose[c].b.x});
   return behind;
 }
 
@@ -30,9 +31,10 @@ Footstep first_step(const CharacterParams& character) {
   return walk.footsteps.at(0);
 }
 
-// A walk from standing starts from the standing pose, as its feet do; the
-// motion's mid-stride pose at its start would reach a foot a stride behind,
-// into a wall the character stands with its back to.
+// A walk from standing starts with the standing pose's legs, as its feet
+// do; the motion's mid-stride pose at its start would reach a foot a stride
+// behind, into a kerb the character stands with its back to. (Its arms
+// swing with the motion from the start, as the animation swings them.)
 TEST(StepBodyTest, AWalkFromStandingStartsFromTheStandingPose) {
   const CharacterParams character;
   const BodyModel body(character);
@@ -45,21 +47,22 @@ TEST(StepBodyTest, AWalkFromStandingStartsFromTheStandingPose) {
   BodyPose pose;
   GroundPlacement placement;
   pose_during(body, from_standing, from_standing.start_time, pose, placement);
-  const double standing_reach = reach_behind(body.standing(Behavior::kWalk));
-  EXPECT_DOUBLE_EQ(reach_behind(pose), standing_reach);
+  const double standing_reach = legs_behind(body.standing(Behavior::kWalk));
+  EXPECT_DOUBLE_EQ(legs_behind(pose), standing_reach);
   pose_during(body, mid_stride, mid_stride.start_time, pose, placement);
-  const double stride_reach = reach_behind(pose);
+  const double stride_reach = legs_behind(pose);
   ASSERT_GT(stride_reach, standing_reach + 0.1);
   // Both end in the motion's pose.
   BodyPose end_from_standing, end_mid_stride;
   pose_during(body, from_standing, from_standing.end_time, end_from_standing, placement);
   pose_during(body, mid_stride, mid_stride.end_time, end_mid_stride, placement);
-  EXPECT_DOUBLE_EQ(reach_behind(end_from_standing), reach_behind(end_mid_stride));
+  EXPECT_DOUBLE_EQ(legs_behind(end_from_standing), legs_behind(end_mid_stride));
 
-  // A waist-high wall across, behind the character, between the two reaches.
+  // A kerb across, behind the character, between the two reaches, below
+  // the hands.
   const double wall = -0.5 * (standing_reach + stride_reach);
   const std::vector<Obstacle> obstacles{
-      prism({{wall - 0.5, -2.0}, {wall, -2.0}, {wall, 2.0}, {wall - 0.5, 2.0}}, 1.0)};
+      prism({{wall - 0.5, -2.0}, {wall, -2.0}, {wall, 2.0}, {wall - 0.5, 2.0}}, 0.3)};
   const CollisionScene scene(obstacles);
   const StepBodyTest test(scene, body, 30);
   EXPECT_FALSE(test.hits(from_standing));

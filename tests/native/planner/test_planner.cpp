@@ -238,8 +238,9 @@ TEST(Planner, EnclosedGoalGivesAPartialPlanEndingInStops) {
   ASSERT_FALSE(agent.footsteps.empty());
   EXPECT_EQ(agent.footsteps.back().kind, StepKind::kStop);
   EXPECT_LE(agent.nodes_expanded, static_cast<long long>(agent.searches) * 300);
-  // Stuck twice (15 s each): on its way, then on the roomiest (the same line).
-  EXPECT_LT(agent.end_time(), 45.0);
+  // Stuck three times (15 s each): on its way, on the roomiest (the same
+  // line), and on its way annotated anew from where it stands.
+  EXPECT_LT(agent.end_time(), 60.0);
 }
 
 /// The height at which the COM path of `agent` crosses the line x = `x`, for

@@ -33,7 +33,8 @@ class UpperBodyFollower {
   /// middle.
   double swing_at(double t) const;
   /// The look angle at `t` [rad, counter-clockwise]: from the body's facing
-  /// to its mean facing over the next kLookAhead, within kMostLook.
+  /// to its mean facing over the next kLookAhead, within kMostLook, times
+  /// the COM's speed over `full_speed` (at most 1): none standing.
   double look_at(double t) const;
   /// The chest's twist at `t` [rad, counter-clockwise]: from the body's
   /// facing (between the feet) to the heading the planner tested the body
@@ -44,6 +45,7 @@ class UpperBodyFollower {
 
  private:
   const AgentPlan& plan_;
+  double full_speed_;
   std::vector<double> swing_times_, swings_;  ///< per walking step: its middle, its share
 };
 
