@@ -95,7 +95,8 @@ std::vector<std::vector<Vec2>> guides_of(const AgentSpec& agent,
 }
 
 /// Gives stuck walker w (agent i) its way annotated anew from where it
-/// stands (`annotate`), to follow from now on. Its steps so far keep their
+/// stands (`annotate`), to follow from now on: where it is narrower than
+/// walk, or on its third chance, whatever it is. Its steps so far keep their
 /// sections: the lookup holds both.
 void annotate_anew(Walker& w, std::size_t i, const Annotator& annotate,
                    const PlannerParams& params) {
@@ -497,17 +498,17 @@ bool stuck(const std::vector<Walker>& walkers, std::size_t i) {
   return true;
 }
 
-/// A stuck agent (stuck()) tries once more, for another kStuckAfter, on the
-/// roomiest way there is (way_toward()). The tightest way, with room only to
-/// side-step, passes any gap the torso's circle fits through, but the
-/// footsteps need more (their checks pad the torso, and it turns at the
-/// corners): a slot a little wider than the torso's circle may let no step
-/// through. Its next search is news (nothing_new()).
-void take_roomy_ways(Walker& w, double t) {
-  w.roomy = true;
+/// A stuck agent (stuck()) tries again, for another kStuckAfter: its way
+/// is measured anew (a way round may be longer than the one it was stuck
+/// on, and still gain), and its next search is news (nothing_new()).
+/// `roomy`: on the roomiest way there is (way_toward()). The tightest way,
+/// with room only to side-step, passes any gap the torso's circle fits
+/// through, but the footsteps need more (their checks pad the torso, and it
+/// turns at the corners): a slot a little wider than the torso's circle may
+/// let no step through.
+void try_again(Walker& w, double t, bool roomy) {
+  w.roomy = roomy;
   w.ways.clear();
-  // Its way is measured anew: a way round may be longer than the one it
-  // was stuck on, and still gain.
   w.best_way = std::numeric_limits<double>::infinity();
   w.improved_at = w.state.time;
   w.news_at = t;
@@ -696,13 +697,14 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       show_wish(walkers, i, jobs.attempts[k], jobs.at, jobs.proposals[k].close, others);
       for (const std::size_t j : others) touch(j);
       if (!w.done && stuck(walkers, i)) {
+        // Its second chance on the roomiest way, its third on its way
+        // annotated anew from where it stands (annotate_anew()).
         ++w.stuck_times;
         if (w.stuck_times == 1) {
-          take_roomy_ways(w, t);
+          try_again(w, t, true);
           if (annotate) annotate_anew(w, i, annotate, params);
         } else if (w.stuck_times == 2 && annotate) {
-          take_roomy_ways(w, t);
-          w.roomy = false;
+          try_again(w, t, false);
           annotate_anew(w, i, annotate, params);
         } else {
           w.plan.reason = "stuck";

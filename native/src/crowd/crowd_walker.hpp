@@ -170,8 +170,10 @@ struct Walker {
   /// until one near it moves on or asks it to make room (wake()).
   bool dormant = false;
   /// Its ways to the current goal are the roomiest there are: it was stuck
-  /// once on the usual ones (take_roomy_ways()).
+  /// once on the usual ones (try_again()).
   bool roomy = false;
+  /// Times it counted as stuck on its way to the current goal: after the
+  /// third it sleeps (plan_agents()).
   int stuck_times = 0;
   bool done = false;
 

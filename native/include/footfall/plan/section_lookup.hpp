@@ -13,7 +13,7 @@ namespace footfall {
 /// agent aside) has no section: it walks. [m]
 constexpr double kSectionReach = 0.75;
 
-/// Half the stretch of a side-step section's way whose chord gives the way's
+/// Half the stretch of a narrower section's way whose chord gives the way's
 /// direction at a place (SectionLookup::narrower_way). [m]
 constexpr double kWayLineSpan = 0.25;
 
