@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <iomanip>
 #include <limits>
 #include <string>
@@ -104,6 +105,29 @@ void run_bench(int repeat, std::ostream& out) {
         << 1000.0 * median / std::max(1.0, steps / plans) << "\n";
   }
   out << "(" << repeat << " timed runs per plan; one core; plans start standing)\n";
+}
+
+void run_box_field_seeds(int first, int last, int threads, std::ostream& out) {
+  int short_of_goal = 0;
+  for (int seed = first; seed <= last; ++seed) {
+    RunControl control;
+    control.threads = threads;
+    const auto begin = std::chrono::steady_clock::now();
+    const Plan plan = plan_scenario(box_field_crowd_scenario(500, 700, static_cast<std::uint64_t>(seed)), control);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    int reached = 0;
+    for (const AgentPlan& agent : plan.agents) reached += agent.status == AgentStatus::kReached ? 1 : 0;
+    out << "seed " << seed << ": " << reached << " of " << plan.agents.size() << " reached ("
+        << std::fixed << std::setprecision(1) << seconds << " s)\n";
+    for (const AgentPlan& agent : plan.agents) {
+      if (agent.status == AgentStatus::kReached) continue;
+      ++short_of_goal;
+      out << "  " << agent.name << ": " << agent.reason << " at (" << std::setprecision(2)
+          << agent.stuck_at.x << ", " << agent.stuck_at.y << ")\n";
+    }
+    out.flush();
+  }
+  out << short_of_goal << " agent(s) short of their goals over seeds " << first << "-" << last << "\n";
 }
 
 void run_crowd_bench(int threads, int repeat, std::ostream& out) {

@@ -15,6 +15,7 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -65,6 +66,9 @@ const char* const kUsage =
     "       footfall bench --crowds [--threads N] [--repeat N]\n"
     "                                         plan the crowd workloads of the paper's table 1\n"
     "                                         (the fastest of N runs each; default 1)\n"
+    "       footfall bench --box-seeds FIRST-LAST [--threads N]\n"
+    "                                         plan the 500 among 700 boxes for each seed and\n"
+    "                                         list the agents that do not reach their goals\n"
     "       footfall bench --behaviors [--repeat N]\n"
     "                                         time the full-body planner in the random\n"
     "                                         environments (the fastest of N runs; default 5)\n"
@@ -391,6 +395,7 @@ int run(int argc, char** argv) {
   if (verb == "bench") {
     int repeat = 0, threads = 1;  // repeat 0: each kind's default
     bool crowds = false, behaviors = false;
+    std::optional<std::pair<int, int>> box_seeds;
     for (int i = 2; i < argc; ++i) {
       const std::string arg = argv[i];
       if (arg == "--repeat" && i + 1 < argc) {
@@ -401,12 +406,24 @@ int run(int argc, char** argv) {
         crowds = true;
       } else if (arg == "--behaviors") {
         behaviors = true;
+      } else if (arg == "--box-seeds" && i + 1 < argc) {
+        const std::string range = argv[++i];
+        const std::size_t dash = range.find('-');
+        if (dash == std::string::npos)
+          throw UsageError("--box-seeds: give FIRST-LAST, as 1-200, not " + user_text(range));
+        box_seeds = std::pair{parse_whole(arg, range.substr(0, dash), 0, 1000000000),
+                              parse_whole(arg, range.substr(dash + 1), 0, 1000000000)};
+        if (box_seeds->first > box_seeds->second)
+          throw UsageError("--box-seeds: the first seed is after the last: " + user_text(range));
       } else {
         throw UsageError("unknown option or missing value: " + user_text(arg));
       }
     }
-    if (crowds && behaviors) throw UsageError("bench: --crowds or --behaviors, not both");
-    if (behaviors)
+    if (static_cast<int>(crowds) + static_cast<int>(behaviors) + static_cast<int>(box_seeds.has_value()) > 1)
+      throw UsageError("bench: one of --crowds, --behaviors and --box-seeds");
+    if (box_seeds)
+      footfall::tools::run_box_field_seeds(box_seeds->first, box_seeds->second, threads, std::cout);
+    else if (behaviors)
       footfall::tools::run_behavior_bench(repeat > 0 ? repeat : 5, std::cout);
     else if (crowds)
       footfall::tools::run_crowd_bench(threads, repeat > 0 ? repeat : 1, std::cout);

@@ -88,6 +88,9 @@ def test_usage_errors_exit_2(cli):
 @pytest.mark.parametrize("args, message", [
     (["plan", "scene.json"], "plan needs -o PLAN"),
     (["bench", "--repeat", "1abc"], "--repeat: expected a whole number from 1 to 1000000, got '1abc'"),
+    (["bench", "--box-seeds", "200"], "--box-seeds: give FIRST-LAST, as 1-200, not '200'"),
+    (["bench", "--box-seeds", "9-3"], "--box-seeds: the first seed is after the last: '9-3'"),
+    (["bench", "--box-seeds", "1-2", "--crowds"], "bench: one of --crowds, --behaviors and --box-seeds"),
     (["plan", "s.json", "-o", "p.json", "--threads", "99"], "--threads: expected a whole number from 1 to 64, got '99'"),
     (["path", "s.json", "--from", "0,0", "--to", "1e10,0", "--radius", "0.3"],
      "--to: must be within 1e9 m of the origin, got '1e10,0'"),
@@ -155,6 +158,13 @@ def test_bench_prints_every_workload(cli):
     assert result.returncode == 0, result.stderr
     for workload in ("open 10 m", "around a box", "0.7 m door", "field of 700 boxes"):
         assert workload in result.stdout
+
+
+def test_bench_box_seeds_lists_who_falls_short(cli):
+    result = run(cli, "bench", "--box-seeds", "7-7", "--threads", "2")
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.splitlines()[0].startswith("seed 7: 500 of 500 reached (")
+    assert result.stdout.splitlines()[-1] == "0 agent(s) short of their goals over seeds 7-7"
 
 
 def test_metrics_of_the_demo(cli, tmp_path):
