@@ -113,10 +113,13 @@ void run_box_field_seeds(int first, int last, int threads, std::ostream& out) {
     RunControl control;
     control.threads = threads;
     const auto begin = std::chrono::steady_clock::now();
-    const Plan plan = plan_scenario(box_field_crowd_scenario(500, 700, static_cast<std::uint64_t>(seed)), control);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    const Scenario crowd = box_field_crowd_scenario(500, 700, static_cast<std::uint64_t>(seed));
+    const Plan plan = plan_scenario(crowd, control);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     int reached = 0;
-    for (const AgentPlan& agent : plan.agents) reached += agent.status == AgentStatus::kReached ? 1 : 0;
+    for (const AgentPlan& agent : plan.agents)
+      reached += agent.status == AgentStatus::kReached ? 1 : 0;
     out << "seed " << seed << ": " << reached << " of " << plan.agents.size() << " reached ("
         << std::fixed << std::setprecision(1) << seconds << " s)\n";
     for (const AgentPlan& agent : plan.agents) {
@@ -127,7 +130,8 @@ void run_box_field_seeds(int first, int last, int threads, std::ostream& out) {
     }
     out.flush();
   }
-  out << short_of_goal << " agent(s) short of their goals over seeds " << first << "-" << last << "\n";
+  out << short_of_goal << " agent(s) short of their goals over seeds " << first << "-" << last
+      << "\n";
 }
 
 void run_crowd_bench(int threads, int repeat, std::ostream& out) {

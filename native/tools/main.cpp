@@ -13,9 +13,9 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
-#include <optional>
 #include <utility>
 #include <vector>
 
@@ -419,7 +419,9 @@ int run(int argc, char** argv) {
         throw UsageError("unknown option or missing value: " + user_text(arg));
       }
     }
-    if (static_cast<int>(crowds) + static_cast<int>(behaviors) + static_cast<int>(box_seeds.has_value()) > 1)
+    const int kinds = static_cast<int>(crowds) + static_cast<int>(behaviors) +
+                      static_cast<int>(box_seeds.has_value());
+    if (kinds > 1)
       throw UsageError("bench: one of --crowds, --behaviors and --box-seeds");
     if (box_seeds)
       footfall::tools::run_box_field_seeds(box_seeds->first, box_seeds->second, threads, std::cout);

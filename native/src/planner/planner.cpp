@@ -286,14 +286,15 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   // side-step; in an arms-in section along it too, to walk) and on its way
   // to within millimetres, which the tabled pivots and the steps toward the
   // goal reach only by chance.
-  const std::optional<WayLine> way =
-      search.whole && search.whole->sections ? search.whole->sections->narrower_way(state.com) : std::nullopt;
+  const SectionLookup* sections = search.whole ? search.whole->sections : nullptr;
+  const std::optional<WayLine> way = sections ? sections->narrower_way(state.com) : std::nullopt;
   if (!way) return;
   const double along = angle_of(way->direction);
   for (const double square : {along + 0.5 * kPi, along}) {
     if (square == along && way->behavior != Behavior::kArmsIn) break;
     const double off = wrap_angle(square - state.facing);
-    const double turn = std::fabs(off) <= 0.5 * kPi ? off : wrap_angle(off - kPi);  // the nearer way round
+    // The nearer way round.
+    const double turn = std::fabs(off) <= 0.5 * kPi ? off : wrap_angle(off - kPi);
     if (std::fabs(turn) > kDuplicateTurn) add_stop(wrap_angle(state.facing + turn));
   }
   // The side step that lands on the way, one side step along it (as near as

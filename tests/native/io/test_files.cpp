@@ -12,7 +12,7 @@
 namespace footfall {
 namespace {
 
-std::string scenario_error_of(const std::string& text) {
+std::string scene_error(const std::string& text) {
   try {
     parse_scenario(text, "scene.json");
   } catch (const std::invalid_argument& e) {
@@ -61,58 +61,59 @@ TEST(ScenarioFile, AScenarioWithoutAgentsIsValid) {
 
 TEST(ScenarioFile, BadInputIsNamedByFileAndField) {
   const std::string agent = R"("agents": [{"position": [0, 0], "goals": [[5, 0]]}])";
-  EXPECT_EQ(scenario_error_of("{\"format\": "),
+  EXPECT_EQ(scene_error("{\"format\": "),
             "scene.json: not valid JSON: parse error at line 1, column 12: "
             "syntax error while parsing value - unexpected end of input; expected "
             "'[', '{', or a literal");
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("agents": [{"position": [0, "x"], "goals": [[5, 0]]}])")),
+  EXPECT_EQ(scene_error(scenario_text(R"("agents": [{"position": [0, "x"], "goals": [[5, 0]]}])")),
             "scene.json: agents[0].position[1]: expected a number, got string");
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("agents": [{"position": [NaN, 0], "goals": [[5, 0]]}])")),
+  EXPECT_EQ(scene_error(scenario_text(R"("agents": [{"position": [NaN, 0], "goals": [[5, 0]]}])")),
             "scene.json: agents[0].position[0]: must be a finite number, got NaN");
   EXPECT_EQ(
-      scenario_error_of(scenario_text(R"("agents": [{"position": [0, 0], "goals": [[-Infinity, 0]]}])")),
+      scene_error(scenario_text(R"("agents": [{"position": [0, 0], "goals": [[-Infinity, 0]]}])")),
       "scene.json: agents[0].goals[0][0]: must be a finite number, got -Infinity");
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("obstacles": [{"polygon": [[0, 0], [1, 0]]}])")),
+  EXPECT_EQ(scene_error(scenario_text(R"("obstacles": [{"polygon": [[0, 0], [1, 0]]}])")),
             "scene.json: obstacles[0].polygon: needs at least 3 points, got 2");
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("obstacles": [{"polygon": [[-1, -1], [1, -1], [1, 1]]}], )" +
-                                   agent)),
+  EXPECT_EQ(scene_error(scenario_text(
+                R"("obstacles": [{"polygon": [[-1, -1], [1, -1], [1, 1]]}], )" + agent)),
             "scene.json: agents[0].position: the standing agent overlaps obstacles[0]");
-  EXPECT_EQ(scenario_error_of(scenario_text(
+  EXPECT_EQ(scene_error(scenario_text(
                 R"("obstacles": [{"polygon": [[4, -1], [6, -1], [6, 1], [4, 1]]}], )" + agent)),
             "scene.json: agents[0].goals[0]: inside obstacles[0]");
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("character": {"speed": 1.0})")),
+  EXPECT_EQ(scene_error(scenario_text(R"("character": {"speed": 1.0})")),
             "scene.json: character.speed: unknown field");
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("planner": {"horizon": 10})")),
+  EXPECT_EQ(scene_error(scenario_text(R"("planner": {"horizon": 10})")),
             "scene.json: planner.horizon: unknown field");
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("character": {"mass": -3})")),
+  EXPECT_EQ(scene_error(scenario_text(R"("character": {"mass": -3})")),
             "scene.json: character.mass: must be in (0, 500], got -3");
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("agents": [{"position": [0, 0], "goals": []}])")),
+  EXPECT_EQ(scene_error(scenario_text(R"("agents": [{"position": [0, 0], "goals": []}])")),
             "scene.json: agents[0].goals: needs at least one goal");
-  EXPECT_EQ(scenario_error_of(scenario_text(
+  EXPECT_EQ(scene_error(scenario_text(
                 R"("agents": [{"position": [0, 0], "goals": [[5, 0]], "leave_at_goal": 1}])")),
             "scene.json: agents[0].leave_at_goal: expected true or false, got number");
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("agents": [{"position": [0, 0]}])")),
+  EXPECT_EQ(scene_error(scenario_text(R"("agents": [{"position": [0, 0]}])")),
             "scene.json: agents[0].goals: missing");
-  EXPECT_EQ(scenario_error_of(R"({"format": "footfall-plan", "version": 1})"),
+  EXPECT_EQ(scene_error(R"({"format": "footfall-plan", "version": 1})"),
             "scene.json: format: expected \"footfall-scenario\", got 'footfall-plan'");
-  EXPECT_EQ(scenario_error_of(R"({"format": "footfall-scenario", "version": 2})"),
+  EXPECT_EQ(scene_error(R"({"format": "footfall-scenario", "version": 2})"),
             "scene.json: version: unsupported version 2 (this Footfall reads version 1)");
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("agents": {})")),
+  EXPECT_EQ(scene_error(scenario_text(R"("agents": {})")),
             "scene.json: agents: expected an array, got object");
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("extra": 1)")), "scene.json: extra: unknown field");
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("planner": {"max_expansions": 18446744073709551615})")),
+  EXPECT_EQ(scene_error(scenario_text(R"("extra": 1)")), "scene.json: extra: unknown field");
+  EXPECT_EQ(scene_error(scenario_text(R"("planner": {"max_expansions": 18446744073709551615})")),
             "scene.json: planner.max_expansions: too large");
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("planner": {"stall_expansions": -1})")),
+  EXPECT_EQ(scene_error(scenario_text(R"("planner": {"stall_expansions": -1})")),
             "scene.json: planner.stall_expansions: must be in [0, 1000000], got -1");
   // A NaN before a syntax error does not move the error's reported position.
-  const std::string plain = scenario_error_of("{\"a\": [1, 2,\n  1 2]}");
-  const std::string with_nan = scenario_error_of("{\"a\": [NaN, 2,\n  1 2]}");
+  const std::string plain = scene_error("{\"a\": [1, 2,\n  1 2]}");
+  const std::string with_nan = scene_error("{\"a\": [NaN, 2,\n  1 2]}");
   EXPECT_NE(plain.find("line 2, column 5"), std::string::npos) << plain;
   EXPECT_NE(with_nan.find("line 2, column 5"), std::string::npos) << with_nan;
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("obstacles": [{"polygon": [[0, 0], [1e300, 0], [0, 1]]}])")),
+  EXPECT_EQ(scene_error(
+                scenario_text(R"("obstacles": [{"polygon": [[0, 0], [1e300, 0], [0, 1]]}])")),
             "scene.json: obstacles[0].polygon[1]: coordinates must be finite numbers within 1e9 m "
             "of the origin");
-  EXPECT_EQ(scenario_error_of(scenario_text(R"("agents": [{"position": [0, 0], "goals": [[0, -2e9]]}])")),
+  EXPECT_EQ(scene_error(scenario_text(R"("agents": [{"position": [0, 0], "goals": [[0, -2e9]]}])")),
             "scene.json: agents[0].goals[0]: must be finite and within 1e9 m of the origin");
 }
 
@@ -150,7 +151,7 @@ TEST(ScenarioFile, ObstaclesHaveABaseOrAMesh) {
 
 TEST(ScenarioFile, BadThreeDimensionalObstaclesAreNamed) {
   const auto obstacle = [](const std::string& json) {
-    return scenario_error_of(scenario_text(R"("obstacles": [)" + json + "]"));
+    return scene_error(scenario_text(R"("obstacles": [)" + json + "]"));
   };
   EXPECT_EQ(obstacle(R"({"polygon": [[0, 0], [1, 0], [1, 1]], "base": 2, "height": 1})"),
             "scene.json: obstacles[0].base: must be in [0, height) = [0, 1.000000), got 2.000000");

@@ -15,7 +15,7 @@ namespace {
 
 const std::filesystem::path kCases = FOOTFALL_STEERSUITE_DIR;
 
-std::string steersuite_error_of(const std::string& text) {
+std::string case_error(const std::string& text) {
   try {
     parse_steersuite(text, "case.xml");
   } catch (const std::invalid_argument& e) {
@@ -104,8 +104,8 @@ TEST(SteerSuite, GoalDurationsAreTheAgentsTimeBudget) {
   EXPECT_DOUBLE_EQ(parse_steersuite(test_case(kAgent), "case.xml").agents[0].time_limit, 0.0);
   std::string timed = kAgent;
   timed.insert(timed.find("</seekStaticTarget>"), "<timeDuration>-5</timeDuration>");
-  EXPECT_NE(steersuite_error_of(test_case(timed)).find("timeDuration: must be positive"), std::string::npos)
-      << steersuite_error_of(test_case(timed));
+  EXPECT_NE(case_error(test_case(timed)).find("timeDuration: must be positive"), std::string::npos)
+      << case_error(test_case(timed));
 }
 
 TEST(SteerSuite, RandomRegionsAreSeededAndFree) {
@@ -155,21 +155,21 @@ TEST(SteerSuite, RandomAgentsAmongTreesCanSetOff) {
 }
 
 TEST(SteerSuite, BadInputIsNamed) {
-  EXPECT_EQ(steersuite_error_of("<SteerBenchTestCase><agent>"),
+  EXPECT_EQ(case_error("<SteerBenchTestCase><agent>"),
             "case.xml: not valid XML: Start-end tags mismatch at line 1, column 27");
-  EXPECT_EQ(steersuite_error_of("<other/>"),
+  EXPECT_EQ(case_error("<other/>"),
             "case.xml: not a SteerSuite test case (no SteerBenchTestCase element)");
   std::string bad = kAgent;
   bad.replace(bad.find("<x>-10</x>"), 10, "<x>abc</x>");
-  EXPECT_EQ(steersuite_error_of(test_case(bad)),
+  EXPECT_EQ(case_error(test_case(bad)),
             "case.xml: agent 'A' (agent[0]): initialConditions.position.x: expected a number, got "
             "'abc'");
-  EXPECT_EQ(steersuite_error_of(test_case("<sphere/>")),
+  EXPECT_EQ(case_error(test_case("<sphere/>")),
             "case.xml: sphere[0]: not an element of a SteerSuite test case");
   std::string flee = kAgent;
   flee.replace(flee.find("seekStaticTarget"), 16, "seekDynamicTarget");
   flee.replace(flee.rfind("seekStaticTarget"), 16, "seekDynamicTarget");
-  EXPECT_EQ(steersuite_error_of(test_case(flee)),
+  EXPECT_EQ(case_error(test_case(flee)),
             "case.xml: agent 'A' (agent[0]): goal type 'seekDynamicTarget' is not supported (only "
             "seekStaticTarget)");
 }
