@@ -41,17 +41,18 @@ double UpperBodyFollower::swing_at(double t) const {
 }
 
 double UpperBodyFollower::look_at(double t) const {
+  if (plan_.footsteps.empty()) return 0.0;
   const double end = plan_.end_time();
+  // A standing body turns whole, in its pivots, as the planner tests it (in
+  // a door frame, a chest turned ahead of them would swing the arms into
+  // it): the look fades with the speed.
+  const double speed = length(com_at(plan_, std::min(t, end)).velocity);
+  const double moving = std::min(1.0, speed / full_speed_);
+  if (moving == 0.0) return 0.0;
   const double now = body_facing(plan_, std::min(t, end));
   double sum = 0;
   for (int k = 1; k <= kLookSamples; ++k)
     sum += wrap_angle(body_facing(plan_, std::min(t + kLookAhead * k / kLookSamples, end)) - now);
-  // A standing body turns whole, in its pivots, as the planner tests it (in
-  // a door frame, a chest turned ahead of them would swing the arms into
-  // it): the look fades with the speed.
-  if (plan_.footsteps.empty()) return 0.0;
-  const double speed = length(com_at(plan_, std::min(t, end)).velocity);
-  const double moving = std::min(1.0, speed / full_speed_);
   return moving * std::clamp(sum / kLookSamples, -kMostLook, kMostLook);
 }
 

@@ -289,14 +289,15 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   const SectionLookup* sections = search.whole ? search.whole->sections : nullptr;
   const std::optional<WayLine> way = sections ? sections->narrower_way(state.com) : std::nullopt;
   if (!way) return;
-  const double along = angle_of(way->direction);
-  for (const double square : {along + 0.5 * kPi, along}) {
-    if (square == along && way->behavior != Behavior::kArmsIn) break;
+  const auto square_up = [&](double square) {
     const double off = wrap_angle(square - state.facing);
     // The nearer way round.
     const double turn = std::fabs(off) <= 0.5 * kPi ? off : wrap_angle(off - kPi);
     if (std::fabs(turn) > kDuplicateTurn) add_stop(wrap_angle(state.facing + turn));
-  }
+  };
+  const double along = angle_of(way->direction);
+  square_up(along + 0.5 * kPi);
+  if (way->behavior == Behavior::kArmsIn) square_up(along);
   // The side step that lands on the way, one side step along it (as near as
   // the skew allows).
   const double travel = 0.5 * kSideStepSpeed * params.stop_duration;
