@@ -5,6 +5,7 @@ on must stay where the plan puts it."""
 
 import math
 
+import bpy
 from mathutils import Matrix, Vector
 
 
@@ -47,3 +48,30 @@ class FootRest:
                  "heel": foot.matrix @ rest.inverted() @ self.heel}
         world = armature.matrix_world
         return min((world @ posed[k] - planned[k]).length for k in planned)
+
+
+def plan_errors(ff, plan, rig, profile):
+    """The farthest any planted foot's contact point (heel, ankle or ball, as
+    it rolls) is from the plan, and the hips from the COM, in the world at
+    every frame, for agents animated on `rig` (profile `profile`): (foot,
+    pelvis, stance samples)."""
+    feet = {side: FootRest(rig, profile, side) for side in ("left", "right")}
+    scene = bpy.context.scene
+    fps = scene.render.fps / scene.render.fps_base
+    worst_foot, worst_pelvis, stance_frames = 0.0, 0.0, 0
+    for frame in range(scene.frame_start, scene.frame_end + 1):
+        scene.frame_set(frame)
+        t = (frame - scene.frame_start) / fps
+        for agent in plan.agents:
+            armature = bpy.data.objects[agent.name].evaluated_get(bpy.context.evaluated_depsgraph_get())
+            world = armature.matrix_world
+            for side, pose in zip(("left", "right"), ff.feet_at(agent, t)):
+                if not pose.planted:
+                    continue
+                stance_frames += 1
+                worst_foot = max(worst_foot, feet[side].error(armature, pose))
+            hips = world @ armature.pose.bones[profile.bones["hips"]].head
+            worst_pelvis = max(worst_pelvis, math.dist(hips.xy, ff.com_at(agent, t).position))
+    print(f"stance samples {stance_frames}, worst foot error {worst_foot * 1000:.2f} mm, "
+          f"worst pelvis error {worst_pelvis * 100:.2f} cm")
+    return worst_foot, worst_pelvis, stance_frames

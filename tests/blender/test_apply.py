@@ -15,7 +15,7 @@ import bpy  # first: as a Python module, bpy puts Blender's own modules on the p
 import addon_utils  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from foot_contact import FootRest  # noqa: E402
+from foot_contact import plan_errors  # noqa: E402
 from harness import check, run  # noqa: E402
 import mathutils
 import numpy
@@ -87,36 +87,9 @@ def evaluated(name):
     return bpy.data.objects[name].evaluated_get(bpy.context.evaluated_depsgraph_get())
 
 
-def plan_errors(ff, plan):
-    """The farthest any planted foot's contact point (heel, ankle or ball, as
-    it rolls) is from the plan, and the hips from the COM, in the world at
-    every frame: (foot, pelvis, stance samples)."""
-    rig, profile = imported_rig()
-    feet = {side: FootRest(rig, profile, side) for side in ("left", "right")}
-    scene = bpy.context.scene
-    fps = scene.render.fps / scene.render.fps_base
-    worst_foot, worst_pelvis, stance_frames = 0.0, 0.0, 0
-    for frame in range(scene.frame_start, scene.frame_end + 1):
-        scene.frame_set(frame)
-        t = (frame - scene.frame_start) / fps
-        for agent in plan.agents:
-            armature = evaluated(agent.name)
-            world = armature.matrix_world
-            for side, pose in zip(("left", "right"), ff.feet_at(agent, t)):
-                if not pose.planted:
-                    continue
-                stance_frames += 1
-                worst_foot = max(worst_foot, feet[side].error(armature, pose))
-            hips = world @ armature.pose.bones[profile.bones["hips"]].head
-            worst_pelvis = max(worst_pelvis, math.dist(hips.xy, ff.com_at(agent, t).position))
-    print(f"stance samples {stance_frames}, worst foot error {worst_foot * 1000:.2f} mm, "
-          f"worst pelvis error {worst_pelvis * 100:.2f} cm")
-    return worst_foot, worst_pelvis, stance_frames
-
-
 def test_feet_and_pelvis_follow_the_plan():
     ff, plan, path = applied(doorway_plan)
-    worst_foot, worst_pelvis, stance_frames = plan_errors(ff, plan)
+    worst_foot, worst_pelvis, stance_frames = plan_errors(ff, plan, *imported_rig())
     check(stance_frames > 300, f"only {stance_frames} stance samples")
     check(worst_foot <= 0.002, f"a planted foot is {worst_foot * 1000:.2f} mm off the plan")
     check(worst_pelvis <= 0.02, f"the pelvis is {worst_pelvis * 100:.2f} cm off the COM")
@@ -134,7 +107,7 @@ def test_on_the_demo_no_stance_foot_moves():
         check(motion.stance_slide < 1e-6, f"{agent.name}: a stance foot moves {motion.stance_slide * 1000:.3f} mm")
     starts = sum(s.kind == ff.StepKind.START for a in plan.agents for s in a.footsteps)
     check(starts > 0, "no walk from standing needed a start")
-    worst_foot, _, stance_frames = plan_errors(ff, plan)
+    worst_foot, _, stance_frames = plan_errors(ff, plan, *imported_rig())
     check(stance_frames > 1000, f"only {stance_frames} stance samples")
     check(worst_foot <= 0.002, f"a planted foot is {worst_foot * 1000:.2f} mm off the plan")
 
@@ -496,6 +469,13 @@ def test_export_validates_and_reimports():
     check(worst <= 0.005, f"re-imported bones are {worst * 1000:.2f} mm off")
 
 
+def test_a_live_crowd_exports_as_it_plays():
+    ff, plan, path = applied(doorway_plan)
+    check(bpy.ops.footfall.apply(plan_filepath=str(path), live=True) == {"FINISHED"}, "live apply failed")
+    worst = exported_and_reimported(plan, TMP / "live-crowd.glb")
+    check(worst <= 0.005, f"re-imported bones of the live crowd are {worst * 1000:.2f} mm off")
+
+
 def transform_rig(data_matrix, object_matrix, parent_matrix=None):
     """Gives the imported rig other coordinates, upright in the world as
     before: its bones and meshes turned by `data_matrix`, its object by
@@ -529,7 +509,7 @@ def expect_rig_walks_the_plan(case, make_rig):
                  - (rig.matrix_world @ rig.data.bones[profile.bones["hips"]].head_local)).z
     plan, path = doorway_plan(ff)
     check(bpy.ops.footfall.apply(plan_filepath=str(path)) == {"FINISHED"}, f"{case}: apply failed")
-    worst_foot, worst_pelvis, _ = plan_errors(ff, plan)
+    worst_foot, worst_pelvis, _ = plan_errors(ff, plan, *imported_rig())
     check(worst_foot <= 0.002, f"{case}: a planted foot is {worst_foot * 1000:.2f} mm off the plan")
     check(worst_pelvis <= 0.02, f"{case}: the pelvis is {worst_pelvis * 100:.2f} cm off the COM")
     scene = bpy.context.scene
@@ -935,7 +915,7 @@ def test_an_apply_stopped_part_way_leaves_the_scene_as_it_was():
 
 run([test_feet_and_pelvis_follow_the_plan, test_on_the_demo_no_stance_foot_moves, test_feet_roll_from_heel_to_toe, test_arms_swing_opposite_to_the_legs,
      test_arms_swing_as_far_as_the_steps_are_fast, test_the_head_and_chest_look_into_a_turn, test_behaviours_play_their_clips,
-     test_export_validates_and_reimports, test_failures_leave_the_scene_as_it_was,
+     test_export_validates_and_reimports, test_a_live_crowd_exports_as_it_plays, test_failures_leave_the_scene_as_it_was,
      test_applying_again_replaces_the_crowd, test_replanning_the_selected_agents_updates_only_their_rigs,
      test_a_crowd_with_short_waits_applies, test_a_strip_ending_a_hair_past_a_whole_frame_leaves_room,
      test_a_sheared_pose_is_refused_by_name, test_a_leaving_agent_walks_off_and_disappears,

@@ -649,7 +649,8 @@ def test_failing_operators_report_and_cancel():
          "missing.glb: no such file"),
         (operators.FOOTFALL_OT_import_rig, {"filepath": "", "armature": "Sphere"},
          "armature 'Sphere': a mesh, not an armature"),
-        (operators.FOOTFALL_OT_apply, {"plan_filepath": "", "rig": ""}, "No plan: run Plan first"),
+        (operators.FOOTFALL_OT_apply, {"plan_filepath": "", "rig": "", "live": False}, "No plan: run Plan first"),
+        (operators.FOOTFALL_OT_apply, {"plan_filepath": "", "rig": "", "live": True}, "No plan: run Plan first"),
         (operators.FOOTFALL_OT_export_gltf, {"filepath": str(TMP / "none.glb")}, "Nothing to export"),
     )
     for operator, properties, fragment in failures:

@@ -20,7 +20,7 @@ import math
 import os
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
-from typing import Dict, Generator, List, NamedTuple, Optional, Set, Tuple
+from typing import Callable, Dict, Generator, List, NamedTuple, Optional, Set, Tuple
 
 import bpy
 import numpy
@@ -55,7 +55,7 @@ LINEAR, HANDLE_FREE = 1, 0  # KeyframePoint.interpolation and handle type values
 
 
 @dataclass
-class _Leg:
+class Leg:
     foot: str
     shin: str
     thigh: str
@@ -79,7 +79,7 @@ class RigRest:
     forward_yaw: float  # the rig's facing in the rest pose [rad]
     chest: str
     head: str
-    legs: Dict[str, _Leg] = field(default_factory=dict)
+    legs: Dict[str, Leg] = field(default_factory=dict)
 
 
 def _pole_angle(thigh, shin, pole: Vector) -> float:
@@ -160,7 +160,7 @@ def rig_rest(data, profile, feet=None) -> RigRest:
     for side, suffix in SIDES:
         limb = bones[side]
         thigh, shin, foot, toe = (data.bones[limb[r]] for r in ("thigh", "shin", "foot", "toe"))
-        rest.legs[side] = _Leg(
+        rest.legs[side] = Leg(
             foot=limb["foot"], shin=limb["shin"], thigh=limb["thigh"], toe=limb["toe"],
             foot_rest=foot.matrix_local.copy(),
             pole_rest=data.bones[POLE.format(suffix)].matrix_local.copy(),
@@ -347,6 +347,16 @@ def _step_arrays(ff, steps) -> foot_roll.Steps:
     return foot_roll.Steps(start, end, numpy.array([0 if s.foot == ff.Foot.LEFT else 1 for s in steps]),
                            numpy.array([s.kind != ff.StepKind.SIDE_STEP for s in steps], dtype=bool),
                            chord / numpy.maximum(end - start, 1e-9))
+
+
+def motion_of(ff, agent, rest: RigRest, frames, fps: float, speed: float):
+    """The agent's motion at `frames` (the first is the plan's time 0; after
+    its plan the agent holds its last pose), for an agent walking at `speed`:
+    the locomotion's channels (bone -> Keyed), and the walking clips' swing,
+    the look-ahead and the chest's twist (ff.upper_body)."""
+    times = numpy.minimum((frames - frames[0]) / fps, agent.end_time())
+    facing, swing, look, twist = ff.upper_body(agent, times, speed)
+    return _locomotion(ff, agent, rest, times, facing, speed), swing, look, twist
 
 
 def _locomotion(ff, agent, rest: RigRest, times, facing, full_speed: float):
@@ -542,14 +552,26 @@ def _look_ahead(ff, armature, agent_name: str, rest: RigRest, frames, look, twis
     strip.extrapolation = "HOLD_FORWARD"
 
 
+def _drop_driven(action, bones) -> None:
+    """Removes the clip's curves of what the locomotion drives (the hips'
+    location and turn, the toes' turn): keyed, the locomotion action
+    replaces them anyway; live, the clip would undo the live pose."""
+    driven = {f'pose.bones["{bones["hips"]}"].location', f'pose.bones["{bones["hips"]}"].rotation_quaternion',
+              *(f'pose.bones["{bones[side]["toe"]}"].rotation_quaternion' for side, _ in SIDES)}
+    for curve in [c for c in action_curves.curves(action) if c.data_path in driven]:
+        action_curves.remove(action, curve)
+
+
 def clips_of(rig, profile) -> Dict[str, rig_clips.Clip]:
     """The clip per behaviour, cyclic: the rig's own (copies without root
-    motion), procedural ones where it has none."""
+    motion or what the locomotion drives), procedural ones where it has none."""
     clips = {}
     for behavior in profile.clips:
         clip = rig_clips.playable(rig, profile, behavior)
         if clip is None:
             clip = procedural_clips.clip(behavior, rig, profile)
+        else:
+            _drop_driven(clip.action, profile.bones)
         _make_cyclic(clip)
         clips[behavior] = clip
     return clips
@@ -572,12 +594,16 @@ def _character(rig) -> _Character:
     return _Character(rig, template, rest, clips_of(rig, profile))
 
 
-def applying(ff, plan, rigs: Dict[str, bpy.types.Object], scene,
-             only: Optional[Set[str]] = None) -> Generator[float, None, List[bpy.types.Object]]:
+def applying(ff, plan, rigs: Dict[str, bpy.types.Object], scene, only: Optional[Set[str]] = None,
+             drive: Optional[Callable] = None) -> Generator[float, None, List[bpy.types.Object]]:
     """Animates one instance of each agent's rig (`rigs`: agent name -> rig)
     per agent of `plan` (of those named in `only`, if given), one agent at a
     time: yields the share done after each; returns the armatures. Stopped
     part way, it leaves what it made so far (the caller removes it).
+
+    The locomotion (motion_of's channels) is keyed in an action per agent,
+    or with `drive` given handed to it instead, as drive(armature, agent
+    name, rest, frames, fps, preferred speed, channels) (live_motion).
 
     Frame `scene.frame_start` is time 0; the scene's frame range is extended to
     the end of the longest plan.
@@ -602,11 +628,13 @@ def applying(ff, plan, rigs: Dict[str, bpy.types.Object], scene,
     bpy.context.view_layer.update()  # new armature objects get their poses here, all at once
     for i, (agent, armature, character) in enumerate(zip(agents, armatures, cast)):
         _add_controls(armature, character.rest)
-        walker = agent.character or plan.character
-        times = numpy.minimum((frames - frame_offset) / fps, agent.end_time())
-        facing, swing, look, twist = ff.upper_body(agent, times, walker.preferred_speed)
-        _write_action(armature, f"{agent.name} locomotion", frames,
-                      _locomotion(ff, agent, character.rest, times, facing, walker.preferred_speed))
+        speed = (agent.character or plan.character).preferred_speed
+        channels, swing, look, twist = motion_of(ff, agent, character.rest, frames, fps, speed)
+        if drive is None:
+            _write_action(armature, f"{agent.name} locomotion", frames, channels)
+        else:
+            armature.animation_data_create()
+            drive(armature, agent.name, character.rest, frames, fps, speed, channels)
         _upper_body(armature, agent, character.clips, fps, frame_offset, frames, swing)
         _look_ahead(ff, armature, agent.name, character.rest, frames, look, twist)
         _key_leaving(armature, agent, frame_offset, fps)

@@ -4,12 +4,13 @@ failure remove everything the attempt created. After Plan of the selected
 agents, Apply of the stored plan animates only the agents planned again, and
 keeps the rigs of the others."""
 
+import pathlib
 from typing import Optional, Set
 
 import bpy
 
 from ..core import native
-from . import agent_rigs, animate, datablocks, plan_store, rig_clips, scene_extract
+from . import agent_rigs, animate, datablocks, live_motion, plan_store, rig_clips, scene_extract
 
 
 class ApplyError(ValueError):
@@ -68,13 +69,19 @@ class ApplyJob:
     """One Apply, an agent at a time (the modal operator's steps between
     events): made, it has found the plan and the rigs and freed the agents'
     names; `advance` animates the next agent; `finish` replaces the earlier
-    crowd; `cancel`, or a failure in `advance`, leaves the scene as it was."""
+    crowd; `cancel`, or a failure in `advance`, leaves the scene as it was.
+    `live`: the locomotion is posed at each frame, not keyed (live_motion)."""
 
-    def __init__(self, context, plan_filepath: str = "", rig_name: str = ""):
+    def __init__(self, context, plan_filepath: str = "", rig_name: str = "", live: bool = False):
         ff = native.load()
         plan = _plan(ff, plan_filepath)
         if not plan.agents:
             raise ApplyError("The plan has no agents")
+        # What the live crowd plays, packed now: a plan file may change before finish().
+        self._live_plan = None
+        if live:
+            self._live_plan = plan_store.pack(pathlib.Path(bpy.path.abspath(plan_filepath)).read_text(
+                encoding="utf-8")) if plan_filepath else plan_store.stored_packed()
         try:
             rigs = agent_rigs.rigs_of(context.scene, plan, agent_rigs.scene_rig(context.scene, rig_name))
         except agent_rigs.RigChoiceError as error:
@@ -110,7 +117,7 @@ class ApplyJob:
                     self._named.append(holder)
                 holder.name = f"{agent.name} (agent)"
         self._before = datablocks.snapshot()
-        self._steps = animate.applying(ff, plan, rigs, context.scene, only)
+        self._steps = animate.applying(ff, plan, rigs, context.scene, only, live_motion.drive if live else None)
         self.progress = 0.0
         self.armatures = None  # the new agents' armatures, once every agent is animated
 
@@ -134,11 +141,16 @@ class ApplyJob:
             block.name = name
         for holder in self._named:
             del holder[scene_extract.AGENT_NAME]
+        live_motion.tidy()
 
     def finish(self):
         """Replaces the earlier crowd with the new one; returns its armatures."""
         _remove(self._replaced)
         rig_clips.remove_unused_copies()
+        if self._live_plan is not None:
+            live_motion.store_plan(self._live_plan)
+            self._scene.render.use_lock_interface = True  # a render must not pose the crowd under the viewport
+        live_motion.tidy()
         if self._from_file:
             plan_store.mark_planned(self._scene)  # the crowd is not the stored plan's
         else:
@@ -146,11 +158,11 @@ class ApplyJob:
         return self.armatures
 
 
-def run(context, plan_filepath: str = "", rig_name: str = ""):
+def run(context, plan_filepath: str = "", rig_name: str = "", live: bool = False):
     """Animates the plan on instances of the rig, replacing the agents of an
     earlier apply once the new ones are made (only those planned again, after
     a Plan of the selected agents); returns their armatures."""
-    job = ApplyJob(context, plan_filepath, rig_name)
+    job = ApplyJob(context, plan_filepath, rig_name, live)
     window_manager = context.window_manager
     window_manager.progress_begin(0, 100)
     try:

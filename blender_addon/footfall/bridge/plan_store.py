@@ -33,12 +33,12 @@ LINE = 76
 PACK_LEVEL = 1  # zlib's fastest: Plan packs at every run (docs/notes/blender-workflow.md)
 
 
-def _pack(text: str) -> str:
+def pack(text: str) -> str:
     packed = base64.b64encode(zlib.compress(text.encode("utf-8"), PACK_LEVEL)).decode("ascii")
     return "\n".join([HEADER, *(packed[i:i + LINE] for i in range(0, len(packed), LINE))])
 
 
-def _unpack(packed: str) -> str:
+def unpack(packed: str) -> str:
     header, _, body = packed.partition("\n")
     if header != HEADER:
         raise ValueError(f"{TEXT_NAME}: not a packed plan (its first line is not '{HEADER}')")
@@ -57,7 +57,7 @@ def store(text: str, plan=None) -> None:
     """Stores the plan JSON `text` (of the native Plan `plan`, if given),
     replacing a stored plan."""
     global _last_read
-    packed = _pack(text)  # first: nothing changes if packing fails
+    packed = pack(text)  # first: nothing changes if packing fails
     block = bpy.data.texts.get(TEXT_NAME) or bpy.data.texts.new(TEXT_NAME)
     block.from_string(packed)
     block[REVISION] = uuid.uuid4().hex
@@ -65,6 +65,15 @@ def store(text: str, plan=None) -> None:
     if plain is not None:
         bpy.data.texts.remove(plain)
     _last_read = (text, plan)
+
+
+def stored_packed() -> Optional[str]:
+    """The stored plan as packed text (pack), or None if no plan is stored."""
+    block = bpy.data.texts.get(TEXT_NAME)
+    if block is not None:
+        return block.as_string()
+    text = load()
+    return None if text is None else pack(text)
 
 
 def revision() -> Optional[Tuple[int, Optional[str]]]:
@@ -79,7 +88,7 @@ def load() -> Optional[str]:
     if the packed text was damaged."""
     block = bpy.data.texts.get(TEXT_NAME)
     if block is not None:
-        return _unpack(block.as_string())
+        return unpack(block.as_string())
     plain = bpy.data.texts.get(PLAIN_TEXT_NAME)
     return None if plain is None else plain.as_string()
 

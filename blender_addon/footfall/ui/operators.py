@@ -62,11 +62,16 @@ class FOOTFALL_OT_apply(bpy.types.Operator):
     rig: bpy.props.StringProperty(
         name="Rig", description="The imported rig to instance; empty: the scene's rig (the panel's Rig)"
     )
+    live: bpy.props.BoolProperty(
+        name="Live", description="Pose the agents' legs and hips from the plan at each frame instead of keying them: "
+        "a far smaller file and a faster Apply, but only Blender with Footfall plays it (keyed: any Blender, and "
+        "editable keys)", default=False
+    )
 
     def execute(self, context):
         """Applies at once (scripts, and Blender without a window)."""
         try:
-            armatures = apply_plan.run(context, self.plan_filepath, self.rig)
+            armatures = apply_plan.run(context, self.plan_filepath, self.rig, self.live)
         except APPLY_ERRORS as error:
             return report_and_cancel(self, error)
         return self._done(context, armatures)
@@ -77,7 +82,7 @@ class FOOTFALL_OT_apply(bpy.types.Operator):
         if context.window is None:
             return self.execute(context)
         try:
-            self._job = apply_plan.ApplyJob(context, self.plan_filepath, self.rig)
+            self._job = apply_plan.ApplyJob(context, self.plan_filepath, self.rig, self.live)
         except APPLY_ERRORS as error:
             return report_and_cancel(self, error)
         self._timer = context.window_manager.event_timer_add(0.02, window=context.window)

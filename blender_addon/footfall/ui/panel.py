@@ -71,6 +71,7 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
             use = self.layout.operator("footfall.import_rig", text=f"Use '{active.name}' as Rig", icon="ARMATURE_DATA")
             use.armature = active.name
         self.layout.operator("footfall.apply", icon="ANIM")
+        self.layout.operator("footfall.apply", text="Apply Live", icon="PLAY").live = True
         self.layout.operator("footfall.export_gltf", icon="EXPORT")
 
 

@@ -3,7 +3,7 @@
 
 import bpy
 
-from ..bridge import plan_watch
+from ..bridge import live_motion, plan_watch
 from . import agent_operators, overlay, preferences, properties, scene_operators
 from .operators import FOOTFALL_OT_apply, FOOTFALL_OT_export_gltf, FOOTFALL_OT_import_rig
 from .panel import FOOTFALL_PT_agent, FOOTFALL_PT_bone_map, FOOTFALL_PT_main
@@ -28,9 +28,11 @@ def register():
     properties.register()
     overlay.register()
     plan_watch.register()
+    live_motion.register()
 
 
 def unregister():
+    live_motion.unregister()
     plan_watch.unregister()
     overlay.unregister()
     properties.unregister()

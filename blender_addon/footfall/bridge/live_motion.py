@@ -1,0 +1,221 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Live motion: a crowd posed from its plan at each frame, instead of keyed.
+
+Keyed in full, a crowd's locomotion is most of its .blend (docs/notes/
+blender-workflow.md). Applied live, what animate keys in an agent's
+locomotion action (the hips, the foot targets, the toes, the knee poles) is
+not keyed: a frame-change handler sets those bones from the motion sampled
+at every frame of the Apply, held in memory. The plan the crowd plays is kept
+packed in the Text "footfall_crowd_plan", and each live armature says in its
+property "footfall_live" which agent it plays and how (its rest as JSON, its
+frames, frame rate and speed), so that after the file is opened again the first
+frame change samples the motion anew. The clips' strips, their influence,
+the look-ahead and the leaving stay keyed.
+
+Only Blender with the add-on plays it: elsewhere (a render farm without it,
+an exporter other than Footfall's) the crowd stands still. Keyed Apply is
+for those.
+"""
+
+import json
+import uuid
+from dataclasses import astuple
+from typing import Dict, Optional
+
+import bpy
+import numpy
+from bpy.app.handlers import persistent
+from mathutils import Matrix, Vector
+
+from ..core import foot_roll, native
+from . import animate, plan_store
+
+LIVE = "footfall_live"  # a live armature's property (a group): what poses it
+PLAN_TEXT = "footfall_crowd_plan"  # the plan the live crowd plays, packed as plan_store packs
+REVISION = "footfall_revision"  # the Text's property: new at every store
+
+
+class LiveMotionError(ValueError):
+    """A live armature whose plan or agent is gone; the message names it."""
+
+
+class _Motion:
+    """One armature's locomotion at every frame from `first`: a row per
+    frame of the driven bones' locations, then their quaternions."""
+
+    PATHS = (("location", 3), ("rotation_quaternion", 4))
+
+    def __init__(self, first: int, channels: Dict[str, animate.Keyed]):
+        self.first = first
+        self.bones = {path: [bone for bone, keyed in channels.items() if getattr(keyed, kind) is not None]
+                      for (path, _), kind in zip(self.PATHS, ("locations", "quaternions"))}
+        self.rows = numpy.hstack([channels[bone].locations for bone in self.bones["location"]] +
+                                 [channels[bone].quaternions for bone in self.bones["rotation_quaternion"]]
+                                 ).astype(numpy.float32)  # a crowd's rows take hundreds of MB
+        self._places = {}  # bone count -> where the driven values go in such an armature's pose arrays
+
+    def row(self, frame: float) -> numpy.ndarray:
+        """The driven values at `frame` (between frames, in between; before
+        the first or after the last, held)."""
+        at = min(max(frame - self.first, 0.0), len(self.rows) - 1.0)
+        below = int(at)
+        share = numpy.float32(at - below)
+        if share == 0.0:
+            return self.rows[below]
+        return (1.0 - share) * self.rows[below] + share * self.rows[below + 1]
+
+    def pose(self, armature, frame: float) -> None:
+        """Poses the armature at `frame`, in bulk; an armature already so posed
+        (one standing, or gone) is not touched, which spares Blender its update."""
+        bones = armature.pose.bones
+        if len(bones) not in self._places:
+            index = {bone.name: i for i, bone in enumerate(bones)}
+            self._places[len(bones)] = [numpy.array([width * index[b] + k for b in self.bones[path]
+                                                     for k in range(width)], dtype=int)
+                                        for path, width in self.PATHS]
+        values = self.row(frame)
+        arrays, changed, column = [], False, 0
+        for (path, width), places in zip(self.PATHS, self._places[len(bones)]):
+            array = numpy.empty(width * len(bones), dtype=numpy.float32)
+            bones.foreach_get(path, array)
+            wanted = values[column:column + len(places)]
+            column += len(places)
+            changed = changed or not numpy.array_equal(array[places], wanted)
+            array[places] = wanted
+            arrays.append((path, array))
+        if not changed:
+            return
+        for path, array in arrays:
+            bones.foreach_set(path, array)
+        armature.update_tag(refresh={"OBJECT"})  # foreach_set tags nothing; the pose follows its object's update
+
+
+_motions: Dict[str, _Motion] = {}  # by the "id" in an armature's LIVE property
+_failed = set()  # ids whose motion could not be made: said once, not at every frame
+_crowd_plan = (None, None)  # (the Text's revision, the core's reading of it)
+
+
+def drive(armature, agent: str, rest: animate.RigRest, frames, fps: float, speed: float, channels) -> None:
+    """animate.applying's `drive`: poses `armature` live from `channels`
+    (sampled at `frames`) and records how to sample them again."""
+    key = uuid.uuid4().hex
+    armature[LIVE] = {"id": key, "agent": agent, "first": int(frames[0]), "count": len(frames), "fps": fps,
+                      "speed": speed, "rest": json.dumps(_rest_to_dict(rest))}
+    _motions[key] = _Motion(int(frames[0]), channels)
+    _motions[key].pose(armature, bpy.context.scene.frame_current)
+
+
+def store_plan(packed: str) -> None:
+    """Keeps `packed` (plan_store.pack) as the plan the live crowd plays."""
+    block = bpy.data.texts.get(PLAN_TEXT) or bpy.data.texts.new(PLAN_TEXT)
+    block.from_string(packed)
+    block[REVISION] = uuid.uuid4().hex
+
+
+def live_armatures():
+    """The crowd's armatures posed live."""
+    crowd = bpy.data.collections.get(animate.CROWD_COLLECTION)
+    return [obj for obj in (crowd.objects if crowd else ()) if obj.type == "ARMATURE" and LIVE in obj]
+
+
+def tidy() -> None:
+    """Forgets the motion of armatures gone, and the crowd's plan once no
+    armature plays it live."""
+    live = live_armatures()
+    kept = {obj[LIVE]["id"] for obj in live}
+    for key in [k for k in _motions if k not in kept]:
+        del _motions[key]
+    if not live and PLAN_TEXT in bpy.data.texts:
+        bpy.data.texts.remove(bpy.data.texts[PLAN_TEXT])
+
+
+def _plan():
+    global _crowd_plan
+    block = bpy.data.texts.get(PLAN_TEXT)
+    if block is None:
+        raise LiveMotionError(f"the Text '{PLAN_TEXT}' with the plan the crowd plays is gone: Apply again")
+    if _crowd_plan[0] != block.get(REVISION) or _crowd_plan[1] is None:
+        _crowd_plan = (block.get(REVISION), native.load().parse_plan(plan_store.unpack(block.as_string()), PLAN_TEXT))
+    return _crowd_plan[1]
+
+
+def _motion(armature) -> Optional[_Motion]:
+    """The armature's motion, sampled anew from the crowd's plan if not held."""
+    live = armature[LIVE]
+    key = live["id"]
+    if key in _motions or key in _failed:
+        return _motions.get(key)
+    try:
+        agent = next((a for a in _plan().agents if a.name == live["agent"]), None)
+        if agent is None:
+            raise LiveMotionError(f"the crowd's plan has no agent '{live['agent']}': Apply again")
+        frames = numpy.arange(live["first"], live["first"] + live["count"], dtype=float)
+        channels = animate.motion_of(native.load(), agent, _rest_from_dict(json.loads(live["rest"])), frames, live["fps"],
+                                     live["speed"])[0]
+    except ValueError as error:
+        _failed.add(key)
+        print(f"Footfall: '{armature.name}' stands still: {error}")
+        return None
+    _motions[key] = _Motion(live["first"], channels)
+    return _motions[key]
+
+
+def pose_crowd(scene) -> None:
+    """Poses every live armature at the scene's frame."""
+    frame = scene.frame_current + scene.frame_subframe
+    for armature in live_armatures():
+        motion = _motion(armature)
+        if motion is not None:
+            motion.pose(armature, frame)
+
+
+@persistent
+def _on_frame_change(scene, *_) -> None:
+    pose_crowd(scene)
+
+
+@persistent
+def _on_load(*_) -> None:
+    global _crowd_plan
+    _motions.clear()
+    _failed.clear()
+    _crowd_plan = (None, None)
+
+
+def register() -> None:
+    bpy.app.handlers.frame_change_pre.append(_on_frame_change)
+    bpy.app.handlers.load_post.append(_on_load)
+
+
+def unregister() -> None:
+    for handlers, handler in ((bpy.app.handlers.frame_change_pre, _on_frame_change),
+                              (bpy.app.handlers.load_post, _on_load)):
+        if handler in handlers:
+            handlers.remove(handler)
+
+
+def _rest_to_dict(rest: animate.RigRest) -> dict:
+    legs = {side: {"foot": leg.foot, "shin": leg.shin, "thigh": leg.thigh, "toe": leg.toe,
+                   "foot_rest": _rows(leg.foot_rest), "pole_rest": _rows(leg.pole_rest),
+                   "toe_rest": _rows(leg.toe_rest), "thigh_head": list(leg.thigh_head),
+                   "ankle": list(leg.ankle), "knee": list(leg.knee), "length": leg.length,
+                   "shape": list(astuple(leg.shape))}
+            for side, leg in rest.legs.items()}
+    return {"hips": rest.hips, "hips_rest": _rows(rest.hips_rest), "forward_yaw": rest.forward_yaw,
+            "chest": rest.chest, "head": rest.head, "legs": legs}
+
+
+def _rest_from_dict(data: dict) -> animate.RigRest:
+    rest = animate.RigRest(data["hips"], Matrix(data["hips_rest"]), data["forward_yaw"], data["chest"],
+                           data["head"])
+    for side, leg in data["legs"].items():
+        rest.legs[side] = animate.Leg(
+            foot=leg["foot"], shin=leg["shin"], thigh=leg["thigh"], toe=leg["toe"],
+            foot_rest=Matrix(leg["foot_rest"]), pole_rest=Matrix(leg["pole_rest"]),
+            toe_rest=Matrix(leg["toe_rest"]), thigh_head=Vector(leg["thigh_head"]), ankle=Vector(leg["ankle"]),
+            knee=Vector(leg["knee"]), length=leg["length"], shape=foot_roll.FootShape(*leg["shape"]))
+    return rest
+
+
+def _rows(matrix: Matrix) -> list:
+    return [list(row) for row in matrix]
