@@ -5,6 +5,8 @@ and goes on doing so in the file saved and opened again.
 Run: blender -b --factory-startup --python-exit-code 1 --python tests/blender/test_live_motion.py
 """
 
+import contextlib
+import io
 import os
 import pathlib
 import sys
@@ -133,8 +135,14 @@ def test_a_live_crowd_without_its_plan_stands_and_says_why():
     bpy.ops.wm.save_as_mainfile(filepath=str(path))
     bpy.ops.wm.open_mainfile(filepath=str(path))
     frames = frames_across()
-    first = crowd_bones(frames[:1])
-    still = crowd_bones(frames[-1:])  # no error at a frame change
+    said = io.StringIO()
+    with contextlib.redirect_stdout(said):
+        first = crowd_bones(frames[:1])
+        still = crowd_bones(frames[-1:])  # no error at a frame change
+    lines = said.getvalue().splitlines()
+    check(len(lines) == len(live_motion.live_armatures()) and all(
+        "stands still: the Text 'footfall_crowd_plan' with the plan the crowd plays is gone" in line for line in lines),
+        f"said {lines}")
     # The locomotion stands (the clips' strips still play the arms).
     driven = [key for key in first if key[2] == imported_rig()[1].bones["hips"] or key[2].startswith("footfall_")]
     moved = max((still[(frames[-1], *key[1:])] - first[key]).length for key in driven)

@@ -20,7 +20,7 @@ for those.
 import json
 import uuid
 from dataclasses import astuple
-from typing import Dict, Optional
+from typing import Dict
 
 import bpy
 import numpy
@@ -64,18 +64,26 @@ class _Motion:
             return self.rows[below]
         return (1.0 - share) * self.rows[below] + share * self.rows[below + 1]
 
+    def _places_in(self, bones) -> list:
+        """Where the driven values go in the pose arrays of an armature with
+        these bones (per path: indices into its flat array)."""
+        count = len(bones)
+        if count not in self._places:
+            index = {bone.name: i for i, bone in enumerate(bones)}
+            missing = [b for path in self.bones.values() for b in path if b not in index]
+            if missing:
+                raise LiveMotionError(f"its bone '{missing[0]}' is gone")
+            self._places[count] = [numpy.array([width * index[b] + k for b in self.bones[path] for k in range(width)],
+                                               dtype=int) for path, width in self.PATHS]
+        return self._places[count]
+
     def pose(self, armature, frame: float) -> None:
         """Poses the armature at `frame`, in bulk; an armature already so posed
         (one standing, or gone) is not touched, which spares Blender its update."""
         bones = armature.pose.bones
-        if len(bones) not in self._places:
-            index = {bone.name: i for i, bone in enumerate(bones)}
-            self._places[len(bones)] = [numpy.array([width * index[b] + k for b in self.bones[path]
-                                                     for k in range(width)], dtype=int)
-                                        for path, width in self.PATHS]
         values = self.row(frame)
         arrays, changed, column = [], False, 0
-        for (path, width), places in zip(self.PATHS, self._places[len(bones)]):
+        for (path, width), places in zip(self.PATHS, self._places_in(bones)):
             array = numpy.empty(width * len(bones), dtype=numpy.float32)
             bones.foreach_get(path, array)
             wanted = values[column:column + len(places)]
@@ -135,38 +143,48 @@ def _plan():
     if block is None:
         raise LiveMotionError(f"the Text '{PLAN_TEXT}' with the plan the crowd plays is gone: Apply again")
     if _crowd_plan[0] != block.get(REVISION) or _crowd_plan[1] is None:
-        _crowd_plan = (block.get(REVISION), native.load().parse_plan(plan_store.unpack(block.as_string()), PLAN_TEXT))
+        try:
+            plan = native.load().parse_plan(plan_store.unpack(block.as_string()), PLAN_TEXT)
+        except ValueError as error:
+            raise LiveMotionError(f"{error}: Apply again") from error
+        _crowd_plan = (block.get(REVISION), plan)
     return _crowd_plan[1]
 
 
-def _motion(armature) -> Optional[_Motion]:
-    """The armature's motion, sampled anew from the crowd's plan if not held."""
+def _motion(armature, key: str) -> _Motion:
+    """The motion of `armature` (its `key`), sampled anew from the crowd's
+    plan if not held."""
+    if key in _motions:
+        return _motions[key]
     live = armature[LIVE]
-    key = live["id"]
-    if key in _motions or key in _failed:
-        return _motions.get(key)
     try:
-        agent = next((a for a in _plan().agents if a.name == live["agent"]), None)
-        if agent is None:
-            raise LiveMotionError(f"the crowd's plan has no agent '{live['agent']}': Apply again")
-        frames = numpy.arange(live["first"], live["first"] + live["count"], dtype=float)
-        channels = animate.motion_of(native.load(), agent, _rest_from_dict(json.loads(live["rest"])), frames, live["fps"],
-                                     live["speed"])[0]
-    except ValueError as error:
-        _failed.add(key)
-        print(f"Footfall: '{armature.name}' stands still: {error}")
-        return None
-    _motions[key] = _Motion(live["first"], channels)
+        name, first, count, fps, speed = (live[k] for k in ("agent", "first", "count", "fps", "speed"))
+        rest = _rest_from_dict(json.loads(live["rest"]))
+    except (KeyError, TypeError, ValueError) as error:
+        raise LiveMotionError(f"its property '{LIVE}' is damaged ({error!r}): Apply again") from error
+    agent = next((a for a in _plan().agents if a.name == name), None)
+    if agent is None:
+        raise LiveMotionError(f"the crowd's plan has no agent '{name}': Apply again")
+    frames = numpy.arange(first, first + count, dtype=float)
+    _motions[key] = _Motion(first, animate.motion_of(native.load(), agent, rest, frames, fps, speed)[0])
     return _motions[key]
 
 
 def pose_crowd(scene) -> None:
-    """Poses every live armature at the scene's frame."""
+    """Poses every live armature at the scene's frame; one that cannot be
+    posed stands, and the console says why, once."""
     frame = scene.frame_current + scene.frame_subframe
     for armature in live_armatures():
-        motion = _motion(armature)
-        if motion is not None:
-            motion.pose(armature, frame)
+        key = armature[LIVE].get("id")
+        if key in _failed:
+            continue
+        try:
+            if key is None:
+                raise LiveMotionError(f"its property '{LIVE}' is damaged (no id): Apply again")
+            _motion(armature, key).pose(armature, frame)
+        except LiveMotionError as error:
+            _failed.add(key)
+            print(f"Footfall: '{armature.name}' stands still: {error}")
 
 
 @persistent
