@@ -149,6 +149,21 @@ struct Options {
   bool animate_given = false;  ///< any of --rig, --profile, --fps
 };
 
+// Names the agents planned again (`names`) whose plans overlap others or
+// obstacles: the fixed agents make way for no one, and in a dense crowd one
+// planned again may have to stand where they walk.
+void warn_of_overlaps(const footfall::Plan& plan, const std::vector<std::string>& names,
+                      std::ostream& out) {
+  const footfall::PlanMetrics metrics = footfall::measure_plan(plan);
+  for (const footfall::AgentMetrics& agent : metrics.agents) {
+    if (agent.overlaps == 0 || std::find(names.begin(), names.end(), agent.name) == names.end())
+      continue;
+    out << "footfall: warning: agent " << user_text(agent.name) << " planned again overlaps "
+        << "others or obstacles at " << agent.overlaps << " samples (" << metrics.rate
+        << " Hz): the fixed agents make way for no one; plan every agent\n";
+  }
+}
+
 // The named agents planned again among the others' plans in `fixed` (read
 // from --fixed); the core's "fixed" and "agents" fields are named as the
 // file and the flag.
@@ -201,6 +216,7 @@ int plan_and_write(const footfall::Scenario& scenario, const Options& options) {
             << 1000.0 * search_seconds / static_cast<double>(std::max(1L, searches))
             << " ms each\n";
   std::cout << "plan written to " << output << "\n";
+  if (!options.fixed.empty()) warn_of_overlaps(plan, options.agents, std::cerr);
   if (!options.glb.empty()) footfall::tools::animate_and_write(plan, options.animate, options.glb, std::cout);
   return 0;
 }

@@ -624,6 +624,32 @@ class RecordingOperator:
         self.reports.append((levels, message))
 
 
+def test_planning_an_agent_again_where_fixed_agents_walk_names_it():
+    """The agents not selected keep their plans and make way for no one: bo,
+    kept at his start for 10 s, stands where ann walks once he had gone. The
+    plan is stored, and the report and the panel's outcome name him."""
+    from footfall.bridge import plan_store, scene_build
+    from footfall.ui import scene_operators
+
+    fresh_scene()
+    scene = bpy.context.scene
+    scene_build.build(scene, {"format": "footfall-scenario", "version": 1, "agents": [
+        {"name": "ann", "position": [0, 0], "goals": [[10, 0]], "start_delay": 3.0},
+        {"name": "bo", "position": [6, 0], "facing": 1.5708, "goals": [[6, 5]]}]}, "crossing")
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+    check("overlapping" not in scene[plan_store.OUTCOME], scene[plan_store.OUTCOME])
+    bpy.data.objects["bo"]["footfall_start_delay"] = 10.0
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(obj.name == "bo")
+    stand_in = RecordingOperator(selected_only=True)
+    check(scene_operators.FOOTFALL_OT_plan.execute(stand_in, bpy.context) == {"FINISHED"}, "plan again failed")
+    (levels, message), = stand_in.reports
+    check(levels == {"WARNING"} and "overlapping others: 'bo' (" in message and "ann'" not in message, message)
+    check("overlapping others: 'bo'" in scene[plan_store.OUTCOME], scene[plan_store.OUTCOME])
+    moving = [s for s in plan_store.load_plan().agents[1].footsteps if math.dist(s.com_start, s.com_end) > 0.01]
+    check(moving[0].start_time >= 9.9, f"bo's new plan was not stored: he sets off at {moving[0].start_time} s")
+
+
 def test_failing_operators_report_and_cancel():
     """Every operator, of either module, fails alike: one ERROR report with the
     message, {'CANCELLED'} returned (bpy.ops raises on the report and hides what
@@ -855,7 +881,7 @@ run([test_load_builds_the_conventions_and_extracts_back, test_obstacles_keep_the
      test_plan_is_stored_and_saved_with_the_file, test_the_plan_names_those_that_did_not_arrive,
      test_an_agents_own_speed_and_start, test_randomize_draws_speeds_and_rigs_for_the_selected_agents,
      test_scatter_places_agents_clear_of_obstacles_and_each_other, test_the_plan_is_out_of_date_once_the_scene_changes,
-     test_errors_leave_the_scene_as_it_was,
+     test_errors_leave_the_scene_as_it_was, test_planning_an_agent_again_where_fixed_agents_walk_names_it,
      test_failing_operators_report_and_cancel, test_steersuite_case_loads, test_the_overlay_draws_the_stored_plan,
      test_the_agent_panel_sets_and_shows_an_agents_properties, test_an_agent_turns_as_its_last_goal_is_turned,
      test_an_agent_faces_a_goal_it_waits_at_as_that_goal_is_turned])

@@ -199,6 +199,7 @@ def test_plan_again_the_named_agents_among_the_fixed_plans_of_the_others(cli, tm
     assert after[0]["status"] == "reached"
     assert after[0]["footsteps"][-1]["com_end"][1] == pytest.approx(1, abs=0.25)  # it was at 0
     assert "five-circle overlaps: 0" in run(cli, "metrics", str(again)).stdout
+    assert "warning" not in result.stderr
 
     missing = run(cli, "plan", str(scenario), "--fixed", str(again), "--agents", "dee", "-o", str(tmp_path / "x.json"))
     assert missing.returncode == 2
@@ -212,3 +213,26 @@ def test_plan_again_the_named_agents_among_the_fixed_plans_of_the_others(cli, tm
     assert unplanned.stderr.splitlines() == [
         f"footfall: {only_ann}: has no plan for agent 'bo', which is not among the agents to plan"]
     assert not (tmp_path / "x.json").exists()
+
+
+def test_an_agent_planned_again_where_fixed_agents_walk_is_named(cli, tmp_path):
+    """Fixed agents make way for no one: bo, kept at his start for 10 s, stands
+    where ann's fixed plan walks once he had gone; the plan is written, and bo
+    is named."""
+    walkers = [{"name": "ann", "position": [0, 0], "goals": [[10, 0]], "start_delay": 3.0},
+               {"name": "bo", "position": [6, 0], "facing": 1.5708, "goals": [[6, 5]]}]
+    scenario = tmp_path / "crossing.json"
+    scenario.write_text(scenario_json(agents=walkers))
+    first = tmp_path / "first.json"
+    assert run(cli, "plan", str(scenario), "-o", str(first)).returncode == 0
+    assert "five-circle overlaps: 0" in run(cli, "metrics", str(first)).stdout
+    walkers[1]["start_delay"] = 10.0
+    scenario.write_text(scenario_json(agents=walkers))
+    again = tmp_path / "again.json"
+    result = run(cli, "plan", str(scenario), "--fixed", str(first), "--agents", "bo", "-o", str(again))
+    assert result.returncode == 0, result.stderr
+    assert again.exists()
+    warnings = [line for line in result.stderr.splitlines() if "warning" in line]
+    assert len(warnings) == 1 and warnings[0].startswith("footfall: warning: agent 'bo' planned again overlaps "
+                                                         "others or obstacles at "), result.stderr
+    assert "five-circle overlaps: 0" not in run(cli, "metrics", str(again)).stdout

@@ -1,6 +1,6 @@
 """The plan's outcome as the Plan operator and the panel report it."""
 
-from footfall.core.plan_report import NAMED, outcome
+from footfall.core.plan_report import NAMED, outcome, overlapping
 
 
 def test_all_reached_is_one_count():
@@ -17,3 +17,13 @@ def test_a_long_list_is_cut_short_and_counted():
     text = outcome(agents)
     assert text.count("(stuck)") == NAMED and text.endswith("and 3 more")
     assert text.startswith(f"0/{NAMED + 3} agents")
+
+
+def test_only_agents_planned_again_that_overlap_are_named():
+    agents = [("ann", 14), ("bo", 12), ("cy", 0)]
+    assert overlapping(agents, {"cy"}, 20.0) == ""
+    text = overlapping(agents, {"bo", "cy"}, 20.0)
+    assert text.startswith("; overlapping others: 'bo' (12 samples at 20 Hz): ") and "ann" not in text
+    assert text.endswith("plan every agent")
+    many = overlapping([(f"a{i}", 1) for i in range(NAMED + 2)], {f"a{i}" for i in range(NAMED + 2)}, 20.0)
+    assert many.count("(1 samples") == NAMED and "and 2 more" in many

@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """What a plan's outcome says to the user: how many agents reached their
-goals, and which did not, and why."""
+goals, and which did not, and why; after a Plan of the selected agents,
+which of them overlap others."""
 
-from typing import Sequence, Tuple
+from typing import Collection, Sequence, Tuple
 
 NAMED = 5  # agents named at most; the rest are counted
 NOT_THERE = "; not there: "  # where the outcome goes on to name those that did not arrive
@@ -15,6 +16,23 @@ def outcome(agents: Sequence[Tuple[str, bool, str]]) -> str:
     text = f"{len(agents) - len(missing)}/{len(agents)} agents reached their goals"
     if not missing:
         return text
-    named = ", ".join(f"'{name}' ({reason or 'partial'})" for name, reason in missing[:NAMED])
-    more = f" and {len(missing) - NAMED} more" if len(missing) > NAMED else ""
-    return f"{text}{NOT_THERE}{named}{more}"
+    return text + NOT_THERE + _listed([f"'{name}' ({reason or 'partial'})" for name, reason in missing])
+
+
+def _listed(items: Sequence[str]) -> str:
+    """The first NAMED of `items`, then how many more."""
+    more = f" and {len(items) - NAMED} more" if len(items) > NAMED else ""
+    return ", ".join(items[:NAMED]) + more
+
+
+def overlapping(agents: Sequence[Tuple[str, int]], planned: Collection[str], rate: float) -> str:
+    """`agents`: (name, overlap samples) per agent (measure_plan at `rate`
+    Hz); `planned`: the agents planned again among the others' fixed plans.
+    "; overlapping others: 'bo' (12 samples at 20 Hz), ...: ..." naming
+    those of `planned` that overlap, or "" if none do."""
+    found = [(name, count) for name, count in agents if count > 0 and name in planned]
+    if not found:
+        return ""
+    named = _listed([f"'{name}' ({count} samples at {rate:g} Hz)" for name, count in found])
+    return (f"; overlapping others: {named}: the agents not selected keep their plans and make way for no "
+            "one; plan every agent")

@@ -91,16 +91,21 @@ def _store(operator, context, result, names, seconds, read_at: int):
     """Stores the plan of the scene as it was at change count `read_at`
     (plan_watch) and reports its outcome on `operator`."""
     from ..bridge import plan_store, plan_watch
-    from ..core.plan_report import outcome
+    from ..core.plan_report import outcome, overlapping
 
     ff = native.load()
     plan_store.store(ff.plan_to_json(result), result)
     plan_store.mark_planned(context.scene, names)
     plan_watch.mark_planned(context.scene, read_at)
-    said = outcome([(a.name, a.status == ff.AgentStatus.REACHED, a.reason) for a in result.agents])
+    clashes = ""
+    if names:  # fixed agents make way for no one: say who overlaps them
+        metrics = ff.measure_plan(result)
+        clashes = overlapping([(m.name, m.overlaps) for m in metrics.agents], set(names), metrics.rate)
+    said = outcome([(a.name, a.status == ff.AgentStatus.REACHED, a.reason) for a in result.agents]) + clashes
     context.scene[plan_store.OUTCOME] = said
     steps = sum(len(agent.footsteps) for agent in result.agents)
-    level = "INFO" if all(a.status == ff.AgentStatus.REACHED for a in result.agents) else "WARNING"
+    fine = all(a.status == ff.AgentStatus.REACHED for a in result.agents) and not clashes
+    level = "INFO" if fine else "WARNING"
     again = f"planned {', '.join(map(repr, names))} again among the others; " if names else ""
     operator.report({level}, f"{again}{said}; {steps} footsteps, planned in {seconds:.2f} s; stored in the Text "
                              f"'{plan_store.TEXT_NAME}'")
