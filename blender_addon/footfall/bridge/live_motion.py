@@ -126,14 +126,20 @@ def live_armatures():
     return [obj for obj in (crowd.objects if crowd else ()) if obj.type == "ARMATURE" and LIVE in obj]
 
 
+def _forget_gone() -> list:
+    """Forgets the motion of armatures gone (it holds a few MB each); returns
+    the live armatures."""
+    live = live_armatures()
+    kept = {obj[LIVE].get("id") for obj in live}
+    for key in [k for k in _motions if k not in kept]:
+        del _motions[key]
+    return live
+
+
 def tidy() -> None:
     """Forgets the motion of armatures gone, and the crowd's plan once no
     armature plays it live."""
-    live = live_armatures()
-    kept = {obj[LIVE]["id"] for obj in live}
-    for key in [k for k in _motions if k not in kept]:
-        del _motions[key]
-    if not live and PLAN_TEXT in bpy.data.texts:
+    if not _forget_gone() and PLAN_TEXT in bpy.data.texts:
         bpy.data.texts.remove(bpy.data.texts[PLAN_TEXT])
 
 
@@ -200,14 +206,22 @@ def _on_load(*_) -> None:
     _crowd_plan = (None, None)
 
 
+@persistent
+def _on_undo(*_) -> None:
+    _forget_gone()  # an Apply undone: its crowd's motion goes too
+
+
+_HANDLERS = (("frame_change_pre", _on_frame_change), ("load_post", _on_load), ("undo_post", _on_undo))
+
+
 def register() -> None:
-    bpy.app.handlers.frame_change_pre.append(_on_frame_change)
-    bpy.app.handlers.load_post.append(_on_load)
+    for kind, handler in _HANDLERS:
+        getattr(bpy.app.handlers, kind).append(handler)
 
 
 def unregister() -> None:
-    for handlers, handler in ((bpy.app.handlers.frame_change_pre, _on_frame_change),
-                              (bpy.app.handlers.load_post, _on_load)):
+    for kind, handler in _HANDLERS:
+        handlers = getattr(bpy.app.handlers, kind)
         if handler in handlers:
             handlers.remove(handler)
 
