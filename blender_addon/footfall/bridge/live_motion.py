@@ -43,15 +43,15 @@ class _Motion:
     """One armature's locomotion at every frame from `first`: a row per
     frame of the driven bones' locations, then their quaternions."""
 
-    PATHS = (("location", 3), ("rotation_quaternion", 4))
+    PATHS = (("location", 3, "locations"), ("rotation_quaternion", 4, "quaternions"))  # and Keyed's field
 
     def __init__(self, first: int, channels: Dict[str, animate.Keyed]):
         self.first = first
-        self.bones = {path: [bone for bone, keyed in channels.items() if getattr(keyed, kind) is not None]
-                      for (path, _), kind in zip(self.PATHS, ("locations", "quaternions"))}
-        self.rows = numpy.hstack([channels[bone].locations for bone in self.bones["location"]] +
-                                 [channels[bone].quaternions for bone in self.bones["rotation_quaternion"]]
-                                 ).astype(numpy.float32)  # a crowd's rows take hundreds of MB
+        self.bones = {path: [bone for bone, keyed in channels.items() if getattr(keyed, field) is not None]
+                      for path, _, field in self.PATHS}
+        # float32: 200 agents for 5,000 frames take some 150 MB.
+        self.rows = numpy.hstack([getattr(channels[bone], field) for path, _, field in self.PATHS
+                                  for bone in self.bones[path]]).astype(numpy.float32)
         self._places = {}  # bone count -> where the driven values go in such an armature's pose arrays
 
     def row(self, frame: float) -> numpy.ndarray:
@@ -74,7 +74,7 @@ class _Motion:
             if missing:
                 raise LiveMotionError(f"its bone '{missing[0]}' is gone")
             self._places[count] = [numpy.array([width * index[b] + k for b in self.bones[path] for k in range(width)],
-                                               dtype=int) for path, width in self.PATHS]
+                                               dtype=int) for path, width, _ in self.PATHS]
         return self._places[count]
 
     def pose(self, armature, frame: float) -> None:
@@ -83,7 +83,7 @@ class _Motion:
         bones = armature.pose.bones
         values = self.row(frame)
         arrays, changed, column = [], False, 0
-        for (path, width), places in zip(self.PATHS, self._places_in(bones)):
+        for (path, width, _), places in zip(self.PATHS, self._places_in(bones)):
             array = numpy.empty(width * len(bones), dtype=numpy.float32)
             bones.foreach_get(path, array)
             wanted = values[column:column + len(places)]
