@@ -220,6 +220,26 @@ def live_armatures():
     return live_motion.live_armatures()
 
 
+def test_a_live_apply_stopped_part_way_leaves_the_crowd_as_it_was():
+    from footfall.bridge import apply_plan
+
+    demo_planned()
+    check(bpy.ops.footfall.apply(live=True) == {"FINISHED"}, "live apply failed")
+
+    def inventory():
+        return {kind: sorted(block.name for block in getattr(bpy.data, kind))
+                for kind in ("objects", "armatures", "actions", "texts")}
+
+    before, poses = inventory(), crowd_bones(frames_across())
+    job = apply_plan.ApplyJob(bpy.context, live=True)
+    check(job.advance() and job.advance(), "the demo has more than two agents")
+    job.cancel()
+    check(inventory() == before, f"a stopped live Apply changed the scene: {inventory()} against {before}")
+    after = crowd_bones(frames_across())
+    worst = max((after[key] - poses[key]).length for key in poses)
+    check(worst <= 1e-6, f"after a stopped live Apply a bone is {worst * 1000:.3f} mm from where it was")
+
+
 def test_a_keyed_apply_replaces_the_live_crowd_and_its_plan():
     from footfall.bridge import live_motion
 
@@ -234,4 +254,5 @@ run([test_a_live_crowd_moves_as_the_keyed_one, test_a_live_crowd_plays_the_same_
      test_a_live_crowd_without_its_plan_stands_and_says_why,
      test_a_live_apply_after_planning_one_agent_again_keeps_the_others_live,
      test_a_render_poses_the_live_crowd_at_the_frame_it_renders,
+     test_a_live_apply_stopped_part_way_leaves_the_crowd_as_it_was,
      test_a_keyed_apply_replaces_the_live_crowd_and_its_plan])
