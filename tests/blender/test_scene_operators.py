@@ -650,6 +650,23 @@ def test_planning_an_agent_again_where_fixed_agents_walk_names_it():
     check(moving[0].start_time >= 9.9, f"bo's new plan was not stored: he sets off at {moving[0].start_time} s")
 
 
+def test_the_panel_says_how_the_crowd_is_animated():
+    from footfall.bridge import scene_build
+
+    fresh_scene()
+    check(bpy.ops.footfall.import_rig(filepath=str(ROOT / "rigs" / "footfall_humanoid.glb")) == {"FINISHED"},
+          "rig import failed")
+    scene_build.build(bpy.context.scene, {"format": "footfall-scenario", "version": 1, "agents": [
+        {"name": "ann", "position": [0, 0], "goals": [[3, 0]]}, {"name": "bo", "position": [0, 2], "goals": [[3, 2]]}]},
+        "two")
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+    check(not [line for line in panel_lines() if line.startswith("Crowd:")], panel_lines())
+    check(bpy.ops.footfall.apply(live=True) == {"FINISHED"}, "live apply failed")
+    check("Crowd: 2 agents live (posed from the plan at each frame)" in panel_lines(), panel_lines())
+    check(bpy.ops.footfall.apply() == {"FINISHED"}, "apply failed")
+    check("Crowd: 2 agents keyed" in panel_lines(), panel_lines())
+
+
 def test_failing_operators_report_and_cancel():
     """Every operator, of either module, fails alike: one ERROR report with the
     message, {'CANCELLED'} returned (bpy.ops raises on the report and hides what
@@ -882,6 +899,7 @@ run([test_load_builds_the_conventions_and_extracts_back, test_obstacles_keep_the
      test_an_agents_own_speed_and_start, test_randomize_draws_speeds_and_rigs_for_the_selected_agents,
      test_scatter_places_agents_clear_of_obstacles_and_each_other, test_the_plan_is_out_of_date_once_the_scene_changes,
      test_errors_leave_the_scene_as_it_was, test_planning_an_agent_again_where_fixed_agents_walk_names_it,
+     test_the_panel_says_how_the_crowd_is_animated,
      test_failing_operators_report_and_cancel, test_steersuite_case_loads, test_the_overlay_draws_the_stored_plan,
      test_the_agent_panel_sets_and_shows_an_agents_properties, test_an_agent_turns_as_its_last_goal_is_turned,
      test_an_agent_faces_a_goal_it_waits_at_as_that_goal_is_turned])

@@ -126,6 +126,18 @@ def live_armatures():
     return [obj for obj in (crowd.objects if crowd else ()) if obj.type == "ARMATURE" and LIVE in obj]
 
 
+def crowd_state() -> str:
+    """How the crowd is animated, for the panel ("" without a crowd)."""
+    crowd = bpy.data.collections.get(animate.CROWD_COLLECTION)
+    armatures = [obj for obj in (crowd.objects if crowd else ()) if obj.type == "ARMATURE"]
+    if not armatures:
+        return ""
+    live = sum(LIVE in obj for obj in armatures)
+    if live == len(armatures):
+        return f"Crowd: {live} agents live (posed from the plan at each frame)"
+    return f"Crowd: {len(armatures) - live} agents keyed" + (f", {live} live" if live else "")
+
+
 def _forget_gone() -> list:
     """Forgets the motion of armatures gone (it holds a few MB each); returns
     the live armatures."""

@@ -72,6 +72,11 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
             use.armature = active.name
         self.layout.operator("footfall.apply", icon="ANIM")
         self.layout.operator("footfall.apply", text="Apply Live", icon="PLAY").live = True
+        from ..bridge.live_motion import crowd_state
+
+        state = crowd_state()
+        if state:
+            self.layout.label(text=state)
         self.layout.operator("footfall.export_gltf", icon="EXPORT")
 
 
