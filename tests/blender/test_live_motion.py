@@ -47,18 +47,30 @@ def demo_planned():
 
 def crowd_bones(frames):
     """Every crowd bone's head in the world at each of `frames`: {(frame, agent, bone): position}."""
-    from footfall.bridge import export
+    from footfall.bridge import animate
 
     scene = bpy.context.scene
     heads = {}
     for frame in frames:
         scene.frame_set(frame)
         depsgraph = bpy.context.evaluated_depsgraph_get()
-        for armature in export.crowd_armatures():
+        for armature in animate.crowd_armatures():
             posed = armature.evaluated_get(depsgraph)
             for bone in posed.pose.bones:
                 heads[(frame, armature.name, bone.name)] = (posed.matrix_world @ bone.head).copy()
     return heads
+
+
+def farthest(after, before, keys=None) -> float:
+    """How far apart the positions of `after` and `before` come, over `keys` (all of `before`'s)."""
+    return max((after[key] - before[key]).length for key in (before if keys is None else keys))
+
+
+def saved_and_opened(name: str) -> None:
+    """Saves the file as `name` in TMP and opens it again, as an animator would."""
+    path = TMP / name
+    bpy.ops.wm.save_as_mainfile(filepath=str(path))
+    bpy.ops.wm.open_mainfile(filepath=str(path))
 
 
 def key_count() -> int:
@@ -116,12 +128,10 @@ def test_a_live_crowd_plays_the_same_in_the_file_opened_again():
     demo_planned()
     check(bpy.ops.footfall.apply(live=True) == {"FINISHED"}, "live apply failed")
     before = crowd_bones(frames_across())
-    path = TMP / "live.blend"
-    bpy.ops.wm.save_as_mainfile(filepath=str(path))
-    bpy.ops.wm.open_mainfile(filepath=str(path))
+    saved_and_opened("live.blend")
     check(live_motion.PLAN_TEXT in bpy.data.texts, "the crowd's plan was not saved")
     after = crowd_bones(frames_across())
-    worst = max((after[key] - before[key]).length for key in before)
+    worst = farthest(after, before)
     check(worst <= 1e-5, f"opened again, a bone is {worst * 1000:.3f} mm from where it was")
 
 
@@ -130,10 +140,8 @@ def test_a_live_crowd_without_its_plan_stands_and_says_why():
 
     demo_planned()
     check(bpy.ops.footfall.apply(live=True) == {"FINISHED"}, "live apply failed")
-    path = TMP / "no-plan.blend"
     bpy.data.texts.remove(bpy.data.texts[live_motion.PLAN_TEXT])
-    bpy.ops.wm.save_as_mainfile(filepath=str(path))
-    bpy.ops.wm.open_mainfile(filepath=str(path))
+    saved_and_opened("no-plan.blend")
     frames = frames_across()
     said = io.StringIO()
     with contextlib.redirect_stdout(said):
@@ -170,11 +178,9 @@ def test_a_live_apply_after_planning_one_agent_again_keeps_the_others_live():
     check(bpy.ops.footfall.apply(live=True) == {"FINISHED"}, "live apply failed")
     check(crowd.objects["bob"].as_pointer() == bob, "bob's rig was made again")
     check(len(live_motion.live_armatures()) == 2, "not both armatures are live")
-    path = TMP / "replanned.blend"
-    bpy.ops.wm.save_as_mainfile(filepath=str(path))
-    bpy.ops.wm.open_mainfile(filepath=str(path))
+    saved_and_opened("replanned.blend")
     after = crowd_bones(frames_across())
-    bob_moved = max((after[key] - bob_before[key]).length for key in bob_before if key[1] == "bob")
+    bob_moved = farthest(after, bob_before, [key for key in bob_before if key[1] == "bob"])
     check(bob_moved <= 1e-5, f"bob moves {bob_moved * 1000:.3f} mm otherwise after ann was planned again")
     ann_end = [a for a in plan_store.load_plan().agents if a.name == "ann"][0].footsteps[-1].com_end
     scene = bpy.context.scene
@@ -210,7 +216,7 @@ def test_a_render_poses_the_live_crowd_at_the_frame_it_renders():
     finally:
         bpy.app.handlers.render_post.remove(record)
     check(rendered.keys() == expected.keys(), f"rendered {sorted(rendered)}, expected {sorted(expected)}")
-    worst = max((rendered[name] - expected[name]).length for name in expected)
+    worst = farthest(rendered, expected)
     check(worst <= 1e-6, f"a rendered agent's hips are {worst:.3f} from where frame {frame} puts them")
 
 
@@ -236,7 +242,7 @@ def test_a_live_apply_stopped_part_way_leaves_the_crowd_as_it_was():
     job.cancel()
     check(inventory() == before, f"a stopped live Apply changed the scene: {inventory()} against {before}")
     after = crowd_bones(frames_across())
-    worst = max((after[key] - poses[key]).length for key in poses)
+    worst = farthest(after, poses)
     check(worst <= 1e-6, f"after a stopped live Apply a bone is {worst * 1000:.3f} mm from where it was")
 
 

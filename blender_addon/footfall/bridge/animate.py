@@ -406,6 +406,12 @@ def _locomotion(ff, agent, rest: RigRest, times, facing, full_speed: float):
     return channels
 
 
+def crowd_armatures() -> List[bpy.types.Object]:
+    """The armatures that footfall.apply made."""
+    collection = bpy.data.collections.get(CROWD_COLLECTION)
+    return [o for o in collection.objects if o.type == "ARMATURE"] if collection else []
+
+
 def own_actions(obj) -> List[bpy.types.Action]:
     """The actions Apply made for an instance: its locomotion and look-ahead
     (the clips its strips play are the rig's, shared)."""

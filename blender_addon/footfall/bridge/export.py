@@ -37,12 +37,6 @@ class ExportError(ValueError):
     """Nothing to export, or the exporter failed; the message says which."""
 
 
-def crowd_armatures():
-    """The armatures that footfall.apply made."""
-    collection = bpy.data.collections.get(animate.CROWD_COLLECTION)
-    return [o for o in collection.objects if o.type == "ARMATURE"] if collection else []
-
-
 def _exporter_options(filepath: str) -> dict:
     """Options for Blender 3.4's exporter, and for 4.x where they were renamed:
     the selected objects and their skins, without animation."""
@@ -179,7 +173,7 @@ def _export_still_crowd(filepath: str, copies: List[bpy.types.Object]) -> None:
 def export_crowd(filepath: str, scene, progress: Optional[Callable[[float], None]] = None) -> int:
     """Bakes and exports every agent animated by apply; returns how many.
     `progress` gets the share of the bake done, from 0 to 1."""
-    armatures = crowd_armatures()
+    armatures = animate.crowd_armatures()
     if not armatures:
         raise ExportError("Nothing to export: apply a plan first (Footfall > Apply Plan)")
     folder = os.path.dirname(os.path.abspath(filepath))

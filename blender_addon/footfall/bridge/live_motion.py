@@ -122,14 +122,12 @@ def store_plan(packed: str) -> None:
 
 def live_armatures():
     """The crowd's armatures posed live."""
-    crowd = bpy.data.collections.get(animate.CROWD_COLLECTION)
-    return [obj for obj in (crowd.objects if crowd else ()) if obj.type == "ARMATURE" and LIVE in obj]
+    return [obj for obj in animate.crowd_armatures() if LIVE in obj]
 
 
 def crowd_state() -> str:
     """How the crowd is animated, for the panel ("" without a crowd)."""
-    crowd = bpy.data.collections.get(animate.CROWD_COLLECTION)
-    armatures = [obj for obj in (crowd.objects if crowd else ()) if obj.type == "ARMATURE"]
+    armatures = animate.crowd_armatures()
     if not armatures:
         return ""
     live = sum(LIVE in obj for obj in armatures)
