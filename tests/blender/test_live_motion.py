@@ -45,6 +45,12 @@ def demo_planned():
     return ff, plan_store.load_plan()
 
 
+def demo_applied_live():
+    """The demo planned and applied live."""
+    demo_planned()
+    check(bpy.ops.footfall.apply(live=True) == {"FINISHED"}, "live apply failed")
+
+
 def crowd_bones(frames):
     """Every crowd bone's head in the world at each of `frames`: {(frame, agent, bone): position}."""
     from footfall.bridge import animate
@@ -125,8 +131,7 @@ def test_a_live_crowd_moves_as_the_keyed_one():
 def test_a_live_crowd_plays_the_same_in_the_file_opened_again():
     from footfall.bridge import live_motion
 
-    demo_planned()
-    check(bpy.ops.footfall.apply(live=True) == {"FINISHED"}, "live apply failed")
+    demo_applied_live()
     before = crowd_bones(frames_across())
     saved_and_opened("live.blend")
     check(live_motion.PLAN_TEXT in bpy.data.texts, "the crowd's plan was not saved")
@@ -138,8 +143,7 @@ def test_a_live_crowd_plays_the_same_in_the_file_opened_again():
 def test_a_live_crowd_without_its_plan_stands_and_says_why():
     from footfall.bridge import live_motion
 
-    demo_planned()
-    check(bpy.ops.footfall.apply(live=True) == {"FINISHED"}, "live apply failed")
+    demo_applied_live()
     bpy.data.texts.remove(bpy.data.texts[live_motion.PLAN_TEXT])
     saved_and_opened("no-plan.blend")
     frames = frames_across()
@@ -191,8 +195,7 @@ def test_a_live_apply_after_planning_one_agent_again_keeps_the_others_live():
 
 
 def test_a_render_poses_the_live_crowd_at_the_frame_it_renders():
-    demo_planned()
-    check(bpy.ops.footfall.apply(live=True) == {"FINISHED"}, "live apply failed")
+    demo_applied_live()
     scene = bpy.context.scene
     hips = imported_rig()[1].bones["hips"]
     frame = (scene.frame_start + scene.frame_end) // 2
@@ -229,8 +232,7 @@ def live_armatures():
 def test_a_live_apply_stopped_part_way_leaves_the_crowd_as_it_was():
     from footfall.bridge import apply_plan
 
-    demo_planned()
-    check(bpy.ops.footfall.apply(live=True) == {"FINISHED"}, "live apply failed")
+    demo_applied_live()
 
     def inventory():
         return {kind: sorted(block.name for block in getattr(bpy.data, kind))
@@ -249,8 +251,7 @@ def test_a_live_apply_stopped_part_way_leaves_the_crowd_as_it_was():
 def test_a_keyed_apply_replaces_the_live_crowd_and_its_plan():
     from footfall.bridge import live_motion
 
-    demo_planned()
-    check(bpy.ops.footfall.apply(live=True) == {"FINISHED"}, "live apply failed")
+    demo_applied_live()
     check(bpy.ops.footfall.apply() == {"FINISHED"}, "keyed apply failed")
     check(not live_motion.live_armatures(), "an armature is still posed live")
     check(live_motion.PLAN_TEXT not in bpy.data.texts, "the live crowd's plan was left behind")
