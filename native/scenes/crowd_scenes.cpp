@@ -135,4 +135,72 @@ Scenario box_field_crowd_scenario(int agents, int boxes, std::uint64_t seed) {
   return scenario;
 }
 
+namespace {
+
+/// The grid's period and how many blocks span a city of side `size`. [m]
+constexpr double kCityPeriod = kCityBlock + kCityStreet;
+int blocks_across(double size) {
+  const double blocks = size / kCityPeriod;
+  if (!(blocks >= 1.0 && blocks <= 1000.0) || std::abs(blocks - std::round(blocks)) > 1e-9)
+    throw std::invalid_argument("size: a city is " + std::to_string(kCityPeriod) +
+                                " m times 1-1000 blocks across");
+  return static_cast<int>(std::round(blocks));
+}
+
+/// Whether p (within the city) is on a street, `margin` clear of every block.
+bool on_street(Vec2 p, double size, double margin) {
+  const auto in_block = [&](double c) {
+    const double offset = std::fmod(c + 0.5 * size, kCityPeriod);  // from the block's street edge
+    const double lo = 0.5 * kCityStreet - margin, hi = 0.5 * kCityStreet + kCityBlock + margin;
+    return offset > lo && offset < hi;
+  };
+  return !(in_block(p.x) && in_block(p.y));
+}
+
+}  // namespace
+
+std::vector<Obstacle> city_blocks(double size) {
+  const int n = blocks_across(size);
+  std::vector<Obstacle> blocks;
+  blocks.reserve(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const Vec2 centre{-0.5 * size + (i + 0.5) * kCityPeriod,
+                        -0.5 * size + (j + 0.5) * kCityPeriod};
+      blocks.push_back(box_obstacle(centre, {kCityBlock, kCityBlock}, 3.0));
+    }
+  return blocks;
+}
+
+double city_street_area(double size) {
+  const double n = blocks_across(size);
+  return size * size - n * n * kCityBlock * kCityBlock;
+}
+
+Scenario city_scenario(int agents, double size, std::uint64_t seed) {
+  Scenario scenario;
+  scenario.obstacles = city_blocks(size);
+  // Far enough from the blocks that a standing body fits; the generator's
+  // Room checks it exactly.
+  constexpr double kKerb = 0.35;  // [m]
+  constexpr double kLeastTrip = 20.0;  // [m]
+  if (size * std::sqrt(2.0) < kLeastTrip + 2.0)
+    throw std::invalid_argument("size: a city under 20 m across has no trips of 20 m");
+  SeededRandom random(seed);
+  const auto street_point = [&] {
+    for (;;) {
+      const Vec2 p{random.uniform(-0.5 * size, 0.5 * size), random.uniform(-0.5 * size, 0.5 * size)};
+      if (on_street(p, size, kKerb)) return p;
+    }
+  };
+  add_agents(scenario, agents, true, [&] {
+    const Vec2 start = street_point();
+    Vec2 goal;
+    do goal = street_point();
+    while (distance(start, goal) < kLeastTrip);
+    return std::pair{start, goal};
+  });
+  return scenario;
+}
+
 }  // namespace footfall

@@ -41,4 +41,19 @@ Scenario two_way_hall_scenario(int agents, std::uint64_t seed, double width = 16
 /// walking 10-20 m in a random direction.
 Scenario box_field_crowd_scenario(int agents, int boxes, std::uint64_t seed);
 
+/// The blocks of a city: square blocks `kCityBlock` wide on a grid of streets
+/// `kCityStreet` wide, filling the square of side `size` centred on the
+/// origin (a multiple of kCityBlock + kCityStreet, the edge streets half as
+/// wide). Throws std::invalid_argument for a size out of range. [m]
+constexpr double kCityBlock = 6.0;
+constexpr double kCityStreet = 4.0;
+std::vector<Obstacle> city_blocks(double size);
+/// The street area of such a city (the square less its blocks). [m^2]
+double city_street_area(double size);
+/// A busy city's streets: `agents` at random on the streets of a city of
+/// side `size` (city_blocks), each walking to a random point of the
+/// streets at least 20 m away in a straight line and leaving there, as
+/// pedestrians crossing town in every direction do.
+Scenario city_scenario(int agents, double size, std::uint64_t seed);
+
 }  // namespace footfall

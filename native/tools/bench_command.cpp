@@ -7,8 +7,10 @@
 #include <iomanip>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "footfall/plan/metrics.hpp"
 #include "footfall/plan/plan.hpp"
 #include "footfall/planner/planner.hpp"
 #include "footfall/scenes/scenes.hpp"
@@ -107,21 +109,50 @@ void run_bench(int repeat, std::ostream& out) {
   out << "(" << repeat << " timed runs per plan; one core; plans start standing)\n";
 }
 
-void run_box_field_seeds(int first, int last, int threads, std::ostream& out) {
-  int short_of_goal = 0;
+namespace {
+
+/// Mean over the agents that reach of their time to the last goal over the
+/// straight line's from their start at the preferred speed.
+double mean_travel_over_alone(const Scenario& scenario, const Plan& plan) {
+  double sum = 0.0;
+  int counted = 0;
+  for (std::size_t i = 0; i < plan.agents.size(); ++i) {
+    const AgentPlan& agent = plan.agents[i];
+    const AgentSpec& spec = scenario.agents[i];
+    if (agent.status != AgentStatus::kReached) continue;
+    double route = 0.0;
+    Vec2 from = spec.position;
+    for (const Vec2 goal : spec.goals) route += distance(from, std::exchange(from, goal));
+    const double alone = route / character_of(agent, scenario.character).preferred_speed;
+    if (alone <= 0.0) continue;
+    sum += (agent.end_time() - spec.start_delay) / alone;
+    ++counted;
+  }
+  return counted > 0 ? sum / counted : 0.0;
+}
+
+}  // namespace
+
+void run_crowd_seeds(const std::function<Scenario(std::uint64_t)>& crowd, int first, int last,
+                     int threads, std::ostream& out) {
+  int short_of_goal = 0, overlapping = 0;
   for (int seed = first; seed <= last; ++seed) {
     RunControl control;
     control.threads = threads;
+    const Scenario scenario = crowd(static_cast<std::uint64_t>(seed));
     const auto begin = std::chrono::steady_clock::now();
-    const Scenario crowd = box_field_crowd_scenario(500, 700, static_cast<std::uint64_t>(seed));
-    const Plan plan = plan_scenario(crowd, control);
+    const Plan plan = plan_scenario(scenario, control);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     int reached = 0;
     for (const AgentPlan& agent : plan.agents)
       reached += agent.status == AgentStatus::kReached ? 1 : 0;
-    out << "seed " << seed << ": " << reached << " of " << plan.agents.size() << " reached ("
-        << std::fixed << std::setprecision(1) << seconds << " s)\n";
+    const int overlaps = measure_plan(plan).overlaps;
+    overlapping += overlaps;
+    out << "seed " << seed << ": " << reached << " of " << plan.agents.size() << " reached, "
+        << overlaps << " overlap samples, travel " << std::fixed << std::setprecision(2)
+        << mean_travel_over_alone(scenario, plan) << " x alone (" << std::setprecision(1)
+        << seconds << " s)\n";
     for (const AgentPlan& agent : plan.agents) {
       if (agent.status == AgentStatus::kReached) continue;
       ++short_of_goal;
@@ -130,8 +161,8 @@ void run_box_field_seeds(int first, int last, int threads, std::ostream& out) {
     }
     out.flush();
   }
-  out << short_of_goal << " agent(s) short of their goals over seeds " << first << "-" << last
-      << "\n";
+  out << short_of_goal << " agent(s) short of their goals and " << overlapping
+      << " overlap samples over seeds " << first << "-" << last << "\n";
 }
 
 void run_crowd_bench(int threads, int repeat, std::ostream& out) {

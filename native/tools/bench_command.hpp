@@ -3,7 +3,11 @@
 // workloads of the footstep paper's table 1.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <ostream>
+
+#include "footfall/crowd/scenario.hpp"
 
 namespace footfall::tools {
 
@@ -15,10 +19,13 @@ void run_bench(int repeat, std::ostream& out);
 /// agent per 20 Hz tick of the fastest run to `out` (the plans are the same
 /// every time; on a shared machine the fastest run is the least disturbed).
 void run_crowd_bench(int threads, int repeat, std::ostream& out);
-/// Plans the crowd of 500 among 700 boxes for each seed from `first` to
-/// `last` on `threads` threads and prints every agent that does not reach
-/// its goal (its reason and where it stopped), per seed, and their count.
-void run_box_field_seeds(int first, int last, int threads, std::ostream& out);
+/// Plans the crowd `crowd` makes of each seed from `first` to `last` on
+/// `threads` threads and prints, per seed, how many reach, the overlap
+/// samples (measure_plan), the mean travel time over the straight line's
+/// alone, the planning time, and every agent that does not reach its goal
+/// (its reason and where it stopped); last, their counts over the seeds.
+void run_crowd_seeds(const std::function<Scenario(std::uint64_t)>& crowd, int first, int last,
+                     int threads, std::ostream& out);
 /// Times the full-body behavioural planner on the paper's random
 /// environments (normal and dense, goals at 6 and 10 steps), the fastest of
 /// `repeat` runs per query.

@@ -69,6 +69,10 @@ const char* const kUsage =
     "       footfall bench --box-seeds FIRST-LAST [--threads N]\n"
     "                                         plan the 500 among 700 boxes for each seed and\n"
     "                                         list the agents that do not reach their goals\n"
+    "       footfall bench --city AGENTS,SIZE [--seeds FIRST-LAST] [--threads N]\n"
+    "                                         plan AGENTS crossing a city of SIZE m (6 m blocks,\n"
+    "                                         4 m streets) for each seed (default 1-1): reached,\n"
+    "                                         overlaps, travel time over alone, who is short\n"
     "       footfall bench --behaviors [--repeat N]\n"
     "                                         time the full-body planner in the random\n"
     "                                         environments (the fastest of N runs; default 5)\n"
@@ -411,7 +415,18 @@ int run(int argc, char** argv) {
   if (verb == "bench") {
     int repeat = 0, threads = 1;  // repeat 0: each kind's default
     bool crowds = false, behaviors = false;
-    std::optional<std::pair<int, int>> box_seeds;
+    std::optional<std::pair<int, int>> box_seeds, seeds;
+    std::optional<std::pair<int, double>> city;
+    const auto seed_range = [](const std::string& flag, const std::string& range) {
+      const std::size_t dash = range.find('-');
+      if (dash == std::string::npos)
+        throw UsageError(flag + ": give FIRST-LAST, as 1-200, not " + user_text(range));
+      const std::pair<int, int> out{parse_whole(flag, range.substr(0, dash), 0, 1000000000),
+                                    parse_whole(flag, range.substr(dash + 1), 0, 1000000000)};
+      if (out.first > out.second)
+        throw UsageError(flag + ": the first seed is after the last: " + user_text(range));
+      return out;
+    };
     for (int i = 2; i < argc; ++i) {
       const std::string arg = argv[i];
       if (arg == "--repeat" && i + 1 < argc) {
@@ -423,30 +438,43 @@ int run(int argc, char** argv) {
       } else if (arg == "--behaviors") {
         behaviors = true;
       } else if (arg == "--box-seeds" && i + 1 < argc) {
-        const std::string range = argv[++i];
-        const std::size_t dash = range.find('-');
-        if (dash == std::string::npos)
-          throw UsageError("--box-seeds: give FIRST-LAST, as 1-200, not " + user_text(range));
-        box_seeds = std::pair{parse_whole(arg, range.substr(0, dash), 0, 1000000000),
-                              parse_whole(arg, range.substr(dash + 1), 0, 1000000000)};
-        if (box_seeds->first > box_seeds->second)
-          throw UsageError("--box-seeds: the first seed is after the last: " + user_text(range));
+        box_seeds = seed_range(arg, argv[++i]);
+      } else if (arg == "--seeds" && i + 1 < argc) {
+        seeds = seed_range(arg, argv[++i]);
+      } else if (arg == "--city" && i + 1 < argc) {
+        const std::string value = argv[++i];
+        const std::size_t comma = value.find(',');
+        if (comma == std::string::npos)
+          throw UsageError("--city: give AGENTS,SIZE, as 1000,60, not " + user_text(value));
+        city = std::pair{parse_whole(arg, value.substr(0, comma), 1, 100000),
+                         parse_number(arg, value.substr(comma + 1))};
       } else {
         throw UsageError("unknown option or missing value: " + user_text(arg));
       }
     }
     const int kinds = static_cast<int>(crowds) + static_cast<int>(behaviors) +
-                      static_cast<int>(box_seeds.has_value());
+                      static_cast<int>(box_seeds.has_value()) + static_cast<int>(city.has_value());
     if (kinds > 1)
-      throw UsageError("bench: one of --crowds, --behaviors and --box-seeds");
-    if (box_seeds)
-      footfall::tools::run_box_field_seeds(box_seeds->first, box_seeds->second, threads, std::cout);
-    else if (behaviors)
+      throw UsageError("bench: one of --crowds, --behaviors, --box-seeds and --city");
+    if (seeds && !city) throw UsageError("bench: --seeds goes with --city");
+    if (box_seeds) {
+      footfall::tools::run_crowd_seeds(
+          [](std::uint64_t seed) { return footfall::box_field_crowd_scenario(500, 700, seed); },
+          box_seeds->first, box_seeds->second, threads, std::cout);
+    } else if (city) {
+      const auto [agents, size] = *city;
+      footfall::city_blocks(size);  // a size out of range is a usage error before any plan
+      const auto range = seeds.value_or(std::pair{1, 1});
+      footfall::tools::run_crowd_seeds(
+          [&](std::uint64_t seed) { return footfall::city_scenario(agents, size, seed); },
+          range.first, range.second, threads, std::cout);
+    } else if (behaviors) {
       footfall::tools::run_behavior_bench(repeat > 0 ? repeat : 5, std::cout);
-    else if (crowds)
+    } else if (crowds) {
       footfall::tools::run_crowd_bench(threads, repeat > 0 ? repeat : 1, std::cout);
-    else
+    } else {
       footfall::tools::run_bench(repeat > 0 ? repeat : 20, std::cout);
+    }
     return 0;
   }
   throw UsageError("unknown command " + user_text(verb));
