@@ -79,6 +79,8 @@ void bind_scenario(py::module_& m) {
   m.def("box_obstacle", &box_obstacle, py::arg("center"), py::arg("size"), py::arg("height") = 1.0);
   m.def("wall_with_door", &wall_with_door, py::arg("x"), py::arg("door_width"),
         py::arg("door_center") = 0.0, py::arg("half_length") = 6.0, py::arg("thickness") = 0.2);
+  m.def("city_scenario", &city_scenario, py::arg("agents"), py::arg("size"), py::arg("seed"),
+        "A busy city: agents crossing a grid of 6 m blocks and 4 m streets of side `size`.");
 
   py::class_<CancelFlag>(m, "CancelFlag", "Set it from another thread to stop plan_scenario.")
       .def(py::init<>())

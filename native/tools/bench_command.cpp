@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "footfall/io/plan_file.hpp"
 #include "footfall/plan/metrics.hpp"
 #include "footfall/plan/plan.hpp"
 #include "footfall/planner/planner.hpp"
@@ -134,7 +135,7 @@ double mean_travel_over_alone(const Scenario& scenario, const Plan& plan) {
 }  // namespace
 
 void run_crowd_seeds(const std::function<Scenario(std::uint64_t)>& crowd, int first, int last,
-                     int threads, std::ostream& out) {
+                     int threads, const std::string& plan_path, std::ostream& out) {
   int short_of_goal = 0, overlapping = 0;
   for (int seed = first; seed <= last; ++seed) {
     RunControl control;
@@ -160,6 +161,7 @@ void run_crowd_seeds(const std::function<Scenario(std::uint64_t)>& crowd, int fi
           << agent.stuck_at.x << ", " << agent.stuck_at.y << ")\n";
     }
     out.flush();
+    if (!plan_path.empty() && seed == last) write_plan_file(plan, plan_path);
   }
   out << short_of_goal << " agent(s) short of their goals and " << overlapping
       << " overlap samples over seeds " << first << "-" << last << "\n";

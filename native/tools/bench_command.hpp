@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <ostream>
+#include <string>
 
 #include "footfall/crowd/scenario.hpp"
 
@@ -24,8 +25,9 @@ void run_crowd_bench(int threads, int repeat, std::ostream& out);
 /// samples (measure_plan), the mean travel time over the straight line's
 /// alone, the planning time, and every agent that does not reach its goal
 /// (its reason and where it stopped); last, their counts over the seeds.
+/// Writes the last seed's plan to `plan_path` unless it is empty.
 void run_crowd_seeds(const std::function<Scenario(std::uint64_t)>& crowd, int first, int last,
-                     int threads, std::ostream& out);
+                     int threads, const std::string& plan_path, std::ostream& out);
 /// Times the full-body behavioural planner on the paper's random
 /// environments (normal and dense, goals at 6 and 10 steps), the fastest of
 /// `repeat` runs per query.

@@ -66,13 +66,14 @@ const char* const kUsage =
     "       footfall bench --crowds [--threads N] [--repeat N]\n"
     "                                         plan the crowd workloads of the paper's table 1\n"
     "                                         (the fastest of N runs each; default 1)\n"
-    "       footfall bench --box-seeds FIRST-LAST [--threads N]\n"
+    "       footfall bench --box-seeds FIRST-LAST [--threads N] [-o PLAN]\n"
     "                                         plan the 500 among 700 boxes for each seed and\n"
     "                                         list the agents that do not reach their goals\n"
-    "       footfall bench --city AGENTS,SIZE [--seeds FIRST-LAST] [--threads N]\n"
+    "       footfall bench --city AGENTS,SIZE [--seeds FIRST-LAST] [--threads N] [-o PLAN]\n"
     "                                         plan AGENTS crossing a city of SIZE m (6 m blocks,\n"
     "                                         4 m streets) for each seed (default 1-1): reached,\n"
     "                                         overlaps, travel time over alone, who is short\n"
+    "                                         (-o: the last seed's plan, here and --box-seeds)\n"
     "       footfall bench --behaviors [--repeat N]\n"
     "                                         time the full-body planner in the random\n"
     "                                         environments (the fastest of N runs; default 5)\n"
@@ -417,6 +418,7 @@ int run(int argc, char** argv) {
     bool crowds = false, behaviors = false;
     std::optional<std::pair<int, int>> box_seeds, seeds;
     std::optional<std::pair<int, double>> city;
+    std::string plan_path;  // the last seed's plan, for --box-seeds and --city
     const auto seed_range = [](const std::string& flag, const std::string& range) {
       const std::size_t dash = range.find('-');
       if (dash == std::string::npos)
@@ -439,6 +441,8 @@ int run(int argc, char** argv) {
         behaviors = true;
       } else if (arg == "--box-seeds" && i + 1 < argc) {
         box_seeds = seed_range(arg, argv[++i]);
+      } else if (arg == "-o" && i + 1 < argc) {
+        plan_path = argv[++i];
       } else if (arg == "--seeds" && i + 1 < argc) {
         seeds = seed_range(arg, argv[++i]);
       } else if (arg == "--city" && i + 1 < argc) {
@@ -457,17 +461,19 @@ int run(int argc, char** argv) {
     if (kinds > 1)
       throw UsageError("bench: one of --crowds, --behaviors, --box-seeds and --city");
     if (seeds && !city) throw UsageError("bench: --seeds goes with --city");
+    if (!plan_path.empty() && !city && !box_seeds)
+      throw UsageError("bench: -o goes with --city or --box-seeds");
     if (box_seeds) {
       footfall::tools::run_crowd_seeds(
           [](std::uint64_t seed) { return footfall::box_field_crowd_scenario(500, 700, seed); },
-          box_seeds->first, box_seeds->second, threads, std::cout);
+          box_seeds->first, box_seeds->second, threads, plan_path, std::cout);
     } else if (city) {
       const auto [agents, size] = *city;
       footfall::city_blocks(size);  // a size out of range is a usage error before any plan
       const auto range = seeds.value_or(std::pair{1, 1});
       footfall::tools::run_crowd_seeds(
           [&](std::uint64_t seed) { return footfall::city_scenario(agents, size, seed); },
-          range.first, range.second, threads, std::cout);
+          range.first, range.second, threads, plan_path, std::cout);
     } else if (behaviors) {
       footfall::tools::run_behavior_bench(repeat > 0 ? repeat : 5, std::cout);
     } else if (crowds) {
