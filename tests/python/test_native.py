@@ -2,7 +2,9 @@
 
 import json
 import math
+import sys
 import threading
+from time import perf_counter
 
 import pytest
 
@@ -188,7 +190,10 @@ def test_progress_callback_errors_propagate(ff):
 
 
 def test_planning_releases_the_gil(ff):
-    # While one thread plans, another Python thread keeps running.
+    # While one thread plans, another Python thread keeps running. Were the GIL held, the other
+    # thread could still tick just before the call and just after it, for a switch interval or
+    # so each (tens of thousands of ticks here): only ticks well inside the call count, 10 switch
+    # intervals from either end (none while sum(range(10**7)) holds the GIL for 1.5 s).
     scenario = ff.demo_scenario()
     scenario.agents = [ff.AgentSpec(f"a{i}", (-0.8 * (i % 5), -1.6 + 0.8 * (i // 5)), 0.0, [(-20.0, 0.8 * i)])
                        for i in range(20)]
@@ -197,16 +202,20 @@ def test_planning_releases_the_gil(ff):
 
     def count():
         while not done.is_set():
-            ticks.append(1)
+            ticks.append(perf_counter())
 
     counter = threading.Thread(target=count)
     counter.start()
     try:
+        start = perf_counter()
         ff.plan_scenario(scenario)
+        end = perf_counter()
     finally:
         done.set()
         counter.join()
-    assert len(ticks) > 100
+    margin = 10 * sys.getswitchinterval()
+    assert end - start > 3 * margin, "the plan is over too soon to tell"
+    assert sum(start + margin < tick < end - margin for tick in ticks) > 1000
 
 
 def test_measure_plan(ff):
