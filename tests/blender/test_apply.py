@@ -344,8 +344,8 @@ def test_replanning_the_selected_agents_updates_only_their_rigs():
     check(bpy.ops.footfall.plan(selected_only=True) == {"FINISHED"}, "plan of the selected failed")
     after = {a["name"]: a for a in json.loads(plan_store.load())["agents"]}
     check(after["bob"] == before["bob"] and after["cy"] == before["cy"], "the others' plans changed")
-    ann_end = after["ann"]["footsteps"][-1]["com_end"]
-    check(abs(ann_end[1] - 1) < 0.25 and abs(before["ann"]["footsteps"][-1]["com_end"][1]) < 0.25,
+    ann_end = after["ann"]["footsteps"]["com_end"][-1]
+    check(abs(ann_end[1] - 1) < 0.25 and abs(before["ann"]["footsteps"]["com_end"][-1][1]) < 0.25,
           f"ann was not planned to her new goal: she ends at {ann_end}")
     check(plan_store.pending(scene) == ["ann"], f"pending: {plan_store.pending(scene)}")
 
@@ -615,13 +615,18 @@ def behaviour_plan(ff):
 
     plan = sc.plan(sc.scenario_document(sc.ScenarioInput([sc.AgentInput("dee", (0, 0), [(14, 0)])])))
     document = json.loads(ff.plan_to_json(plan))
+    # Version 2's columns (docs/file-formats.md): the behaviours a string of
+    # letters, the angles indexes into the agent's values.
     steps = document["agents"][0]["footsteps"]
-    for i, step in enumerate(steps):
+    values, behavior = steps["values"], list(steps["behavior"])
+    for i in range(steps["count"]):
         if 4 <= i <= 9:
-            step["behavior"] = "arms_in"
+            behavior[i] = "a"  # arms_in
         elif 10 <= i <= 15:
-            step["behavior"] = "side_step"
-            step["foot_orientation"] = step["phi"] + math.pi / 2
+            behavior[i] = "s"  # side_step
+            values.append(values[steps["phi"][i]] + math.pi / 2)
+            steps["foot_orientation"][i] = len(values) - 1
+    steps["behavior"] = "".join(behavior)
     path = TMP / "behaviours-plan.json"
     path.write_text(json.dumps(document))
     return ff.load_plan(str(path)), path
@@ -782,12 +787,14 @@ def test_failures_leave_the_scene_as_it_was():
     check(not (TMP / "none.glb").exists(), "a failed export left a file")
     check(bpy.ops.footfall.import_rig(filepath=str(RIG)) == {"FINISHED"}, "rig import failed")
     bad = TMP / "bad-plan.json"
-    text = path.read_text()
-    bad.write_text(text.replace('"foot": "left"', '"foot": "middle"', 1))
+    document = json.loads(path.read_text())
+    steps = document["agents"][0]["footsteps"]
     # The step of the first left foot (the first step may be a start by the right).
-    first_left = text[: text.index('"foot": "left"')].count('"foot":')
+    first_left = steps["foot"].index("l")
+    steps["foot"] = steps["foot"][:first_left] + "m" + steps["foot"][first_left + 1:]
+    bad.write_text(json.dumps(document))
     before = inventory()
-    expect_error(bpy.ops.footfall.apply, f"footsteps[{first_left}].foot: 'middle' is not one of",
+    expect_error(bpy.ops.footfall.apply, f"footsteps.foot[{first_left}]: 'm' is not one of",
                  plan_filepath=str(bad))
     check(inventory() == before, "a failed apply changed the scene")
 

@@ -197,7 +197,7 @@ def test_plan_again_the_named_agents_among_the_fixed_plans_of_the_others(cli, tm
     assert [a["name"] for a in after] == ["ann", "bo", "cy"]
     assert after[1:] == before[1:]
     assert after[0]["status"] == "reached"
-    assert after[0]["footsteps"][-1]["com_end"][1] == pytest.approx(1, abs=0.25)  # it was at 0
+    assert after[0]["footsteps"]["com_end"][-1][1] == pytest.approx(1, abs=0.25)  # it was at 0
     assert "five-circle overlaps: 0" in run(cli, "metrics", str(again)).stdout
     assert "warning" not in result.stderr
 

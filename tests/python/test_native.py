@@ -2,7 +2,9 @@
 
 import json
 import math
+import sys
 import threading
+from time import perf_counter
 
 import pytest
 
@@ -117,16 +119,24 @@ def test_io_failure_is_a_footfall_error(ff, tmp_path):
 
 def test_plan_file_fields(ff, tmp_path):
     path = tmp_path / "plan.json"
-    ff.write_plan_file(ff.plan_scenario(ff.demo_scenario()), str(path))
+    plan = ff.plan_scenario(ff.demo_scenario())
+    ff.write_plan_file(plan, str(path))
     document = json.loads(path.read_text())
-    assert document["format"] == "footfall-plan" and document["version"] == 1
+    assert document["format"] == "footfall-plan" and document["version"] == 2
     agent = document["agents"][0]
     assert agent["status"] == "reached"
-    step = agent["footsteps"][0]
-    for key in ("foot", "start_time", "end_time", "foot_position", "foot_orientation", "com_start", "com_end",
-                "com_velocity_start", "com_velocity_end", "behavior", "cost"):
-        assert key in step
-    assert step["foot"] in ("left", "right") and step["behavior"] == "walk"
+    # Version 2: the footsteps as columns, one item per step (docs/file-formats.md); each step
+    # starts where the one before ended, and its cost is the sum of its terms.
+    steps = agent["footsteps"]
+    for key in ("foot", "end_time", "foot_position", "foot_orientation", "com_end", "com_velocity_end",
+                "behavior", "fixed_rate", "speed_change", "curvature"):
+        assert len(steps[key]) == steps["count"] == len(plan.agents[0].footsteps)
+    assert steps["foot"][0] in "lr" and steps["behavior"][0] == "w"
+    first, second = plan.agents[0].footsteps[:2]
+    assert tuple(steps["foot_position"][0]) == first.foot_position
+    assert steps["end_time"][0] == first.end_time == second.start_time
+    cost = sum(steps["values"][steps[term][0]] for term in ("fixed_rate", "speed_change", "curvature"))
+    assert cost == first.cost.total()
 
 
 def test_plans_are_bit_identical(ff):
@@ -188,7 +198,10 @@ def test_progress_callback_errors_propagate(ff):
 
 
 def test_planning_releases_the_gil(ff):
-    # While one thread plans, another Python thread keeps running.
+    # While one thread plans, another Python thread keeps running. Were the GIL held, the other
+    # thread could still tick just before the call and just after it, for a switch interval or
+    # so each (tens of thousands of ticks here): only ticks well inside the call count, 10 switch
+    # intervals from either end (none while sum(range(10**7)) holds the GIL for 1.5 s).
     scenario = ff.demo_scenario()
     scenario.agents = [ff.AgentSpec(f"a{i}", (-0.8 * (i % 5), -1.6 + 0.8 * (i // 5)), 0.0, [(-20.0, 0.8 * i)])
                        for i in range(20)]
@@ -197,16 +210,20 @@ def test_planning_releases_the_gil(ff):
 
     def count():
         while not done.is_set():
-            ticks.append(1)
+            ticks.append(perf_counter())
 
     counter = threading.Thread(target=count)
     counter.start()
     try:
+        start = perf_counter()
         ff.plan_scenario(scenario)
+        end = perf_counter()
     finally:
         done.set()
         counter.join()
-    assert len(ticks) > 100
+    margin = 10 * sys.getswitchinterval()
+    assert end - start > 3 * margin, "the plan is over too soon to tell"
+    assert sum(start + margin < tick < end - margin for tick in ticks) > 1000
 
 
 def test_measure_plan(ff):
@@ -229,15 +246,16 @@ def test_a_plan_file_time_out_of_bounds_is_refused_by_field(ff, tmp_path, time):
     path = tmp_path / "plan.json"
     ff.write_plan_file(ff.plan_scenario(ff.demo_scenario()), str(path))
     plan = json.loads(path.read_text())
-    last = plan["agents"][0]["footsteps"][-1]
+    agent = plan["agents"][0]
     if time > 0:
-        last["end_time"] = time
-        field = "end_time"
-    else:
-        plan["agents"][0]["footsteps"][0]["start_time"] = time
-        field = "start_time"
+        agent["footsteps"]["end_time"][-1] = time
+        field = r"end_time\[\d+\]"
+    else:  # a first step that does not start at 0
+        agent["footsteps"]["starts"] = [{"step": 0, "start_time": time, "com_start": agent["start"]["position"],
+                                         "com_velocity_start": [0, 0]}]
+        field = r"starts\[0\]\.start_time"
     path.write_text(json.dumps(plan))
-    with pytest.raises(ValueError, match=rf"footsteps\[\d+\]\.{field}: must be in \[0, 200000\] s"):
+    with pytest.raises(ValueError, match=rf"footsteps\.{field}: must be in \[0, 200000\] s"):
         ff.load_plan(str(path))
 
 

@@ -1,8 +1,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The scene's plan, kept in the .blend: the plan JSON (docs/file-formats.md)
 compressed (zlib, then base64 in lines of 76 characters) in a Text
-data-block named "footfall_plan", which Blender saves with the file. A
-plan's JSON is mostly digits: it packs to about a fifth.
+data-block named "footfall_plan", which Blender saves with the file. The
+plan's JSON (version 2, compact) is mostly the digits of doubles, which zlib
+packs little: it packs to about half its length (the demo's 49,314
+characters to 26,617; version 1's spaces and repeated keys packed to a fifth).
 
 Files saved before keep the plain JSON in a Text named "footfall_plan.json";
 it is read as such, and replaced by the packed one at the next Plan.

@@ -16,7 +16,8 @@ class AgentGrid {
   AgentGrid() = default;
   /// Buckets `positions` (one per agent, finite) in cells of side `cell`,
   /// or larger where the crowd is sparse: no smaller than the area the
-  /// positions span shared out among them. [m]
+  /// positions span shared out among them, so that a crowd of n spread over
+  /// any area has at most 2 n + 2 cells. [m]
   AgentGrid(const std::vector<Vec2>& positions, double cell);
 
   /// Every agent in a cell that the square of half side `radius` round
@@ -25,6 +26,9 @@ class AgentGrid {
   /// order a pass over every agent would meet them, so that what the caller
   /// makes of them does not depend on the grid.
   void around(Vec2 centre, double radius, std::vector<std::size_t>& out) const;
+
+  /// How many cells the grid holds; none without agents.
+  std::size_t cells() const { return first_.empty() ? 0 : first_.size() - 1; }
 
  private:
   /// The cell's column (x) or row (y) of coordinate v from `low`, clamped.

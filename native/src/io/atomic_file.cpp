@@ -44,7 +44,8 @@ void remove_stale_temporaries(const std::string& path) {
     if (name.size() <= prefix.size() + 8 || name.compare(0, prefix.size(), prefix) != 0 ||
         name.compare(name.size() - 8, 8, ".partial") != 0)
       continue;
-    const std::string pid = name.substr(prefix.size(), name.find('-', prefix.size()) - prefix.size());
+    const std::string pid =
+        name.substr(prefix.size(), name.find('-', prefix.size()) - prefix.size());
     if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos)
       continue;
     if (::kill(static_cast<pid_t>(std::stol(pid)), 0) == -1 && errno == ESRCH)
@@ -55,20 +56,36 @@ void remove_stale_temporaries(const std::string& path) {
 }  // namespace
 
 void write_file_atomically(const std::string& path, const std::string& bytes) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  });
+}
+
+void write_file_atomically(const std::string& path,
+                           const std::function<void(std::ostream&)>& write) {
   if (path.find('\0') != std::string::npos)
     throw std::invalid_argument(user_text(path) + ": a file name cannot hold a NUL byte");
   remove_stale_temporaries(path);
   const std::string temporary = temporary_name(path);
   note_pending_file(temporary);
-  const auto fail_with = [&](const std::string& message) {
+  const auto remove_temporary = [&] {
     std::remove(temporary.c_str());
     forget_pending_file(temporary);
+  };
+  const auto fail_with = [&](const std::string& message) {
+    remove_temporary();
     throw Error(path + ": " + message);
   };
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) fail_with("cannot open for writing");
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    try {
+      write(out);
+    } catch (...) {
+      out.close();
+      remove_temporary();
+      throw;
+    }
     out.flush();
     if (!out) fail_with("write failed");
   }

@@ -2,6 +2,8 @@
 // crowd's glTF writer.
 #pragma once
 
+#include <functional>
+#include <ostream>
 #include <string>
 
 namespace footfall::detail {
@@ -13,5 +15,11 @@ namespace footfall::detail {
 /// first; a signal handler removes this one (util/pending_files). A NUL byte
 /// in `path` is std::invalid_argument; other failures footfall::Error.
 void write_file_atomically(const std::string& path, const std::string& bytes);
+
+/// The same, the bytes written by `write` to a stream on the temporary file
+/// as they come, so that a large file is never held in memory. What `write`
+/// throws leaves no file either, and goes on to the caller.
+void write_file_atomically(const std::string& path,
+                           const std::function<void(std::ostream&)>& write);
 
 }  // namespace footfall::detail

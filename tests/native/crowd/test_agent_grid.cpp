@@ -47,15 +47,24 @@ TEST(AgentGrid, ReturnsEveryAgentWithinTheRadiusInOrder) {
 
 TEST(AgentGrid, ASparseCrowdOverKilometresStaysSmall) {
   // Cells grow with the spread (about one agent a cell), and a far outlier
-  // is found like any other.
-  std::vector<Vec2> crowd{{0.0, 0.0}, {1.0, 0.0}, {5000.0, -3000.0}, {-2000.0, 4000.0}};
-  expect_agrees(crowd, 5.0, 6000.0, 2000);
+  // is found like any other. In cells of 5 m the first crowd would need
+  // some 2,000,000 cells, and the long thin second one 800,000.
+  std::vector<Vec2> outliers{{0.0, 0.0}, {1.0, 0.0}, {5000.0, -3000.0}, {-2000.0, 4000.0}};
+  std::mt19937 random(2);
+  std::uniform_real_distribution<double> along(-10000.0, 10000.0), across(-500.0, 500.0);
+  std::vector<Vec2> strip;
+  for (int j = 0; j < 300; ++j) strip.push_back({along(random), across(random)});
+  for (const std::vector<Vec2>* crowd : {&outliers, &strip}) {
+    EXPECT_LE(AgentGrid(*crowd, 5.0).cells(), 2 * crowd->size() + 2);
+    expect_agrees(*crowd, 5.0, 10000.0, 2000);
+  }
 }
 
 TEST(AgentGrid, AQueryAwayFromTheCrowdOrWithNoCrowdFindsNone) {
   std::vector<std::size_t> out{42};
   AgentGrid().around({0.0, 0.0}, 10.0, out);
   EXPECT_TRUE(out.empty());
+  EXPECT_EQ(AgentGrid().cells(), 0u);
   const AgentGrid one({{3.0, 4.0}}, 5.0);
   one.around({100.0, 100.0}, 10.0, out);
   EXPECT_TRUE(out.empty());

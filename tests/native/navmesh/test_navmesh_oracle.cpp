@@ -1,7 +1,7 @@
 // The navigation mesh against the brute-force oracle of navmesh_oracle.hpp
-// (checked in turn against a roadmap, a grid flood fill and a finer version
-// of itself): random scenes, and passages whose answer flips as the radius
-// grows.
+// (checked in turn, at the end of this file, against a grid flood fill, a
+// roadmap and a finer version of itself): random scenes, and passages whose
+// answer flips as the radius grows.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -391,6 +391,201 @@ TEST(NavMeshOracle, GapBetweenAPointAndACornerOpensBelowHalfItsWidth) {
     if (failures() >= kMaxFailingCases) break;
   }
   tally.print("point-corner gaps");
+}
+
+// The oracle checked in turn, by means of its own: a flood fill of a grid,
+// a roadmap of random stops and its own arcs cut finer.
+
+/// The scene's domain in cells of at most `size` a side (as many as fit it
+/// exactly), each with the oracle's clearance at its centre.
+class ClearanceGrid {
+ public:
+  ClearanceGrid(const NavScene& scene, double size) : low_(scene.min_corner) {
+    const Vec2 span = scene.max_corner - scene.min_corner;
+    columns_ = static_cast<int>(std::ceil(span.x / size));
+    rows_ = static_cast<int>(std::ceil(span.y / size));
+    cell_ = {span.x / columns_, span.y / rows_};
+    for (int row = 0; row < rows_; ++row)
+      for (int column = 0; column < columns_; ++column)
+        clearance_.push_back(testing::clearance(scene, centre(column, row)));
+  }
+
+  /// Half a cell's diagonal: no point of a cell is farther from its centre. [m]
+  double reach() const { return 0.5 * length(cell_); }
+
+  /// True if cells whose centres clear `room`, each touching the next at an
+  /// edge or a corner, lead from the cell of `from` to the cell of `to`.
+  bool connects(Vec2 from, Vec2 to, double room) const {
+    const int start = cell_of(from), goal = cell_of(to);
+    if (clearance_[start] < room) return false;
+    std::vector<bool> seen(clearance_.size(), false);
+    std::vector<int> open{start};
+    seen[start] = true;
+    while (!open.empty()) {
+      const int k = open.back();
+      open.pop_back();
+      if (k == goal) return true;
+      for (int row = std::max(k / columns_ - 1, 0); row <= std::min(k / columns_ + 1, rows_ - 1);
+           ++row) {
+        for (int column = std::max(k % columns_ - 1, 0);
+             column <= std::min(k % columns_ + 1, columns_ - 1); ++column) {
+          const int next = row * columns_ + column;
+          if (seen[next] || clearance_[next] < room) continue;
+          seen[next] = true;
+          open.push_back(next);
+        }
+      }
+    }
+    return false;
+  }
+
+ private:
+  Vec2 centre(int column, int row) const {
+    return low_ + Vec2{(column + 0.5) * cell_.x, (row + 0.5) * cell_.y};
+  }
+  int cell_of(Vec2 p) const {
+    const auto index = [](double offset, double size, int count) {
+      return std::clamp(static_cast<int>(std::floor(offset / size)), 0, count - 1);
+    };
+    return index(p.y - low_.y, cell_.y, rows_) * columns_ + index(p.x - low_.x, cell_.x, columns_);
+  }
+
+  Vec2 low_;
+  Vec2 cell_;
+  int columns_ = 0, rows_ = 0;
+  std::vector<double> clearance_;  ///< Row by row. [m]
+};
+
+// A cell whose centre clears r + reach + 1 cm holds the disc of r + 1 cm
+// anywhere in it, so a flood of such cells from the start's to the goal's
+// shows a path (with 1 cm to spare, far more than the oracle's arcs bulge).
+// Every point of a path of r lies in a cell whose centre clears r - reach,
+// so where no flood of those gets through there is none. Between the two
+// the grid cannot tell.
+TEST(NavMeshOracle, OracleAgreesWithAGridFloodFill) {
+  Random random(31);
+  int found = 0, no_path = 0, blocked = 0, undecided = 0;
+  for (int c = 0; c < 24; ++c) {
+    const NavScene scene = random_scene(random);
+    const ClearanceGrid grid(scene, 0.1);
+    for (int q = 0; q < 12; ++q) {
+      const double radius = random.uniform(0.3, 2.5);
+      const Vec2 from = random_end(random, scene, radius);
+      const Vec2 to = random_end(random, scene, radius);
+      SCOPED_TRACE(testing::describe(scene, from, to, radius));
+      const bool path = testing::shortest_path(scene, from, to, radius).found;
+      if (grid.connects(from, to, radius + grid.reach() + 0.01)) {
+        EXPECT_TRUE(path) << "the grid has a way through";
+        ++found;
+      } else if (!grid.connects(from, to, radius - grid.reach())) {
+        EXPECT_FALSE(path) << "the grid has no way through";
+        const bool ends_clear =
+            std::min(testing::clearance(scene, from), testing::clearance(scene, to)) >= radius;
+        ++(ends_clear ? no_path : blocked);
+      } else {
+        ++undecided;
+      }
+    }
+    if (failures() >= kMaxFailingCases) break;
+  }
+  std::printf("[ grid flood fill ] found %d, no path %d, blocked %d, undecided %d\n", found,
+              no_path, blocked, undecided);
+  EXPECT_GT(found, 150);
+  EXPECT_GT(no_path, 10);
+}
+
+/// The length of the shortest way from `from` to `to` by straight segments
+/// through some of `stops`, each segment clear of the obstacles by `radius`;
+/// infinity if there is none. Dijkstra, segments tested as it meets them.
+double roadmap_length(const NavScene& scene, Vec2 from, Vec2 to, const std::vector<Vec2>& stops,
+                      double radius) {
+  std::vector<Vec2> nodes{from, to};
+  nodes.insert(nodes.end(), stops.begin(), stops.end());
+  std::vector<double> cost(nodes.size(), INFINITY);
+  std::vector<bool> done(nodes.size(), false);
+  cost[0] = 0.0;
+  for (;;) {
+    std::size_t u = 0;
+    double least = INFINITY;
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+      if (!done[k] && cost[k] < least) {
+        least = cost[k];
+        u = k;
+      }
+    }
+    if (least == INFINITY || u == 1) return least;
+    done[u] = true;
+    for (std::size_t v = 0; v < nodes.size(); ++v) {
+      const double through = cost[u] + distance(nodes[u], nodes[v]);
+      if (!done[v] && through < cost[v] &&
+          testing::path_clearance(scene, {nodes[u], nodes[v]}) >= radius)
+        cost[v] = through;
+    }
+  }
+}
+
+// No way through a roadmap of random stops that the disc fits on is shorter
+// than the oracle's (beyond the oracle's own excess), and where the roadmap
+// gets through, so does the oracle.
+TEST(NavMeshOracle, NoRoadmapPathBeatsTheOracle) {
+  Random random(32);
+  int compared = 0;
+  double ratios = 0.0;
+  for (int c = 0; c < 40; ++c) {
+    const NavScene scene = random_scene(random);
+    const double radius = random.uniform(0.05, 1.5);
+    const Vec2 from = random_end(random, scene, radius);
+    const Vec2 to = random_end(random, scene, radius);
+    std::vector<Vec2> stops;
+    while (stops.size() < 150) {
+      const Vec2 p = random.point(scene.min_corner, scene.max_corner);
+      if (testing::clearance(scene, p) >= radius) stops.push_back(p);
+    }
+    SCOPED_TRACE(testing::describe(scene, from, to, radius));
+    const double roadmap = roadmap_length(scene, from, to, stops, radius);
+    if (roadmap == INFINITY) continue;
+    const testing::OraclePath oracle = testing::shortest_path(scene, from, to, radius);
+    ASSERT_TRUE(oracle.found) << "the roadmap gets through in " << roadmap << " m";
+    EXPECT_LE(oracle.length, roadmap * (1 + testing::oracle_excess()));
+    ratios += roadmap / oracle.length;
+    ++compared;
+    if (failures() >= kMaxFailingCases) break;
+  }
+  std::printf("[ roadmap ] compared %d, mean length ratio (roadmap / oracle) %.4f\n", compared,
+              ratios / compared);
+  EXPECT_GT(compared, 25);
+}
+
+// With arcs of 1024 sides instead of 128 the oracle answers the same, and
+// its paths are no longer, and shorter by at most what the coarser arcs may
+// add (oracle_excess()): both are then within their excess of the truth.
+TEST(NavMeshOracle, OracleAgreesWithAFinerVersionOfItself) {
+  Random random(33);
+  int found = 0, none = 0, ambiguous = 0;
+  for (int c = 0; c < 60; ++c) {
+    const NavScene scene = random_scene(random);
+    const double radius = random.uniform(0.05, 1.5);
+    const Vec2 from = random_end(random, scene, radius);
+    const Vec2 to = random_end(random, scene, radius);
+    SCOPED_TRACE(testing::describe(scene, from, to, radius));
+    const OracleAnswer coarse = testing::judge_query(scene, from, to, radius);
+    if (coarse.ambiguous) {
+      ++ambiguous;
+      continue;
+    }
+    const testing::OraclePath fine = testing::shortest_path(scene, from, to, radius, 1024);
+    ASSERT_EQ(fine.found, coarse.path.found);
+    if (!fine.found) {
+      ++none;  // no path, or an end blocked
+      continue;
+    }
+    EXPECT_GE(coarse.path.length, fine.length * (1 - 1e-12));
+    EXPECT_LE(coarse.path.length, fine.length * (1 + testing::oracle_excess()));
+    ++found;
+    if (failures() >= kMaxFailingCases) break;
+  }
+  std::printf("[ finer arcs ] found %d, none %d, ambiguous %d\n", found, none, ambiguous);
+  EXPECT_GT(found, 40);
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
-// Footfall — the plan file (JSON, "footfall-plan" version 1).
+// Footfall — the plan file (JSON, "footfall-plan"): written as version 2, compact, each
+// agent's footsteps as columns; versions 1 and 2 read (docs/file-formats.md).
 #pragma once
 
 #include <string>
@@ -7,14 +8,16 @@
 
 namespace footfall {
 
-/// The plan as JSON text.
+/// The plan as JSON text, the same as write_plan_file writes: read back, it
+/// is the same plan to the bit.
 std::string plan_to_json(const Plan& plan);
 
-/// Parses plan JSON (as written by plan_to_json, or by hand). Errors are
-/// std::invalid_argument: "SOURCE: FIELD.PATH: what is wrong".
+/// Parses plan JSON (as written by plan_to_json, by an older Footfall, or by
+/// hand). Errors are std::invalid_argument: "SOURCE: FIELD.PATH: what is wrong".
 Plan parse_plan(const std::string& text, const std::string& source = "<string>");
 
-/// Writes the plan file atomically: to a temporary file beside `path`
+/// Writes the plan file agent by agent (never the whole text in memory),
+/// atomically: to a temporary file beside `path`
 /// (".NAME.<pid>-<n>.partial", unique to the write), then renamed, so a
 /// failure leaves no half-written file and two writers of one path do not
 /// collide. Temporaries that stopped runs left are removed first. A NUL byte
