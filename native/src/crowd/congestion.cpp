@@ -13,6 +13,23 @@ namespace {
 /// two over, not across a whole city of small cells.
 constexpr int kMostExpanded = 40000;
 
+/// Per cell of a grid `columns` wide, the sum of `v` over the 3 x 3 cells
+/// round it: a row's sums over three, then a column's.
+std::vector<std::uint32_t> box_sums(std::vector<std::uint32_t> v, long columns) {
+  const long rows = static_cast<long>(v.size()) / columns;
+  const auto at = [columns](long x, long y) { return static_cast<std::size_t>(y * columns + x); };
+  std::vector<std::uint32_t> rowwise(v.size());
+  for (long y = 0; y < rows; ++y)
+    for (long x = 0; x < columns; ++x)
+      rowwise[at(x, y)] = v[at(x, y)] + (x > 0 ? v[at(x - 1, y)] : 0) +
+                          (x + 1 < columns ? v[at(x + 1, y)] : 0);
+  for (long y = 0; y < rows; ++y)
+    for (long x = 0; x < columns; ++x)
+      v[at(x, y)] = rowwise[at(x, y)] + (y > 0 ? rowwise[at(x, y - 1)] : 0) +
+                    (y + 1 < rows ? rowwise[at(x, y + 1)] : 0);
+  return v;
+}
+
 }  // namespace
 
 CrowdGrid::CrowdGrid(const NavMesh& mesh, double radius) : low_(mesh.min_corner()) {
@@ -21,8 +38,12 @@ CrowdGrid::CrowdGrid(const NavMesh& mesh, double radius) : low_(mesh.min_corner(
   columns_ = std::max(1L, static_cast<long>(std::ceil(size.x / cell_)));
   rows_ = std::max(1L, static_cast<long>(std::ceil(size.y / cell_)));
   walkable_.resize(static_cast<std::size_t>(columns_ * rows_));
-  for (long c = 0; c < columns_ * rows_; ++c)
+  std::vector<std::uint32_t> open(walkable_.size());
+  for (long c = 0; c < columns_ * rows_; ++c) {
     walkable_[static_cast<std::size_t>(c)] = mesh.clearance(centre(c)) >= radius ? 1 : 0;
+    open[static_cast<std::size_t>(c)] = walkable_[static_cast<std::size_t>(c)];
+  }
+  room_ = box_sums(std::move(open), columns_);
 }
 
 long CrowdGrid::cell_of(Vec2 p) const {
@@ -41,29 +62,18 @@ Vec2 CrowdGrid::centre(long cell) const {
 
 CrowdDensity::CrowdDensity(const CrowdGrid& grid, const std::vector<Vec2>& com,
                            const std::vector<char>& present)
-    : grid_(&grid), count_(grid.cells(), 0) {
+    : grid_(&grid), density_(grid.cells(), 0.0) {
+  std::vector<std::uint32_t> people(grid.cells(), 0);
   for (std::size_t j = 0; j < com.size(); ++j) {
     const long cell = present[j] ? grid.cell_of(com[j]) : -1;
-    if (cell >= 0 && count_[static_cast<std::size_t>(cell)] < UINT16_MAX)
-      ++count_[static_cast<std::size_t>(cell)];
+    if (cell >= 0) ++people[static_cast<std::size_t>(cell)];
   }
-}
-
-double CrowdDensity::density(long cell) const {
-  const long columns = grid_->columns(), rows = grid_->rows();
-  const long x = cell % columns, y = cell / columns;
-  double people = 0.0, area = 0.0;
-  for (long v = std::max(0L, y - 1); v <= std::min(rows - 1, y + 1); ++v)
-    for (long u = std::max(0L, x - 1); u <= std::min(columns - 1, x + 1); ++u) {
-      const long c = v * columns + u;
-      people += count_[static_cast<std::size_t>(c)];
-      area += grid_->walkable(c) ? grid_->cell() * grid_->cell() : 0.0;
-    }
-  return area > 0.0 ? people / area : 0.0;
-}
-
-double CrowdDensity::cost_per_metre(long cell) const {
-  return 1.0 + kCrowdWeight * std::max(0.0, density(cell) - kFreeDensity);
+  const std::vector<std::uint32_t> crowd = box_sums(std::move(people), grid.columns());
+  const double cell_area = grid.cell() * grid.cell();
+  for (long c = 0; c < grid.columns() * grid.rows(); ++c)
+    if (const std::uint32_t room = grid.room(c); room > 0)
+      density_[static_cast<std::size_t>(c)] =
+          crowd[static_cast<std::size_t>(c)] / (room * cell_area);
 }
 
 double CrowdDensity::cost_of(const std::vector<Vec2>& points, double ahead) const {
@@ -113,7 +123,7 @@ std::vector<Vec2> CrowdDensity::cheapest_cells(Vec2 from, Vec2 goal) const {
                                        !(grid_->walkable(y * columns + u) &&
                                          grid_->walkable(v * columns + x))))
           continue;
-        const double step = grid_->cell() * std::hypot(static_cast<double>(dx), dy);
+        const double step = grid_->cell() * (dx != 0 && dy != 0 ? std::sqrt(2.0) : 1.0);
         const double through =
             here + 0.5 * step * (cost_per_metre(cell) + cost_per_metre(next));
         if (through >= cost[static_cast<std::size_t>(next)]) continue;

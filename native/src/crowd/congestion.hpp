@@ -5,6 +5,7 @@
 // crowded cells cost more than their length, and the cheaper is taken.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -40,6 +41,8 @@ class CrowdGrid {
   /// The cell holding `p`, or -1 outside the grid.
   long cell_of(Vec2 p) const;
   bool walkable(long cell) const { return walkable_[static_cast<std::size_t>(cell)] != 0; }
+  /// How many of the 3 x 3 cells round `cell` are walkable.
+  std::uint32_t room(long cell) const { return room_[static_cast<std::size_t>(cell)]; }
   std::size_t cells() const { return walkable_.size(); }
   long columns() const { return columns_; }
   long rows() const { return rows_; }
@@ -51,6 +54,7 @@ class CrowdGrid {
   double cell_ = kCrowdCell;
   long columns_ = 0, rows_ = 0;
   std::vector<char> walkable_;
+  std::vector<std::uint32_t> room_;
 };
 
 /// How many agents stand in each cell of a CrowdGrid at one tick, and the
@@ -64,9 +68,11 @@ class CrowdDensity {
 
   /// People per square metre of walkable ground in the 3 x 3 cells round
   /// `cell`. [1/m^2]
-  double density(long cell) const;
+  double density(long cell) const { return density_[static_cast<std::size_t>(cell)]; }
   /// What a metre through `cell` costs, in metres. [>= 1]
-  double cost_per_metre(long cell) const;
+  double cost_per_metre(long cell) const {
+    return 1.0 + kCrowdWeight * std::max(0.0, density(cell) - kFreeDensity);
+  }
 
   /// A way from `from` to `goal` round the crowds, when the first
   /// kCrowdAhead of `way` runs through one and the cheapest way across the
@@ -82,7 +88,8 @@ class CrowdDensity {
   std::vector<Vec2> cheapest_cells(Vec2 from, Vec2 goal) const;
 
   const CrowdGrid* grid_ = nullptr;
-  std::vector<std::uint16_t> count_;  ///< Per cell.
+  /// Per cell, for every search of the tick to read: counted once. [1/m^2]
+  std::vector<double> density_;
 };
 
 }  // namespace footfall::crowd
