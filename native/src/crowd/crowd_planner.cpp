@@ -36,7 +36,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "crowd/agent_grid.hpp"
+#include "plan/agent_grid.hpp"
 #include "crowd/crowd_commit.hpp"
 #include "crowd/crowd_walker.hpp"
 #include "crowd/crowd_yielding.hpp"

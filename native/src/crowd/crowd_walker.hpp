@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-#include "crowd/agent_grid.hpp"
+#include "plan/agent_grid.hpp"
 #include "crowd/congestion.hpp"
 #include "footfall/crowd/crowd_planner.hpp"
 #include "footfall/plan/plan.hpp"
