@@ -34,7 +34,8 @@ std::vector<std::uint32_t> box_sums(std::vector<std::uint32_t> v, long columns) 
 
 CrowdGrid::CrowdGrid(const NavMesh& mesh, double radius) : low_(mesh.min_corner()) {
   const Vec2 size = mesh.max_corner() - low_;
-  cell_ = std::max(kCrowdCell, std::sqrt(size.x * size.y / kMostCells));
+  // Sized by the longer side, so that a long thin domain is no more cells.
+  cell_ = std::max(kCrowdCell, std::max(size.x, size.y) / std::sqrt(kMostCells));
   columns_ = std::max(1L, static_cast<long>(std::ceil(size.x / cell_)));
   rows_ = std::max(1L, static_cast<long>(std::ceil(size.y / cell_)));
   walkable_.resize(static_cast<std::size_t>(columns_ * rows_));
@@ -57,7 +58,7 @@ long CrowdGrid::cell_of(Vec2 p) const {
 
 Vec2 CrowdGrid::centre(long cell) const {
   return low_ + cell_ * Vec2{static_cast<double>(cell % columns_) + 0.5,
-                                  static_cast<double>(cell / columns_) + 0.5};
+                             static_cast<double>(cell / columns_) + 0.5};
 }
 
 CrowdDensity::CrowdDensity(const CrowdGrid& grid, const std::vector<Vec2>& com,

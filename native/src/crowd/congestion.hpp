@@ -16,7 +16,8 @@
 namespace footfall::crowd {
 
 /// The side of the grid's square cells, at least: larger where the ground
-/// would take more than kMostCells of it. [m]
+/// would take more than kMostCells of it (more than its square root along
+/// its longer side). [m]
 constexpr double kCrowdCell = 1.0;
 constexpr double kMostCells = 250000;
 /// Ways are looked at for crowds this far ahead. [m]

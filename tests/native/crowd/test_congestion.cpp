@@ -82,10 +82,12 @@ TEST(CrowdDensity, AWayRoundMustGainOnTheWayThrough) {
 }
 
 TEST(CrowdGrid, IsCoarserOnVastGround) {
-  const NavMesh mesh({-5000.0, -5000.0}, {5000.0, 5000.0});
-  const CrowdGrid grid(mesh, 0.5);
-  EXPECT_LE(static_cast<double>(grid.cells()), 1.01 * kMostCells);
-  EXPECT_GT(grid.cell(), kCrowdCell);
+  for (const Vec2 corner : {Vec2{5000.0, 5000.0}, Vec2{1e9, 3.0}}) {
+    const NavMesh mesh(-1.0 * corner, corner);
+    const CrowdGrid grid(mesh, 0.5);
+    EXPECT_LE(static_cast<double>(grid.cells()), 1.01 * kMostCells) << corner.x;
+    EXPECT_GT(grid.cell(), kCrowdCell) << corner.x;
+  }
 }
 
 TEST(CrowdedStreets, AStreetThatFillsSendsLaterAgentsByTheNextOne) {
