@@ -139,11 +139,12 @@ namespace {
 
 /// The grid's period and how many blocks span a city of side `size`. [m]
 constexpr double kCityPeriod = kCityBlock + kCityStreet;
+static_assert(kCityPeriod == 10.0, "the size error names the period");
 int blocks_across(double size) {
   const double blocks = size / kCityPeriod;
   if (!(blocks >= 1.0 && blocks <= 1000.0) || std::abs(blocks - std::round(blocks)) > 1e-9)
-    throw std::invalid_argument("size: a city is " + std::to_string(kCityPeriod) +
-                                " m times 1-1000 blocks across");
+    throw std::invalid_argument("size: a city's side is a multiple of 10 m (a block and a "
+                                "street) from 10 to 10000 m");
   return static_cast<int>(std::round(blocks));
 }
 

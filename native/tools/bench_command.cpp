@@ -176,6 +176,7 @@ void run_crowd_bench(int threads, int repeat, std::ostream& out) {
       {"egress of 50", egress_scenario(50, 1)},
       {"two-way hall of 200", two_way_hall_scenario(200, 2)},
       {"500 among 700 boxes", box_field_crowd_scenario(500, 700, 7)},
+      {"city of 1,000 (60 m)", city_scenario(1000, 60.0, 1)},
   };
   out << std::left << std::setw(22) << "workload" << std::right << std::setw(8) << "agents"
       << std::setw(9) << "reached" << std::setw(10) << "searches" << std::setw(11) << "generated"

@@ -469,7 +469,11 @@ int run(int argc, char** argv) {
           box_seeds->first, box_seeds->second, threads, plan_path, std::cout);
     } else if (city) {
       const auto [agents, size] = *city;
-      footfall::city_blocks(size);  // a size out of range is a usage error before any plan
+      try {  // a size out of range is a usage error, before any plan
+        footfall::city_blocks(size);
+      } catch (const std::invalid_argument& error) {
+        throw UsageError(std::string("--city: ") + error.what());
+      }
       const auto range = seeds.value_or(std::pair{1, 1});
       footfall::tools::run_crowd_seeds(
           [&](std::uint64_t seed) { return footfall::city_scenario(agents, size, seed); },

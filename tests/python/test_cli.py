@@ -90,7 +90,11 @@ def test_usage_errors_exit_2(cli):
     (["bench", "--repeat", "1abc"], "--repeat: expected a whole number from 1 to 1000000, got '1abc'"),
     (["bench", "--box-seeds", "200"], "--box-seeds: give FIRST-LAST, as 1-200, not '200'"),
     (["bench", "--box-seeds", "9-3"], "--box-seeds: the first seed is after the last: '9-3'"),
-    (["bench", "--box-seeds", "1-2", "--crowds"], "bench: one of --crowds, --behaviors and --box-seeds"),
+    (["bench", "--box-seeds", "1-2", "--crowds"], "bench: one of --crowds, --behaviors, --box-seeds and --city"),
+    (["bench", "--city", "1000"], "--city: give AGENTS,SIZE, as 1000,60, not '1000'"),
+    (["bench", "--city", "100,65"], "--city: size: a city's side is a multiple of 10 m (a block and a street) from 10 to 10000 m"),
+    (["bench", "--seeds", "1-2"], "bench: --seeds goes with --city"),
+    (["bench", "--crowds", "-o", "plan.json"], "bench: -o goes with --city or --box-seeds"),
     (["plan", "s.json", "-o", "p.json", "--threads", "99"], "--threads: expected a whole number from 1 to 64, got '99'"),
     (["path", "s.json", "--from", "0,0", "--to", "1e10,0", "--radius", "0.3"],
      "--to: must be within 1e9 m of the origin, got '1e10,0'"),
@@ -163,8 +167,20 @@ def test_bench_prints_every_workload(cli):
 def test_bench_box_seeds_lists_who_falls_short(cli):
     result = run(cli, "bench", "--box-seeds", "7-7", "--threads", "2")
     assert result.returncode == 0, result.stderr
-    assert result.stdout.splitlines()[0].startswith("seed 7: 500 of 500 reached (")
-    assert result.stdout.splitlines()[-1] == "0 agent(s) short of their goals over seeds 7-7"
+    assert result.stdout.splitlines()[0].startswith("seed 7: 500 of 500 reached, 0 overlap samples, travel ")
+    assert result.stdout.splitlines()[-1] == (
+        "0 agent(s) short of their goals and 0 overlap samples over seeds 7-7")
+
+
+def test_bench_city_plans_each_seed_and_writes_the_last(cli, tmp_path):
+    plan = tmp_path / "city.json"
+    result = run(cli, "bench", "--city", "60,30", "--seeds", "3-4", "-o", str(plan))
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert [line.split(":")[0] for line in lines[:2]] == ["seed 3", "seed 4"]
+    assert all(" of 60 reached, " in line and " x alone (" in line for line in lines[:2])
+    written = json.loads(plan.read_text())
+    assert len(written["agents"]) == 60 and len(written["obstacles"]) == 9
 
 
 def test_metrics_of_the_demo(cli, tmp_path):

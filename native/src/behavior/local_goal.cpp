@@ -96,8 +96,12 @@ std::optional<Way> way_out(const NavMesh& mesh, const CharacterParams& character
 
 }  // namespace
 
+double sway_room(const CharacterParams& character) {
+  return 0.5 * character.torso_width + kSwayMargin;
+}
+
 bool cramped(const NavMesh* mesh, const CharacterParams& character, Vec2 at) {
-  return mesh != nullptr && mesh->clearance(at) < 0.5 * character.torso_width + kSwayMargin;
+  return mesh != nullptr && mesh->clearance(at) < sway_room(character);
 }
 
 /// The way on the navigation mesh: the roomiest of three that is not much
@@ -121,7 +125,7 @@ Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from,
   // The tight way is no shorter than the straight line: a roomiest way that
   // is not much longer than the line needs no tight way to compare with
   // (most ways, in the open), so most ways take one query, not two.
-  PathResult roomiest = mesh->find_path({from, goal, upright + kSwayMargin, kRouteArcTolerance});
+  PathResult roomiest = mesh->find_path({from, goal, sway_room(character), kRouteArcTolerance});
   if (roomy_enough(roomiest, way.length)) return {std::move(roomiest.points), roomiest.length};
   if (roomy && roomiest.status == PathStatus::kStartBlocked && mesh->clearance(from) < upright) {
     if (std::optional<Way> out = way_out(*mesh, character, from, goal, upright, others, back))

@@ -31,6 +31,10 @@ Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from,
 /// The first `length` metres of `way` (all of it if shorter). [m]
 Way way_start(const Way& way, double length);
 
+/// The room to walk upright with the body's sway: the radius of the disc
+/// that the roomiest ways keep clear. [m]
+double sway_room(const CharacterParams& character);
+
 /// True if at `at` there is no room to walk upright with the body's sway
 /// (in a gap between boxes, against a wall); never without a mesh.
 bool cramped(const NavMesh* mesh, const CharacterParams& character, Vec2 at);

@@ -36,7 +36,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "crowd/agent_grid.hpp"
+#include "plan/agent_grid.hpp"
 #include "crowd/crowd_commit.hpp"
 #include "crowd/crowd_walker.hpp"
 #include "crowd/crowd_yielding.hpp"
@@ -146,7 +146,7 @@ bool guided_way(const std::vector<Vec2>& guide, const NavMesh* mesh,
 /// so it would come out the same); else its annotated way where it has one
 /// (unless it takes the roomiest ways, stuck once); else measured anew, a
 /// roomy way out of a tight place passing none of the agents it sees
-/// (`seen`, where they stand `now`).
+/// (`seen`, where they stand `now`), or round a crowd on it (congestion.hpp).
 Way way_toward(const Walker& w, const NavMesh* mesh, const CharacterParams& character, Vec2 from,
                const std::vector<std::size_t>& seen, const Snapshot& now) {
   const Vec2 goal = w.spec->goals[w.goal];
@@ -159,7 +159,10 @@ Way way_toward(const Walker& w, const NavMesh* mesh, const CharacterParams& char
   if (w.roomy)
     for (const std::size_t j : seen)
       if (now.present[j]) others.push_back(now.com[j]);
-  return footfall::way_toward(mesh, character, from, goal, w.roomy, others, w.roomy_at);
+  way = footfall::way_toward(mesh, character, from, goal, w.roomy, others, w.roomy_at);
+  if (mesh == nullptr || w.roomy) return way;
+  std::optional<Way> round = now.crowd.way_round(way, *mesh, sway_room(character));
+  return round ? std::move(*round) : way;
 }
 
 /// Near a narrower section (walking with the arms in, side-stepping) a search
@@ -189,22 +192,25 @@ LocalGoal aim_of(const Walker& w, const FootstepPlanner& planner, const NavMesh*
 
 /// The snapshot at time t of the agents whose plans `walks` read (one each,
 /// kept from tick to tick: the step under way is found from the last tick's),
-/// with their bounds from `bounds_from` on, and who gives way.
+/// with their bounds from `bounds_from` on, who gives way, and where they are
+/// thick (on `crowd_grid`, if given).
 Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& walks, double t,
-                  double bounds_from) {
+                  double bounds_from, const CrowdGrid* crowd_grid) {
   Snapshot s{t,
              std::vector<Vec2>(walkers.size()),
              std::vector<char>(walkers.size()),
              {},
              bounds_from,
              std::vector<PlanBounds::From>(walkers.size()),
-             std::vector<char>(walkers.size())};
+             std::vector<char>(walkers.size()),
+             {}};
   for (std::size_t j = 0; j < walkers.size(); ++j) {
     s.com[j] = walks[j].com_at(t).position;
     s.present[j] = present_at(walkers[j].plan, t);
     s.bounds[j] = walkers[j].bounds->from(bounds_from);
   }
   s.grid = AgentGrid(s.com, kGridCell);
+  if (crowd_grid != nullptr) s.crowd = CrowdDensity(*crowd_grid, s.com, s.present);
   for (std::size_t j = 0; j < walkers.size(); ++j) s.giving_way[j] = gives_way(walkers, j, s);
   return s;
 }
@@ -645,6 +651,8 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
   }
   std::vector<PlanWalk> walks;
   for (const Walker& w : walkers) walks.emplace_back(w.plan);
+  std::optional<CrowdGrid> crowd_grid;
+  if (mesh != nullptr) crowd_grid.emplace(*mesh, sway_room(planners.front()->character()));
   // Two views (see the top of this file), one per tick in flight; each is
   // brought up to date from the walkers changed since it last was. Bounds
   // and samples are shared with the walkers, not copied.
@@ -765,7 +773,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
         const double from = kept > 0 ? w.plan.footsteps[kept - 1].start_time : w.state.time;
         trials_from = std::min(trials_from, from);
       }
-      jobs.at = snapshot(walkers, walks, t, trials_from);
+      jobs.at = snapshot(walkers, walks, t, trials_from, crowd_grid ? &*crowd_grid : nullptr);
       const std::size_t n = jobs.due.size();
       jobs.idle.resize(n);
       for (std::size_t k = 0; k < n; ++k) jobs.idle[k] = nothing_new(walkers, jobs.due[k], jobs.at);

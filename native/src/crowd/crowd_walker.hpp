@@ -11,7 +11,8 @@
 #include <optional>
 #include <vector>
 
-#include "crowd/agent_grid.hpp"
+#include "plan/agent_grid.hpp"
+#include "crowd/congestion.hpp"
 #include "footfall/crowd/crowd_planner.hpp"
 #include "footfall/plan/plan.hpp"
 #include "footfall/planner/planner.hpp"
@@ -233,6 +234,8 @@ struct Snapshot {
   std::vector<PlanBounds::From> bounds;
   /// Per agent: it goes after every other (gives_way()).
   std::vector<char> giving_way;
+  /// Where the present agents are thick (none without a mesh).
+  CrowdDensity crowd;
 };
 
 /// True if agent `a` goes before agent `b` where their ways cross: one that

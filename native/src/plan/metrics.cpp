@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "plan/agent_grid.hpp"
+
 namespace footfall {
 namespace {
 
@@ -57,6 +59,7 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
     m.effort = plan.agents[a].total_cost();
   }
   std::vector<Vec2> position(n), previous(n), velocity(n), previous_velocity(n);
+  std::vector<std::size_t> around;
   std::vector<bool> colliding(n, false), present(n, true);
   std::vector<std::vector<Circle>> circles(n);
   std::vector<char> in_3d(n);
@@ -72,6 +75,7 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
       circles[a] = collision_circles(plan.agents[a], plan.character, t);
       present[a] = present_at(plan.agents[a], t);
     }
+    const AgentGrid grid(position, kNear);
     for (size_t a = 0; a < n; ++a) {
       if (!present[a]) continue;  // gone, as SteerBench removes an agent at its goal
       AgentMetrics& m = result.agents[a];
@@ -82,9 +86,11 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
       std::vector<int> near;
       map.gather(reach, near);
       for (const int o : near) now = now || penetration(map, o, disc) > kSteerBenchPenetration;
-      for (size_t b = 0; b < n && !now; ++b) {
-        now = b != a && present[b] &&
-              2 * kSteerBenchRadius - distance(position[a], position[b]) > kSteerBenchPenetration;
+      grid.around(position[a], kNear, around);  // all that could overlap, and more
+      for (const size_t b : around) {
+        now = now || (b != a && present[b] &&
+                      2 * kSteerBenchRadius - distance(position[a], position[b]) >
+                          kSteerBenchPenetration);
       }
       if (now && !colliding[a]) ++m.collision_episodes;
       colliding[a] = now;
@@ -95,8 +101,9 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
       bool overlap = false;
       for (std::size_t c = 0; c < circles[a].size(); ++c)
         overlap = overlap || (!(in_3d[a] && (c == 1 || c == 2)) && map.overlaps(circles[a][c]));
-      for (size_t b = 0; b < n && !overlap; ++b) {
-        if (b == a || !present[b] || distance(position[a], position[b]) > kNear) continue;
+      for (const size_t b : around) {
+        if (overlap || b == a || !present[b] || distance(position[a], position[b]) > kNear)
+          continue;
         for (const Circle& c : circles[a]) {
           for (const Circle& d : circles[b]) overlap = overlap || circles_overlap(c, d);
         }

@@ -1,6 +1,7 @@
-// Footfall — the crowd's neighbour queries: agents' positions at one instant,
-// bucketed in square cells, so that finding those near one agent costs what
-// lies near it, not a pass over the whole crowd.
+// Footfall — neighbour queries among a crowd's agents (the crowd driver's and
+// the plan's metrics): their positions at one instant, bucketed in square
+// cells, so that finding those near one agent costs what lies near it, not a
+// pass over the whole crowd.
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,5 @@
 // Footfall — the crowd's neighbour grid (agent_grid.hpp).
-#include "crowd/agent_grid.hpp"
+#include "plan/agent_grid.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// The crowd's neighbour grid (native/src/crowd/agent_grid.hpp): every agent within
+// The crowd's neighbour grid (native/src/plan/agent_grid.hpp): every agent within
 // the radius comes back, in ascending order, whatever the crowd's spread.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "crowd/agent_grid.hpp"
+#include "plan/agent_grid.hpp"
 
 namespace footfall {
 namespace {

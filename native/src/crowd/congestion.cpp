@@ -1,0 +1,171 @@
+#include "crowd/congestion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <utility>
+
+namespace footfall::crowd {
+namespace {
+
+/// Cells the cheapest-way search expands at most: a way round is a street or
+/// two over, not across a whole city of small cells.
+constexpr int kMostExpanded = 40000;
+
+/// Per cell of a grid `columns` wide, the sum of `v` over the 3 x 3 cells
+/// round it: a row's sums over three, then a column's.
+std::vector<std::uint32_t> box_sums(std::vector<std::uint32_t> v, long columns) {
+  const long rows = static_cast<long>(v.size()) / columns;
+  const auto at = [columns](long x, long y) { return static_cast<std::size_t>(y * columns + x); };
+  std::vector<std::uint32_t> rowwise(v.size());
+  for (long y = 0; y < rows; ++y)
+    for (long x = 0; x < columns; ++x)
+      rowwise[at(x, y)] = v[at(x, y)] + (x > 0 ? v[at(x - 1, y)] : 0) +
+                          (x + 1 < columns ? v[at(x + 1, y)] : 0);
+  for (long y = 0; y < rows; ++y)
+    for (long x = 0; x < columns; ++x)
+      v[at(x, y)] = rowwise[at(x, y)] + (y > 0 ? rowwise[at(x, y - 1)] : 0) +
+                    (y + 1 < rows ? rowwise[at(x, y + 1)] : 0);
+  return v;
+}
+
+}  // namespace
+
+CrowdGrid::CrowdGrid(const NavMesh& mesh, double radius) : low_(mesh.min_corner()) {
+  const Vec2 size = mesh.max_corner() - low_;
+  // Sized by the longer side, so that a long thin domain is no more cells.
+  cell_ = std::max(kCrowdCell, std::max(size.x, size.y) / std::sqrt(kMostCells));
+  columns_ = std::max(1L, static_cast<long>(std::ceil(size.x / cell_)));
+  rows_ = std::max(1L, static_cast<long>(std::ceil(size.y / cell_)));
+  walkable_.resize(static_cast<std::size_t>(columns_ * rows_));
+  std::vector<std::uint32_t> open(walkable_.size());
+  for (long c = 0; c < columns_ * rows_; ++c) {
+    walkable_[static_cast<std::size_t>(c)] = mesh.clearance(centre(c)) >= radius ? 1 : 0;
+    open[static_cast<std::size_t>(c)] = walkable_[static_cast<std::size_t>(c)];
+  }
+  room_ = box_sums(std::move(open), columns_);
+}
+
+long CrowdGrid::cell_of(Vec2 p) const {
+  const double x = std::floor((p.x - low_.x) / cell_);
+  const double y = std::floor((p.y - low_.y) / cell_);
+  if (!(x >= 0 && y >= 0 && x < static_cast<double>(columns_) &&
+        y < static_cast<double>(rows_)))
+    return -1;
+  return static_cast<long>(y) * columns_ + static_cast<long>(x);
+}
+
+Vec2 CrowdGrid::centre(long cell) const {
+  return low_ + cell_ * Vec2{static_cast<double>(cell % columns_) + 0.5,
+                             static_cast<double>(cell / columns_) + 0.5};
+}
+
+CrowdDensity::CrowdDensity(const CrowdGrid& grid, const std::vector<Vec2>& com,
+                           const std::vector<char>& present)
+    : grid_(&grid), density_(grid.cells(), 0.0) {
+  std::vector<std::uint32_t> people(grid.cells(), 0);
+  for (std::size_t j = 0; j < com.size(); ++j) {
+    const long cell = present[j] ? grid.cell_of(com[j]) : -1;
+    if (cell >= 0) ++people[static_cast<std::size_t>(cell)];
+  }
+  const std::vector<std::uint32_t> crowd = box_sums(std::move(people), grid.columns());
+  const double cell_area = grid.cell() * grid.cell();
+  for (long c = 0; c < grid.columns() * grid.rows(); ++c)
+    if (const std::uint32_t room = grid.room(c); room > 0)
+      density_[static_cast<std::size_t>(c)] =
+          crowd[static_cast<std::size_t>(c)] / (room * cell_area);
+}
+
+double CrowdDensity::cost_of(const std::vector<Vec2>& points, double ahead) const {
+  const double sample = 0.5 * grid_->cell();  // [m]
+  double cost = 0.0, along = 0.0;
+  for (std::size_t k = 1; k < points.size() && along < ahead; ++k) {
+    const double piece = distance(points[k - 1], points[k]);
+    const int samples = std::max(1, static_cast<int>(std::ceil(piece / sample)));
+    for (int s = 0; s < samples && along < ahead; ++s) {
+      const Vec2 p = points[k - 1] + ((s + 0.5) / samples) * (points[k] - points[k - 1]);
+      const long cell = grid_->cell_of(p);
+      const double ds = piece / samples;
+      cost += ds * (cell >= 0 ? cost_per_metre(cell) : 1.0);
+      along += ds;
+    }
+  }
+  return cost;
+}
+
+std::vector<Vec2> CrowdDensity::cheapest_cells(Vec2 from, Vec2 goal) const {
+  const long start = grid_->cell_of(from), end = grid_->cell_of(goal);
+  if (start < 0 || end < 0) return {};
+  const long columns = grid_->columns(), rows = grid_->rows();
+  std::vector<double> cost(grid_->cells(), std::numeric_limits<double>::infinity());
+  std::vector<long> parent(grid_->cells(), -1);
+  using Entry = std::pair<double, long>;  // (bound, cell)
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  const Vec2 target = grid_->centre(end);
+  cost[static_cast<std::size_t>(start)] = 0.0;
+  open.push({distance(grid_->centre(start), target), start});
+  int expanded = 0;
+  while (!open.empty()) {
+    const auto [bound, cell] = open.top();
+    open.pop();
+    const double here = cost[static_cast<std::size_t>(cell)];
+    if (bound > here + distance(grid_->centre(cell), target) + 1e-9) continue;  // stale
+    if (cell == end) break;
+    if (++expanded > kMostExpanded) return {};
+    const long x = cell % columns, y = cell / columns;
+    for (long dy = -1; dy <= 1; ++dy)
+      for (long dx = -1; dx <= 1; ++dx) {
+        const long u = x + dx, v = y + dy;
+        if ((dx == 0 && dy == 0) || u < 0 || v < 0 || u >= columns || v >= rows) continue;
+        const long next = v * columns + u;
+        // Diagonally only past two walkable cells: no corner is cut.
+        if (!grid_->walkable(next) || (dx != 0 && dy != 0 &&
+                                       !(grid_->walkable(y * columns + u) &&
+                                         grid_->walkable(v * columns + x))))
+          continue;
+        const double step = grid_->cell() * (dx != 0 && dy != 0 ? std::sqrt(2.0) : 1.0);
+        const double through =
+            here + 0.5 * step * (cost_per_metre(cell) + cost_per_metre(next));
+        if (through >= cost[static_cast<std::size_t>(next)]) continue;
+        cost[static_cast<std::size_t>(next)] = through;
+        parent[static_cast<std::size_t>(next)] = cell;
+        open.push({through + distance(grid_->centre(next), target), next});
+      }
+  }
+  if (parent[static_cast<std::size_t>(end)] < 0 && end != start) return {};
+  std::vector<Vec2> path{goal};
+  for (long c = parent[static_cast<std::size_t>(end)]; c >= 0 && c != start;
+       c = parent[static_cast<std::size_t>(c)])
+    path.push_back(grid_->centre(c));
+  path.push_back(from);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+std::optional<Way> CrowdDensity::way_round(const Way& way, const NavMesh& mesh,
+                                           double radius) const {
+  if (grid_ == nullptr || way.points.size() < 2) return std::nullopt;
+  if (cost_of(way.points, kCrowdAhead) <= std::min(kCrowdAhead, way.length) + 1e-9)
+    return std::nullopt;  // no crowd on its first stretch
+  const std::vector<Vec2> cells = cheapest_cells(way.points.front(), way.points.back());
+  if (cells.size() < 2) return std::nullopt;
+  // The cells' path pulled tight: from each point on to the farthest in a
+  // row that it sees with `radius` of room.
+  Way round{{cells.front()}, 0.0};
+  for (std::size_t at = 0; at + 1 < cells.size();) {
+    std::size_t next = at + 1;
+    while (next + 1 < cells.size() &&
+           mesh.clearance_between(cells[at], cells[next + 1], radius) >= radius)
+      ++next;
+    round.points.push_back(cells[next]);
+    at = next;
+  }
+  round.length = polyline_length(round.points);
+  const double infinite = std::numeric_limits<double>::infinity();
+  if (cost_of(round.points, infinite) > (1.0 - kDetourGain) * cost_of(way.points, infinite))
+    return std::nullopt;
+  return round;
+}
+
+}  // namespace footfall::crowd

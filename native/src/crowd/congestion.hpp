@@ -1,0 +1,96 @@
+// Footfall — where the crowd is thick, and ways round it (crowd_planner.cpp).
+// People take the next street when this one is full: a way whose first
+// stretch runs through a crowd denser than free walking allows is compared
+// with the cheapest way across a grid of the walkable ground on which
+// crowded cells cost more than their length, and the cheaper is taken.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "behavior/local_goal.hpp"
+#include "footfall/navmesh/navmesh.hpp"
+
+namespace footfall::crowd {
+
+/// The side of the grid's square cells, at least: larger where the ground
+/// would take more than kMostCells of it (more than its square root along
+/// its longer side). [m]
+constexpr double kCrowdCell = 1.0;
+constexpr double kMostCells = 250000;
+/// Ways are looked at for crowds this far ahead. [m]
+constexpr double kCrowdAhead = 15.0;
+/// Density at which people still walk freely (Fruin's level of service C
+/// ends at about 0.5 people per square metre). [1/m^2]
+constexpr double kFreeDensity = 0.5;
+/// A metre of way through a crowd of density d costs
+/// 1 + kCrowdWeight * (d - kFreeDensity) metres, above kFreeDensity: at 1.5
+/// people per square metre (a standing queue) a metre costs five.
+constexpr double kCrowdWeight = 4.0;
+/// A way round must cost this share less than the way through the crowd:
+/// ways do not flip between two of about the same cost.
+constexpr double kDetourGain = 0.15;
+
+/// The walkable cells of a navigation mesh: those whose centre has room for
+/// a disc of `radius`. Made once per crowd; read by every search.
+class CrowdGrid {
+ public:
+  CrowdGrid(const NavMesh& mesh, double radius);
+
+  /// The cell holding `p`, or -1 outside the grid.
+  long cell_of(Vec2 p) const;
+  bool walkable(long cell) const { return walkable_[static_cast<std::size_t>(cell)] != 0; }
+  /// How many of the 3 x 3 cells round `cell` are walkable.
+  std::uint32_t room(long cell) const { return room_[static_cast<std::size_t>(cell)]; }
+  std::size_t cells() const { return walkable_.size(); }
+  long columns() const { return columns_; }
+  long rows() const { return rows_; }
+  Vec2 centre(long cell) const;
+  double cell() const { return cell_; }
+
+ private:
+  Vec2 low_;
+  double cell_ = kCrowdCell;
+  long columns_ = 0, rows_ = 0;
+  std::vector<char> walkable_;
+  std::vector<std::uint32_t> room_;
+};
+
+/// How many agents stand in each cell of a CrowdGrid at one tick, and the
+/// ways that avoid where they are thick.
+class CrowdDensity {
+ public:
+  CrowdDensity() = default;
+  /// Counts the agents at `com` that are `present`.
+  CrowdDensity(const CrowdGrid& grid, const std::vector<Vec2>& com,
+               const std::vector<char>& present);
+
+  /// People per square metre of walkable ground in the 3 x 3 cells round
+  /// `cell`. [1/m^2]
+  double density(long cell) const { return density_[static_cast<std::size_t>(cell)]; }
+  /// What a metre through `cell` costs, in metres. [>= 1]
+  double cost_per_metre(long cell) const {
+    return 1.0 + kCrowdWeight * std::max(0.0, density(cell) - kFreeDensity);
+  }
+
+  /// A way from `from` to `goal` round the crowds, when the first
+  /// kCrowdAhead of `way` runs through one and the cheapest way across the
+  /// grid costs kDetourGain less than `way`; kept `radius` clear of the
+  /// obstacles of `mesh` (its corners cut where the mesh allows).
+  std::optional<Way> way_round(const Way& way, const NavMesh& mesh, double radius) const;
+
+ private:
+  /// The cost of the first `ahead` metres of `points` (all of it: infinite). [m]
+  double cost_of(const std::vector<Vec2>& points, double ahead) const;
+  /// The cheapest path of cells from `from` to `goal` (A*), as cell centres
+  /// with `from` and `goal` at the ends; empty if none.
+  std::vector<Vec2> cheapest_cells(Vec2 from, Vec2 goal) const;
+
+  const CrowdGrid* grid_ = nullptr;
+  /// Per cell, for every search of the tick to read: counted once. [1/m^2]
+  std::vector<double> density_;
+};
+
+}  // namespace footfall::crowd
