@@ -7,17 +7,17 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstdlib>
-#include <cstdio>
 #include <map>
 #include <vector>
 
 #include "footfall/navmesh/navmesh.hpp"
+#include "properties.hpp"
 
 namespace {
 
 using footfall::NavMesh;
 using footfall::Vec2;
+using footfall::fuzz::require;
 
 constexpr double kCell = 0.5;  // [m] the grid that coordinates fall on
 constexpr Vec2 kLow{0.0, 0.0}, kHigh{8.0, 8.0};
@@ -28,12 +28,6 @@ std::vector<Vec2> obstacle_of(std::uint8_t kind, std::uint8_t at, std::uint8_t s
   if (kind % 4 == 0) return {corner};
   const double w = kCell * (1 + size % 4), h = kCell * (1 + (size / 4) % 4);
   return {corner, corner + Vec2{w, 0.0}, corner + Vec2{w, h}, corner + Vec2{0.0, h}};
-}
-
-void require(bool ok, const char* what) {
-  if (ok) return;
-  std::fprintf(stderr, "updated mesh and rebuilt mesh disagree: %s\n", what);
-  std::abort();
 }
 
 }  // namespace
@@ -65,17 +59,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (double x = 0.25; x < kHigh.x; x += 1.0) {
     for (double y = 0.25; y < kHigh.y; y += 1.0) {
       const Vec2 p{x, y};
-      require(std::fabs(mesh.clearance(p) - rebuilt.clearance(p)) <= 1e-9, "clearance");
+      require(std::fabs(mesh.clearance(p) - rebuilt.clearance(p)) <= 1e-9,
+              "updated mesh as rebuilt: clearance");
       const Vec2 q{kHigh.x - y, x};
-      require(mesh.line_of_sight(p, q) == rebuilt.line_of_sight(p, q), "line of sight");
+      require(mesh.line_of_sight(p, q) == rebuilt.line_of_sight(p, q),
+              "updated mesh as rebuilt: line of sight");
     }
   }
   for (const double radius : {0.1, 0.3}) {
     const footfall::PathQuery query{{0.25, 0.25}, {7.75, 7.6}, radius};
     const footfall::PathResult a = mesh.find_path(query), b = rebuilt.find_path(query);
-    require(a.status == b.status, "path status");
+    require(a.status == b.status, "updated mesh as rebuilt: path status");
     if (a.status == footfall::PathStatus::kFound)
-      require(std::fabs(a.length - b.length) <= 0.01 * b.length + 1e-9, "path length");
+      require(std::fabs(a.length - b.length) <= 0.01 * b.length + 1e-9,
+              "updated mesh as rebuilt: path length");
   }
   return 0;
 }

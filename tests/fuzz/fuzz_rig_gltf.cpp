@@ -1,6 +1,7 @@
 // Fuzz target: a rig as glTF (a .gltf with its buffer as a data URI, or a
 // .glb), read or refused with std::invalid_argument; a rig read has its bones
-// detected (no profile) and walks four steps, as `footfall animate` poses it.
+// detected (no profile) and walks four steps, as `footfall animate` poses it,
+// every bone with a finite rotation of unit length at every frame.
 // The seed (corpus/fuzz_rig_gltf/humanoid-skeleton.gltf) is the project
 // rig's skeleton, skin and a few keys of its walk, without the mesh.
 #include <cstddef>
@@ -11,6 +12,7 @@
 
 #include "animate/agent_motion.hpp"
 #include "footfall/animate/rig.hpp"
+#include "properties.hpp"
 
 namespace {
 
@@ -37,9 +39,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const footfall::CharacterParams character;
   static const std::vector<double> times{0.0, 0.25, 0.75, 1.125, 1.625, 2.125};
   try {
-    const footfall::Rig rig =
-        footfall::Rig::parse(std::string(reinterpret_cast<const char*>(data), size), "fuzz.gltf", {});
-    footfall::animate::agent_motion(rig.data(), plan, character, times, 24.0);
+    const footfall::Rig rig = footfall::Rig::parse(
+        std::string(reinterpret_cast<const char*>(data), size), "fuzz.gltf", {});
+    footfall::fuzz::require_sound_pose(
+        footfall::animate::agent_motion(rig.data(), plan, character, times, 24.0));
   } catch (const std::invalid_argument&) {
   }
   return 0;

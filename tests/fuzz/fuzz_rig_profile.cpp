@@ -1,7 +1,8 @@
 // Fuzz target: a rig profile (JSON), read or refused with
 // std::invalid_argument; a profile read is applied to the project rig's
 // skeleton (the rig target's seed), whose bones it may name wrongly (refused
-// too) or rightly, and a rig made is posed at one instant.
+// too) or rightly, and a rig made is posed at one instant, every bone with a
+// finite rotation of unit length.
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
@@ -12,6 +13,7 @@
 
 #include "animate/agent_motion.hpp"
 #include "footfall/animate/rig.hpp"
+#include "properties.hpp"
 
 namespace {
 
@@ -30,10 +32,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const footfall::CharacterParams character;
   static const std::vector<double> times{0.0};
   try {
-    const footfall::RigProfile profile =
-        footfall::parse_rig_profile(std::string(reinterpret_cast<const char*>(data), size), "fuzz.json");
+    const footfall::RigProfile profile = footfall::parse_rig_profile(
+        std::string(reinterpret_cast<const char*>(data), size), "fuzz.json");
     const footfall::Rig rig = footfall::Rig::parse(rig_text, "rig.gltf", profile);
-    footfall::animate::agent_motion(rig.data(), standing, character, times, 24.0);
+    footfall::fuzz::require_sound_pose(
+        footfall::animate::agent_motion(rig.data(), standing, character, times, 24.0));
   } catch (const std::invalid_argument&) {
   }
   return 0;
