@@ -94,7 +94,7 @@ double CrowdDensity::cost_of(const std::vector<Vec2>& points, double ahead) cons
   return cost;
 }
 
-std::vector<Vec2> CrowdDensity::cheapest_cells(Vec2 from, Vec2 goal) const {
+std::vector<Vec2> CrowdDensity::cheapest_cells(Vec2 from, Vec2 goal, double budget) const {
   const long start = grid_->cell_of(from), end = grid_->cell_of(goal);
   if (start < 0 || end < 0) return {};
   const long columns = grid_->columns(), rows = grid_->rows();
@@ -111,8 +111,8 @@ std::vector<Vec2> CrowdDensity::cheapest_cells(Vec2 from, Vec2 goal) const {
     open.pop();
     const double here = cost[static_cast<std::size_t>(cell)];
     if (bound > here + distance(grid_->centre(cell), target) + 1e-9) continue;  // stale
+    if (bound >= budget || ++expanded > kMostExpanded) return {};
     if (cell == end) break;
-    if (++expanded > kMostExpanded) return {};
     const long x = cell % columns, y = cell / columns;
     for (long dy = -1; dy <= 1; ++dy)
       for (long dx = -1; dx <= 1; ++dx) {
@@ -148,7 +148,16 @@ std::optional<Way> CrowdDensity::way_round(const Way& way, const NavMesh& mesh,
   if (grid_ == nullptr || way.points.size() < 2) return std::nullopt;
   if (cost_of(way.points, kCrowdAhead) <= std::min(kCrowdAhead, way.length) + 1e-9)
     return std::nullopt;  // no crowd on its first stretch
-  const std::vector<Vec2> cells = cheapest_cells(way.points.front(), way.points.back());
+  // A way round costs at least its length, at least the straight line's: the
+  // search stops short of the cost it must beat (where the crowd fills the
+  // only way, such as a door everyone leaves by, at once or nearly).
+  const double infinite = std::numeric_limits<double>::infinity();
+  const double budget = (1.0 - kDetourGain) * cost_of(way.points, infinite);
+  // Pulled tight, a path of cells may shorten by up to 1 / cos(22.5 deg), as
+  // eight directions approximate any.
+  constexpr double kPulled = 1.0824;
+  const std::vector<Vec2> cells =
+      cheapest_cells(way.points.front(), way.points.back(), kPulled * budget);
   if (cells.size() < 2) return std::nullopt;
   // The cells' path pulled tight: from each point on to the farthest in a
   // row that it sees with `radius` of room.
@@ -162,9 +171,7 @@ std::optional<Way> CrowdDensity::way_round(const Way& way, const NavMesh& mesh,
     at = next;
   }
   round.length = polyline_length(round.points);
-  const double infinite = std::numeric_limits<double>::infinity();
-  if (cost_of(round.points, infinite) > (1.0 - kDetourGain) * cost_of(way.points, infinite))
-    return std::nullopt;
+  if (cost_of(round.points, infinite) > budget) return std::nullopt;
   return round;
 }
 

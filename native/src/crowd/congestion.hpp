@@ -85,8 +85,8 @@ class CrowdDensity {
   /// The cost of the first `ahead` metres of `points` (all of it: infinite). [m]
   double cost_of(const std::vector<Vec2>& points, double ahead) const;
   /// The cheapest path of cells from `from` to `goal` (A*), as cell centres
-  /// with `from` and `goal` at the ends; empty if none.
-  std::vector<Vec2> cheapest_cells(Vec2 from, Vec2 goal) const;
+  /// with `from` and `goal` at the ends; empty if none costs under `budget`.
+  std::vector<Vec2> cheapest_cells(Vec2 from, Vec2 goal, double budget) const;
 
   const CrowdGrid* grid_ = nullptr;
   /// Per cell, for every search of the tick to read: counted once. [1/m^2]
