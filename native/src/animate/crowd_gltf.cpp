@@ -311,16 +311,29 @@ CrowdGltfSummary write_crowd_gltf(const Plan& plan, const Rig& rig, const std::s
     crowd.model().animations.push_back(std::move(animation));
   }
 
+  tinygltf::Model& model = crowd.finish();
+  // A .glb states its length in 32 bits; the JSON that goes with the keys is
+  // far smaller than this margin.
+  constexpr std::uintmax_t kGlbLimit = 0xFFFFFFFFu, kJsonMargin = 256u << 20;
+  const std::uintmax_t keys = model.buffers[0].data.size();
+  if (keys > kGlbLimit - kJsonMargin)
+    throw std::invalid_argument(
+        path + ": the crowd's keys take " + std::to_string(keys >> 20) +
+        " MiB, over the 4 GiB a .glb can hold: animate fewer agents, fewer keys a second "
+        "(--fps), or a shorter plan");
   tinygltf::TinyGLTF writer;
-  std::ostringstream stream;
-  if (!writer.WriteGltfSceneToStream(&crowd.finish(), stream, false, true))
-    throw Error(path + ": the glTF could not be serialised");
-  const std::string bytes = stream.str();
-  detail::write_file_atomically(path, bytes);
+  std::uintmax_t written = 0;
+  // Streamed to the file: the model is not held a second and third time as text.
+  detail::write_file_atomically(path, [&](std::ostream& stream) {
+    const std::streampos begin = stream.tellp();
+    if (!writer.WriteGltfSceneToStream(&model, stream, false, true))
+      throw Error(path + ": the glTF could not be serialised");
+    written = static_cast<std::uintmax_t>(stream.tellp() - begin);
+  });
   CrowdGltfSummary summary;
   summary.agents = static_cast<int>(plan.agents.size());
   summary.frames = frames;
-  summary.bytes = bytes.size();
+  summary.bytes = written;
   summary.clips = rig.clip_sources();
   return summary;
 }
