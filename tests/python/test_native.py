@@ -201,10 +201,9 @@ def test_planning_releases_the_gil(ff):
     # While one thread plans, another Python thread keeps running. Were the GIL held, the other
     # thread could still tick just before the call and just after it, for a switch interval or
     # so each (tens of thousands of ticks here): only ticks well inside the call count, 10 switch
-    # intervals from either end (none while sum(range(10**7)) holds the GIL for 1.5 s).
-    scenario = ff.demo_scenario()
-    scenario.agents = [ff.AgentSpec(f"a{i}", (-0.8 * (i % 5), -1.6 + 0.8 * (i // 5)), 0.0, [(-20.0, 0.8 * i)])
-                       for i in range(20)]
+    # intervals from either end (none while sum(range(10**7)) holds the GIL for 1.5 s). The
+    # city of 80 takes 1-2 s to plan here, the demo of 20 it replaced some 0.1-0.5 s.
+    scenario = ff.city_scenario(80, 30.0, 1)
     ticks = []
     done = threading.Event()
 
