@@ -36,13 +36,13 @@
 #include <optional>
 #include <stdexcept>
 
-#include "plan/agent_grid.hpp"
+#include "behavior/local_goal.hpp"
 #include "crowd/crowd_commit.hpp"
 #include "crowd/crowd_walker.hpp"
 #include "crowd/crowd_yielding.hpp"
 #include "footfall/crowd/crowd_planner.hpp"
 #include "footfall/plan/plan.hpp"
-#include "behavior/local_goal.hpp"
+#include "plan/agent_grid.hpp"
 #include "util/workers.hpp"
 
 namespace footfall {

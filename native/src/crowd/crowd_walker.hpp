@@ -11,13 +11,13 @@
 #include <optional>
 #include <vector>
 
-#include "plan/agent_grid.hpp"
+#include "behavior/local_goal.hpp"
 #include "crowd/congestion.hpp"
 #include "footfall/crowd/crowd_planner.hpp"
 #include "footfall/plan/plan.hpp"
-#include "footfall/planner/planner.hpp"
-#include "behavior/local_goal.hpp"
 #include "footfall/plan/plan_samples.hpp"
+#include "footfall/planner/planner.hpp"
+#include "plan/agent_grid.hpp"
 
 namespace footfall::crowd {
 
