@@ -25,23 +25,20 @@ void JsonWriter::put(std::string_view text) {
   if (buffer_.size() >= kBufferSize) flush();
 }
 
-JsonWriter& JsonWriter::begin_object() {
-  separate();
-  put("{");
-  first_.push_back(true);
-  return *this;
-}
+JsonWriter& JsonWriter::begin_object() { return open("{"); }
 
 JsonWriter& JsonWriter::end_object() { return close("}"); }
 
-JsonWriter& JsonWriter::begin_array() {
+JsonWriter& JsonWriter::begin_array() { return open("["); }
+
+JsonWriter& JsonWriter::end_array() { return close("]"); }
+
+JsonWriter& JsonWriter::open(std::string_view bracket) {
   separate();
-  put("[");
+  put(bracket);
   first_.push_back(true);
   return *this;
 }
-
-JsonWriter& JsonWriter::end_array() { return close("]"); }
 
 JsonWriter& JsonWriter::close(std::string_view bracket) {
   first_.pop_back();

@@ -41,6 +41,8 @@ class JsonWriter {
   /// The comma before an item or member that is not its container's first.
   void separate();
   void put(std::string_view text);
+  /// Opens or closes an object or array (`bracket`), keeping `first_`.
+  JsonWriter& open(std::string_view bracket);
   JsonWriter& close(std::string_view bracket);
 
   std::ostream& out_;
