@@ -1,15 +1,28 @@
-"""Shared by the Blender background tests: a check, and a runner that reports
+"""Shared by the Blender background tests: checks, and a runner that reports
 every test and makes Blender exit non-zero when any fails."""
 
+import json
 import os
+import pathlib
+import subprocess
 import sys
 import traceback
+
+VALIDATOR = pathlib.Path(__file__).resolve().parents[1] / "gltf" / "validate.mjs"
 
 
 def check(condition, message):
     """Fails the current test with `message` unless `condition` holds."""
     if not condition:
         raise AssertionError(message)
+
+
+def expect_valid_gltf(path):
+    """The Khronos glTF validator finds no error in the file."""
+    result = subprocess.run(["node", str(VALIDATOR), str(path)], capture_output=True, text=True)
+    report = json.loads(result.stdout)["issues"]
+    print(f"validator: {report['numErrors']} errors, {report['numWarnings']} warnings")
+    check(result.returncode == 0 and report["numErrors"] == 0, f"the validator found errors: {result.stdout[:2000]}")
 
 
 def run(tests):

@@ -16,7 +16,7 @@ import addon_utils  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from foot_contact import plan_errors  # noqa: E402
-from harness import check, run  # noqa: E402
+from harness import check, expect_valid_gltf, run  # noqa: E402
 import mathutils
 import numpy
 
@@ -373,17 +373,6 @@ def test_replanning_the_selected_agents_updates_only_their_rigs():
     select_only(bpy.data.objects["ann (agent)"])
     expect_error(bpy.ops.footfall.plan, "the stored plan has no plan for agent 'dee'", selected_only=True)
     check(plan_store.load() == stored and plan_store.pending(scene) == [], "a refused plan changed the stored one")
-
-
-def expect_valid_gltf(path):
-    """The Khronos glTF validator finds no error in the file."""
-    import subprocess
-
-    validator = ROOT / "tests" / "gltf" / "validate.mjs"
-    run = subprocess.run(["node", str(validator), str(path)], capture_output=True, text=True)
-    report = json.loads(run.stdout)["issues"]
-    print(f"validator: {report['numErrors']} errors, {report['numWarnings']} warnings")
-    check(run.returncode == 0 and report["numErrors"] == 0, f"the validator found errors: {run.stdout[:2000]}")
 
 
 def glb_json(path):

@@ -14,7 +14,7 @@ import bpy  # first: as a Python module, bpy puts Blender's own modules on the p
 import addon_utils  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from harness import check, run  # noqa: E402
+from harness import check, expect_valid_gltf, run  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, os.environ.get("FOOTFALL_ADDON_DIR", str(ROOT / "blender_addon")))
@@ -229,6 +229,7 @@ def test_the_planners_body_is_measured_from_the_rig():
     imported = rig_import.import_rig(str(project))
     body = rig_body.body_of(imported.armature)
     check(body is not None and any("body measured" in note for note in imported.notes), imported.notes)
+    check(not any("built-in body" in note for note in imported.notes), "a limb of the project's rig has no capsule")
     check(sorted(body["poses"]) == ["arms_in", "side_step", "walk"], sorted(body["poses"]))
     check(all(len(poses) == rig_body.PHASES and all(len(pose) == 14 and all(c[6] > 0 for c in pose.values())
                                                     for pose in poses) for poses in body["poses"].values()),
@@ -250,8 +251,84 @@ def test_the_planners_body_is_measured_from_the_rig():
     check(any("do not narrow" in note for note in imported.notes), imported.notes)
 
 
+class RecordingOperator:
+    """Stands in for an operator instance in a direct call of its `execute`:
+    the properties it reads, and the reports it makes."""
+
+    def __init__(self, **properties):
+        self.__dict__.update(properties)
+        self.reports = []
+
+    def report(self, levels, message):
+        self.reports.append((levels, message))
+
+
+def skin_to(mesh, bone, other, keep):
+    """Moves the weights of `bone`'s vertex group to `other`'s, except on
+    the `keep` vertices skinned most to `bone` that are lowest (nearest the
+    elbow, for an upper arm)."""
+    group, target = mesh.vertex_groups[bone], mesh.vertex_groups[other]
+    own = sorted((v for v in mesh.data.vertices if max(v.groups, key=lambda g: g.weight).group == group.index),
+                 key=lambda v: v.co.z)
+    kept = {v.index for v in own[:keep]}
+    for vertex in mesh.data.vertices:
+        weight = next((g.weight for g in vertex.groups if g.group == group.index), 0.0)
+        if weight > 0 and vertex.index not in kept:
+            target.add([vertex.index], weight, "ADD")
+            group.remove([vertex.index])
+
+
+def test_a_rig_whose_mesh_gives_its_upper_arms_nothing_plans_applies_and_exports():
+    """The project's rig, its right upper arm skinned with the chest (no
+    vertex of its own) and its left one keeping one vertex (a capsule of
+    radius 0, which Plan refused: 'character.behaviors.walk.poses[0]
+    .upper_arm_left: radius must be in (0, 1] m'): Import Rig says that both
+    take the built-in body's radius, scaled to the rig, and the rig plans,
+    applies and exports a valid glTF."""
+    import numpy
+
+    from footfall.bridge import plan_store, rig_body
+    from footfall.core import body_capsules
+    from footfall.ui.operators import FOOTFALL_OT_import_rig
+
+    fresh_scene()
+    if "bool" not in numpy.__dict__:
+        numpy.bool = bool  # Debian's Blender 3.4 importer
+    bpy.ops.import_scene.gltf(filepath=str(ROOT / "rigs" / "footfall_humanoid.glb"))
+    (armature,) = [o for o in bpy.data.objects if o.type == "ARMATURE"]
+    (mesh,) = [o for o in bpy.data.objects if o.type == "MESH" and o.parent == armature]  # 4.x adds a bone shape
+    skin_to(mesh, "upper_arm.R", "chest", keep=0)
+    skin_to(mesh, "upper_arm.L", "chest", keep=1)
+
+    importer = RecordingOperator(filepath="", armature=armature.name)
+    check(FOOTFALL_OT_import_rig.execute(importer, bpy.context) == {"FINISHED"}, importer.reports)
+    notes = [message for levels, message in importer.reports if levels == {"INFO"} and "built-in body" in message]
+    check(len(notes) == 1 and notes[0].endswith(": upper_arm_left (its vertices give a radius of 0 m); "
+                                                "upper_arm_right (no vertices of its own)"), importer.reports)
+    body = rig_body.body_of(armature)
+    check(body is not None, f"no body stored: {importer.reports}")
+    leg_length = imported_profile().dimensions["leg_length"]
+    for limb in ("upper_arm_left", "upper_arm_right"):
+        radius = body["poses"]["walk"][0][limb][6]
+        check(radius == round(body_capsules.builtin_radius(limb, leg_length), 4), f"{limb}: radius {radius}")
+
+    scenario = TMP / "two-ways.json"
+    scenario.write_text(json.dumps({"format": "footfall-scenario", "version": 1, "agents": [
+        {"name": "ann", "position": [0, 0], "goals": [[5, 0]]},
+        {"name": "bob", "position": [5, 0.3], "goals": [[0, 0.3]]}]}))
+    check(bpy.ops.footfall.load_scenario(filepath=str(scenario)) == {"FINISHED"}, "load failed")
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+    plan = json.loads(plan_store.load())
+    check(all(agent["status"] == "reached" for agent in plan["agents"]), [a["status"] for a in plan["agents"]])
+    check(bpy.ops.footfall.apply() == {"FINISHED"}, "apply failed")
+    out = TMP / "armless.glb"
+    check(bpy.ops.footfall.export_gltf(filepath=str(out)) == {"FINISHED"}, "export failed")
+    expect_valid_gltf(out)
+
+
 run([test_mixamo_rig_is_detected, test_bones_of_no_naming_scheme_are_found_from_the_skeleton,
      test_rigs_are_read_from_gltf_and_fbx_files_only, test_an_fbx_rig_is_imported_and_kept_out_of_renders,
      test_a_rigify_metarig_in_the_scene_is_used_as_it_is, test_unmappable_rig_lists_bones_and_changes_nothing,
      test_panel_fields_complete_the_map, test_profile_beside_the_file_completes_the_map,
-     test_project_rig_matches_its_profile, test_the_planners_body_is_measured_from_the_rig])
+     test_project_rig_matches_its_profile, test_the_planners_body_is_measured_from_the_rig,
+     test_a_rig_whose_mesh_gives_its_upper_arms_nothing_plans_applies_and_exports])

@@ -48,13 +48,46 @@ def test_vertices_go_to_the_nearest_limb_their_bone_offers():
     assert points["pelvis"].tolist() == [[0.0, 0.05, 0.93]]
 
 
-def test_every_limb_gets_a_capsule_bare_ones_sized_from_the_legs():
-    joints = {joint: numpy.array([0.0, 0.0, float(i)]) for i, joint in
-              enumerate(j for ends in LIMB_JOINTS.values() for j in ends)}
-    capsules = body_capsules.rest_capsules(joints, {}, leg_length=0.9)
+def spread_joints():
+    return {joint: numpy.array([0.0, 0.0, float(i)]) for i, joint in
+            enumerate(j for ends in LIMB_JOINTS.values() for j in ends)}
+
+
+def test_every_limb_gets_a_capsule_bare_ones_the_built_in_bodys_scaled_by_the_legs():
+    joints = spread_joints()
+    capsules, fallbacks = body_capsules.rest_capsules(joints, {}, leg_length=0.9)
     assert tuple(capsules) == LIMBS and len(LIMBS) == 14
-    assert capsules["shin_left"].radius == pytest.approx(0.06 * 0.9)
+    # The built-in body's shin (0.065 m) on legs 0.9 m long instead of its 0.876.
+    assert capsules["shin_left"].radius == pytest.approx(0.065 * 0.9 / 0.876435, abs=1e-6)
     assert capsules["forearm_right"].bone_b == ("right", "hand")
+    assert fallbacks == {limb: "no vertices of its own" for limb in LIMBS}
+
+
+@pytest.mark.filterwarnings("ignore:invalid value encountered in divide:RuntimeWarning")  # joints that coincide
+def test_a_limb_whose_vertices_give_no_usable_capsule_takes_the_built_in_radius():
+    """One vertex (radius 0), two on the axis of joints that coincide (not
+    finite), one far off (an absurd radius): each limb runs joint to joint
+    with the built-in body's radius scaled to the rig, and says why; a limb
+    with a mesh keeps its own capsule."""
+    joints = spread_joints()
+    joints[("right", "forearm"), "head"] = joints[("right", "upper_arm"), "head"]  # the right upper arm has no length
+    arm = joints[("left", "upper_arm"), "head"]
+    points = {
+        "upper_arm_left": numpy.array([arm + (0.0, 0.0, 0.2)]),
+        "upper_arm_right": numpy.array([joints[("right", "upper_arm"), "head"]] * 2),
+        # A thigh, and a vertex 3 m off it (a cape skinned to the thigh, say).
+        "thigh_left": numpy.vstack([box_points((-0.06, -0.06, 16.2), (0.06, 0.06, 19.8)), [(3.0, 0.0, 18.0)]]),
+        "shin_left": box_points((-0.05, -0.05, 20.2), (0.05, 0.05, 23.8)),
+    }
+    capsules, fallbacks = body_capsules.rest_capsules(joints, points, leg_length=0.9)
+    assert fallbacks["upper_arm_left"] == "its vertices give a radius of 0 m"
+    assert fallbacks["upper_arm_right"] == "its vertices give no finite capsule"
+    assert fallbacks["thigh_left"] == "its vertices give a radius of 1.53 m"
+    assert "shin_left" not in fallbacks and capsules["shin_left"].radius == pytest.approx(0.05 * math.sqrt(2))
+    for limb in ("upper_arm_left", "upper_arm_right", "thigh_left"):
+        capsule, (joint_a, joint_b) = capsules[limb], LIMB_JOINTS[limb]
+        assert capsule.radius == pytest.approx(body_capsules.builtin_radius(limb, 0.9))
+        assert capsule.a.tolist() == joints[joint_a].tolist() and capsule.b.tolist() == joints[joint_b].tolist()
 
 
 @pytest.mark.parametrize("across", [False, True])

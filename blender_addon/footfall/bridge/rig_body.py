@@ -65,9 +65,11 @@ def _clip(rig, profile, behavior: str) -> rig_clips.Clip:
     return rig_clips.own_clip(rig, profile, behavior) or procedural_clips.clip(behavior, rig, profile)
 
 
-def measure(rig, profile) -> dict:
+def measure(rig, profile) -> Tuple[dict, Dict[str, str]]:
     """{"height": the top of the mesh above the ground [m], "poses":
-    {behaviour: [pose: {limb: [ax, ay, az, bx, by, bz, radius]}]}}."""
+    {behaviour: [pose: {limb: [ax, ay, az, bx, by, bz, radius]}]}}, and the
+    limbs that took the built-in body's radius, each with why
+    (body_capsules.rest_capsules)."""
     bones = profile.bones
     world = numpy.array(rig.matrix_world)
     data = rig.data
@@ -79,8 +81,8 @@ def measure(rig, profile) -> dict:
 
     joints = {j: joint(*j) for ends in LIMB_JOINTS.values() for j in ends}
     vertices, roles = _vertices(rig, bones)
-    capsules = body_capsules.rest_capsules(joints, body_capsules.limb_points(vertices, roles, joints),
-                                           profile.dimensions["leg_length"])
+    capsules, fallbacks = body_capsules.rest_capsules(joints, body_capsules.limb_points(vertices, roles, joints),
+                                                      profile.dimensions["leg_length"])
     names = sorted({_bone(bones, r) for c in capsules.values() for r in (c.bone_a, c.bone_b)} | {bones["hips"]})
     # Each capsule end in its bone's rest frame (world scale and placement included).
     rest = {name: world @ numpy.array(data.bones[name].matrix_local) for name in names}
@@ -105,20 +107,34 @@ def measure(rig, profile) -> dict:
             poses.append(pose)
         motions[behavior] = poses
     height = float(vertices[:, 2].max()) if len(vertices) else float(joints[("head",), "tail"][2])
-    return {"height": round(height, 4), "poses": motions}
+    return {"height": round(height, 4), "poses": motions}, fallbacks
 
 
-def measured(rig, profile) -> Tuple[Optional[dict], str]:
-    """The rig's body and a note for the user; None (and why) where its
-    motions do not narrow from walk to arms in to side step: the planner
-    needs that order, and then tests the built-in body."""
-    body = measure(rig, profile)
+def _fallback_notes(fallbacks: Dict[str, str]) -> List[str]:
+    """A note naming the limbs that took the built-in body's radius, and why."""
+    if not fallbacks:
+        return []
+    by_why: Dict[str, List[str]] = {}
+    for limb, why in fallbacks.items():
+        by_why.setdefault(why, []).append(limb)
+    limbs = "; ".join(f"{', '.join(names)} ({why})" for why, names in by_why.items())
+    return [f"body: the built-in body's radius, scaled to the rig's leg length, for the limbs its mesh gives "
+            f"nothing usable: {limbs}"]
+
+
+def measured(rig, profile) -> Tuple[Optional[dict], List[str]]:
+    """The rig's body and notes for the user (which limbs took the built-in
+    body's radius); None (and why) where its motions do not narrow from walk
+    to arms in to side step: the planner needs that order, and then tests the
+    built-in body."""
+    body, fallbacks = measure(rig, profile)
+    notes = _fallback_notes(fallbacks)
     extents = {b: body_capsules.lateral_extent(body["poses"][b]) for b in PLANNED_BEHAVIORS}
     widths = ", ".join(f"{b} {extents[b]:.2f} m" for b in reversed(PLANNED_BEHAVIORS))
     if not extents["side_step"] < extents["arms_in"] < extents["walk"]:
-        return None, (f"body: its clips do not narrow from walk to arms in to side step (across the way: {widths}); "
-                      "the planner tests the built-in body")
-    return body, f"body measured from its mesh and clips (across the way: {widths})"
+        return None, notes + [f"body: its clips do not narrow from walk to arms in to side step (across the way: "
+                              f"{widths}); the planner tests the built-in body"]
+    return body, notes + [f"body measured from its mesh and clips (across the way: {widths})"]
 
 
 def body_of(rig) -> Optional[dict]:

@@ -175,8 +175,8 @@ def import_rig(filepath: str = "", mapping: Optional[Dict[str, object]] = None,
         clips, clip_notes = rig_clips.choose(rig, bones, given.clips, actions, source)
         notes += clip_notes
         profile = RigProfile(bones=bones, clips=clips, dimensions=dimensions, rig=source)
-        body, body_note = rig_body.measured(rig, profile)
-        notes.append(body_note)
+        body, body_notes = rig_body.measured(rig, profile)
+        notes += body_notes
         rig[PROFILE_PROPERTY] = json.dumps(profile.to_document())  # last: a failure changes nothing
         if body is not None:
             rig[rig_body.BODY_PROPERTY] = json.dumps(body)

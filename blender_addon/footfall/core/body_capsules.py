@@ -1,7 +1,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The full-body planner's body (docs/full-body.md) measured from a rig:
-14 capsules fitted to its skinned mesh in the rest pose, each riding on the
-bones of its two joints, and placed in the planner's travel frame.
+14 capsules fitted to its skinned mesh in the rest pose (a limb the mesh
+gives nothing usable takes the built-in body's radius, scaled to the rig),
+each riding on the bones of its two joints, and placed in the planner's
+travel frame.
 
 Pure numpy: the Blender side (bridge/rig_body) gives the rest joints, the
 vertices of each limb and the posed bone matrices.
@@ -9,7 +11,7 @@ vertices of each limb and the posed bone matrices.
 
 import math
 from dataclasses import dataclass
-from typing import Dict, List, Mapping, Sequence, Tuple
+from typing import Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy
 
@@ -48,9 +50,14 @@ MEMBERS: Dict[Role, Tuple[str, ...]] = {
     **{(side, "shin"): (f"shin_{side}",) for side in SIDES},
     **{(side, role): (f"foot_{side}",) for side in SIDES for role in ("foot", "toe")},
 }
-# Radii of a rig without a mesh for a limb, as shares of its leg length.
-BARE_RADII = {"head": 0.12, "shoulders": 0.08, "torso": 0.16, "pelvis": 0.12, "upper_arm": 0.05, "forearm": 0.045,
-              "thigh": 0.08, "shin": 0.06, "foot": 0.05}
+# The core's built-in body (native/src/fullbody/builtin_motions.cpp at
+# CharacterParams' defaults: 1.75 m tall): each limb's radius [m], and its
+# leg length, hip to knee to ankle [m].
+BUILTIN_RADII = {"head": 0.105, "shoulders": 0.13, "torso": 0.13, "pelvis": 0.13, "upper_arm": 0.045,
+                 "forearm": 0.045, "thigh": 0.065, "shin": 0.065, "foot": 0.035}
+BUILTIN_LEG_LENGTH = 2 * 0.51 * (0.53 - 0.039) * 1.75
+# A fitted radius is usable from a tenth to four times the built-in body's, scaled to the rig.
+USABLE_RADII = (0.1, 4.0)
 
 
 @dataclass(frozen=True)
@@ -166,19 +173,51 @@ def limb_points(vertices: numpy.ndarray, roles: Sequence[Role], joints: Mapping[
     return {limb: vertices[indices] for limb, indices in chosen.items() if indices}
 
 
+def builtin_radius(limb: str, leg_length: float) -> float:
+    """The built-in body's radius of `limb`, scaled to a rig by its leg length:
+    the length the rig's other parameters scale by (core/character), and
+    measured joint to joint (the length of a leaf bone, the head, a hand or a
+    toe, is often an importer's guess)."""
+    kind = limb.rsplit("_", 1)[0] if limb.endswith(SIDES) else limb
+    return BUILTIN_RADII[kind] * leg_length / BUILTIN_LEG_LENGTH
+
+
+def _unusable(a: numpy.ndarray, b: numpy.ndarray, radius: float, builtin: float) -> Optional[str]:
+    """Why a fitted capsule is no use to the planner (its limb's built-in
+    radius, scaled to the rig, `builtin`), or None: not finite, or a radius
+    out of USABLE_RADII."""
+    if not (numpy.isfinite(a).all() and numpy.isfinite(b).all() and math.isfinite(radius)):
+        return "its vertices give no finite capsule"
+    low, high = USABLE_RADII
+    if not low * builtin <= radius <= high * builtin:
+        return f"its vertices give a radius of {radius:.3g} m"
+    return None
+
+
+def _rest_capsule(a: numpy.ndarray, b: numpy.ndarray, points: Optional[numpy.ndarray], builtin: float
+                  ) -> Tuple[numpy.ndarray, numpy.ndarray, float, Optional[str]]:
+    """A limb's capsule fitted to its points; where they give none usable,
+    along its joints a-b with its built-in radius `builtin`, and why."""
+    if points is None:
+        return a, b, builtin, "no vertices of its own"
+    fitted = fit(a, b, points)
+    why = _unusable(*fitted, builtin)
+    return (*fitted, None) if why is None else (a, b, builtin, why)
+
+
 def rest_capsules(joints: Mapping[Joint, numpy.ndarray], points: Mapping[str, numpy.ndarray], leg_length: float
-                  ) -> Dict[str, Capsule]:
-    """Every limb's capsule at rest, fitted to its points (a bare radius
-    where it has none)."""
-    capsules = {}
+                  ) -> Tuple[Dict[str, Capsule], Dict[str, str]]:
+    """Every limb's capsule at rest, fitted to its points; and the limbs whose
+    points give none usable, each with why: those run joint to joint with
+    the built-in body's radius, scaled to the rig."""
+    capsules, fallbacks = {}, {}
     for limb, (joint_a, joint_b) in LIMB_JOINTS.items():
-        a, b = joints[joint_a], joints[joint_b]
-        if limb in points:
-            a, b, radius = fit(a, b, points[limb])
-        else:
-            radius = BARE_RADII[limb.rsplit("_", 1)[0] if limb.endswith(SIDES) else limb] * leg_length
+        a, b, radius, why = _rest_capsule(joints[joint_a], joints[joint_b], points.get(limb),
+                                          builtin_radius(limb, leg_length))
         capsules[limb] = Capsule(a, b, radius, joint_a[0], joint_b[0])
-    return capsules
+        if why is not None:
+            fallbacks[limb] = why
+    return capsules, fallbacks
 
 
 def travel_frame(root: numpy.ndarray, facing: numpy.ndarray, across: bool) -> numpy.ndarray:
