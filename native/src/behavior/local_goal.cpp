@@ -5,6 +5,8 @@
 #include <cmath>
 #include <optional>
 
+#include "footfall/model/polyline.hpp"
+
 namespace footfall {
 namespace {
 
@@ -24,17 +26,6 @@ constexpr double kRoomyDetour = 2.0;
 constexpr double kRoomyExtra = 6.0;  // [m]
 /// Room beside the shoulders, where there is room, for the body's sway. [m]
 constexpr double kSwayMargin = 0.25;
-
-/// The point `along` metres along `points` (clamped to its ends).
-Vec2 point_along(const std::vector<Vec2>& points, double along) {
-  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
-    const double piece = distance(points[k], points[k + 1]);
-    if (along <= piece && piece > 0.0)
-      return points[k] + (along / piece) * (points[k + 1] - points[k]);
-    along -= piece;
-  }
-  return points.back();
-}
 
 /// True if the agent at `from` sees `to`: a straight line with room for a
 /// circle of `radius` (the torso's, for a local goal grown as the
@@ -142,18 +133,7 @@ Way way_toward(const NavMesh* mesh, const CharacterParams& character, Vec2 from,
 
 Way way_start(const Way& way, double length) {
   if (way.length <= length) return way;
-  Way start{{way.points.front()}, length};
-  double along = 0.0;
-  for (std::size_t k = 1; k < way.points.size(); ++k) {
-    const double piece = distance(way.points[k - 1], way.points[k]);
-    if (along + piece >= length) {
-      start.points.push_back(point_along(way.points, length));
-      return start;
-    }
-    start.points.push_back(way.points[k]);
-    along += piece;
-  }
-  return start;
+  return {Polyline(way.points).between(0.0, length), length};
 }
 
 /// A local goal out of sight is looked for nearer by steps of kSightBackOff,
@@ -162,12 +142,13 @@ Way way_start(const Way& way, double length) {
 /// is moved back along the way to where it could stand and turn.
 LocalGoal local_goal(const FootstepPlanner& planner, const NavMesh* mesh, const Way& way) {
   const Vec2 from = way.points.front();
+  const Polyline line(way.points);
   double reach = std::min(planner.params().local_goal_distance, way.length);
   // A moving step's torso is grown by half the sample spacing: a line with
   // room for the torso alone can lead through a gap no step passes.
   const double torso =
       planner.character().torso_radius + 0.5 * planner.params().collision_sample_spacing;
-  while (reach > kMinAhead && !in_sight(mesh, torso, from, point_along(way.points, reach)))
+  while (reach > kMinAhead && !in_sight(mesh, torso, from, line.point_at(reach)))
     reach = std::max(kMinAhead, kSightBackOff * reach);
   if (way.length <= reach) return {way.points.back(), true};
   constexpr double kStep = 0.25;  // [m]
@@ -176,15 +157,15 @@ LocalGoal local_goal(const FootstepPlanner& planner, const NavMesh* mesh, const 
   // (A way that doubles back, out of a gap and in again, comes near it
   // farther along.)
   for (double along = reach; along > planner.params().goal_tolerance; along -= kStep) {
-    const Vec2 point = point_along(way.points, along);
-    const Vec2 ahead = point_along(way.points, along + kStep);
+    const Vec2 point = line.point_at(along);
+    const Vec2 ahead = line.point_at(along + kStep);
     const double facing = angle_of(ahead - point);
     if (distance(point, from) > planner.params().goal_tolerance &&
         planner.validity().room_to_turn(point) &&
         !planner.validity().collides(standing_state(point, facing, planner.character())))
       return {point, false};
   }
-  return {point_along(way.points, reach), false};
+  return {line.point_at(reach), false};
 }
 
 }  // namespace footfall

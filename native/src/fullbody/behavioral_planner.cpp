@@ -9,11 +9,9 @@
 #include <sstream>
 
 #include "footfall/fullbody/body_sweep.hpp"
-#include "fullbody/polyline.hpp"
+#include "footfall/model/polyline.hpp"
 
 namespace footfall {
-
-using detail::Polyline;
 
 const char* to_string(BehaviorPathStatus status) {
   switch (status) {

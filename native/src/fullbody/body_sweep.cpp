@@ -3,12 +3,10 @@
 
 #include <algorithm>
 
-#include "fullbody/polyline.hpp"
-
 namespace footfall {
 
 BodyCollision sweep_body(const CollisionScene& scene, const BodyModel& body, Behavior behavior,
-                         const detail::Polyline& path, double from, double to,
+                         const Polyline& path, double from, double to,
                          double start_time, double pose_rate, long long& poses) {
   const double speed = body.speed(behavior);
   const double duration = std::max(0.0, to - from) / speed;
@@ -27,7 +25,7 @@ BodyCollision sweep_body(const CollisionScene& scene, const BodyModel& body, Beh
 
 BodyCollision sweep_body(const CollisionScene& scene, const BodyModel& body, Behavior behavior,
                          const std::vector<Vec2>& points, double pose_rate) {
-  const detail::Polyline path(points);
+  const Polyline path(points);
   long long poses = 0;
   return sweep_body(scene, body, behavior, path, 0, path.length(), 0, pose_rate, poses);
 }

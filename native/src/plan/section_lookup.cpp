@@ -9,6 +9,7 @@ namespace footfall {
 SectionLookup::SectionLookup(std::vector<BehaviorSection> sections)
     : sections_(std::move(sections)) {
   for (const BehaviorSection& section : sections_) {
+    ways_.emplace_back(section.points);
     if (section.behavior == Behavior::kWalk || section.points.empty()) continue;
     Box box{section.points.front(), section.points.front()};
     for (const Vec2 p : section.points) box.take_in(p);
@@ -43,40 +44,17 @@ Behavior SectionLookup::at(Vec2 point) const {
   return found.section ? found.section->behavior : Behavior::kWalk;
 }
 
-namespace {
-
-/// The point `reach` along polyline `points` from `from`, which lies on
-/// the segment ending at points[segment]: forward for a positive reach,
-/// back for a negative one, and no farther than its ends.
-Vec2 along_polyline(const std::vector<Vec2>& points, std::size_t segment, Vec2 from, double reach) {
-  const int step = reach >= 0.0 ? 1 : -1;
-  double left = std::fabs(reach);
-  // The next point in that direction: the segment's end ahead, its start back.
-  long next = step > 0 ? static_cast<long>(segment) : static_cast<long>(segment) - 1;
-  Vec2 at = from;
-  for (; next >= 0 && next < static_cast<long>(points.size()); next += step) {
-    const Vec2 to = points[static_cast<std::size_t>(next)];
-    const double d = distance(at, to);
-    if (d >= left) return left > 0.0 ? at + (left / d) * (to - at) : at;
-    left -= d;
-    at = to;
-  }
-  return at;
-}
-
-}  // namespace
-
 std::optional<WayLine> SectionLookup::narrower_way(Vec2 point) const {
   const Nearest found = nearest(point);
   if (!found.section || found.section->behavior == Behavior::kWalk) return std::nullopt;
-  const std::vector<Vec2>& points = found.section->points;
-  const Vec2 a = points[found.segment - 1], b = points[found.segment];
+  const Polyline& way = ways_[static_cast<std::size_t>(found.section - sections_.data())];
+  const Vec2 a = way.points()[found.segment - 1], b = way.points()[found.segment];
   const Vec2 nearest = closest_on_segment(point, a, b);
+  const double at = way.along(found.segment - 1) + distance(a, nearest);
   // The way's direction over a stretch of it, not its nearest segment's: a
   // way planned from where the agent stands starts with segments of a few
   // millimetres, pointing anywhere.
-  const Vec2 chord = along_polyline(points, found.segment, nearest, kWayLineSpan) -
-                     along_polyline(points, found.segment, nearest, -kWayLineSpan);
+  const Vec2 chord = way.point_at(at + kWayLineSpan) - way.point_at(at - kWayLineSpan);
   const double length = std::sqrt(dot(chord, chord));
   if (length < 1e-9) return std::nullopt;
   return WayLine{nearest, (1.0 / length) * chord, found.section->behavior};

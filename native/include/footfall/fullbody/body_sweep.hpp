@@ -6,12 +6,9 @@
 
 #include "footfall/fullbody/body_model.hpp"
 #include "footfall/fullbody/collision_scene.hpp"
+#include "footfall/model/polyline.hpp"
 
 namespace footfall {
-
-namespace detail {
-class Polyline;
-}
 
 /// The first colliding pose of a sweep.
 struct BodyCollision {
@@ -26,7 +23,7 @@ struct BodyCollision {
 /// the motion `start_time` seconds in at `from`, testing `pose_rate` poses
 /// per second of motion and the pose at `to`; counts them in `poses`.
 BodyCollision sweep_body(const CollisionScene& scene, const BodyModel& body, Behavior behavior,
-                         const detail::Polyline& path, double from, double to,
+                         const Polyline& path, double from, double to,
                          double start_time, double pose_rate, long long& poses);
 
 /// The same along the whole of `points`, from phase 0.

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "footfall/model/polyline.hpp"
 #include "footfall/plan/plan.hpp"
 
 namespace footfall {
@@ -59,6 +60,7 @@ class SectionLookup {
   Nearest nearest(Vec2 point) const;
 
   std::vector<BehaviorSection> sections_;
+  std::vector<Polyline> ways_;  // each section's points by arc length
   std::vector<Box> narrower_;  // boxes of the sections other than walk, grown by the reach
 };
 

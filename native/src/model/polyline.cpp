@@ -1,9 +1,9 @@
 // Footfall — polylines by arc length.
-#include "fullbody/polyline.hpp"
+#include "footfall/model/polyline.hpp"
 
 #include <algorithm>
 
-namespace footfall::detail {
+namespace footfall {
 
 Polyline::Polyline(std::vector<Vec2> points) : points_(std::move(points)) {
   along_.reserve(points_.size());
@@ -46,4 +46,4 @@ std::vector<Vec2> Polyline::between(double s0, double s1) const {
   return result;
 }
 
-}  // namespace footfall::detail
+}  // namespace footfall
