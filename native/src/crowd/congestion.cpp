@@ -6,6 +6,8 @@
 #include <queue>
 #include <utility>
 
+#include "footfall/model/polyline.hpp"
+
 namespace footfall::crowd {
 namespace {
 
@@ -62,19 +64,35 @@ Vec2 CrowdGrid::centre(long cell) const {
 }
 
 CrowdDensity::CrowdDensity(const CrowdGrid& grid, const std::vector<Vec2>& com,
-                           const std::vector<char>& present)
+                           const std::vector<char>& present, const std::vector<const Way*>& ways)
     : grid_(&grid), density_(grid.cells(), 0.0) {
-  std::vector<std::uint32_t> people(grid.cells(), 0);
+  // Counted in kShares of a person, so that a person spread along its way
+  // sums in integers.
+  constexpr std::uint32_t kShares = 20;
+  const double sample = kFlowAhead / kShares;  // [m]
+  std::vector<std::uint32_t> people(grid.cells(), 0), going(grid.cells(), 0);
   for (std::size_t j = 0; j < com.size(); ++j) {
-    const long cell = present[j] ? grid.cell_of(com[j]) : -1;
-    if (cell >= 0) ++people[static_cast<std::size_t>(cell)];
+    if (!present[j]) continue;
+    const long cell = grid.cell_of(com[j]);
+    if (cell >= 0) people[static_cast<std::size_t>(cell)] += kShares;
+    if (j >= ways.size() || ways[j] == nullptr || ways[j]->points.size() < 2) {
+      if (cell >= 0) going[static_cast<std::size_t>(cell)] += kShares;
+      continue;
+    }
+    const Polyline way(ways[j]->points);
+    for (std::uint32_t k = 0; k < kShares; ++k) {
+      const long at = grid.cell_of(way.point_at((k + 0.5) * sample));
+      if (at >= 0) ++going[static_cast<std::size_t>(at)];
+    }
   }
-  const std::vector<std::uint32_t> crowd = box_sums(std::move(people), grid.columns());
+  const std::vector<std::uint32_t> now = box_sums(std::move(people), grid.columns());
+  const std::vector<std::uint32_t> soon = box_sums(std::move(going), grid.columns());
   const double cell_area = grid.cell() * grid.cell();
   for (long c = 0; c < grid.columns() * grid.rows(); ++c)
-    if (const std::uint32_t room = grid.room(c); room > 0)
-      density_[static_cast<std::size_t>(c)] =
-          crowd[static_cast<std::size_t>(c)] / (room * cell_area);
+    if (const std::uint32_t room = grid.room(c); room > 0) {
+      const auto k = static_cast<std::size_t>(c);
+      density_[k] = std::max(now[k], soon[k]) / (kShares * room * cell_area);
+    }
 }
 
 double CrowdDensity::cost_of(const std::vector<Vec2>& points, double ahead) const {

@@ -22,13 +22,17 @@ constexpr double kCrowdCell = 1.0;
 constexpr double kMostCells = 250000;
 /// Ways are looked at for crowds this far ahead. [m]
 constexpr double kCrowdAhead = 15.0;
+/// An agent counts as spread over this much of the way ahead of it, where
+/// it will be in the next seconds: a street that many are heading for counts
+/// as crowded before they arrive. [m]
+constexpr double kFlowAhead = 15.0;
 /// Density at which people still walk freely (Fruin's level of service C
 /// ends at about 0.5 people per square metre). [1/m^2]
 constexpr double kFreeDensity = 0.5;
 /// A metre of way through a crowd of density d costs
 /// 1 + kCrowdWeight * (d - kFreeDensity) metres, above kFreeDensity: at 1.5
-/// people per square metre (a standing queue) a metre costs five.
-constexpr double kCrowdWeight = 4.0;
+/// people per square metre (a standing queue) a metre costs nine.
+constexpr double kCrowdWeight = 8.0;
 /// A way round must cost this share less than the way through the crowd:
 /// ways do not flip between two of about the same cost.
 constexpr double kDetourGain = 0.15;
@@ -63,9 +67,10 @@ class CrowdGrid {
 class CrowdDensity {
  public:
   CrowdDensity() = default;
-  /// Counts the agents at `com` that are `present`.
+  /// Counts the agents at `com` that are `present`; with `ways` (one per
+  /// agent, or null), also where each is going: its next kFlowAhead of way.
   CrowdDensity(const CrowdGrid& grid, const std::vector<Vec2>& com,
-               const std::vector<char>& present);
+               const std::vector<char>& present, const std::vector<const Way*>& ways = {});
 
   /// People per square metre of walkable ground in the 3 x 3 cells round
   /// `cell`. [1/m^2]

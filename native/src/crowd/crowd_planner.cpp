@@ -210,7 +210,12 @@ Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& wal
     s.bounds[j] = walkers[j].bounds->from(bounds_from);
   }
   s.grid = AgentGrid(s.com, kGridCell);
-  if (crowd_grid != nullptr) s.crowd = CrowdDensity(*crowd_grid, s.com, s.present);
+  if (crowd_grid != nullptr) {
+    std::vector<const Way*> ways(walkers.size(), nullptr);
+    for (std::size_t j = 0; j < walkers.size(); ++j)
+      if (!walkers[j].done && !walkers[j].ways.empty()) ways[j] = &walkers[j].ways.front().way;
+    s.crowd = CrowdDensity(*crowd_grid, s.com, s.present, ways);
+  }
   for (std::size_t j = 0; j < walkers.size(); ++j) s.giving_way[j] = gives_way(walkers, j, s);
   return s;
 }

@@ -68,6 +68,38 @@ TEST(CrowdDensity, AFullStreetSendsTheWayByTheNextOne) {
   EXPECT_FALSE(CrowdDensity(grid, few, {1, 1}).way_round(straight, mesh, 0.5).has_value());
 }
 
+TEST(CrowdDensity, AStreetManyAreHeadingForIsCrowdedBeforeTheyArrive) {
+  // Forty people in the west square, none yet in the streets, each with its
+  // way east through the south street: the street counts as crowded, and a
+  // way through it goes by the north one. Without their ways it is empty.
+  Scenario scenario;
+  scenario.obstacles = two_streets();
+  scenario.agents.push_back({"a", {-14.0, -2.5}, 0.0, {{14.0, -2.5}}});
+  const NavMesh mesh = navmesh_of(scenario);
+  const CrowdGrid grid(mesh, 0.5);
+  std::vector<Vec2> people;
+  std::vector<Way> heading;
+  for (int k = 0; k < 40; ++k) {
+    const Vec2 at{-12.0 - 0.2 * (k % 10), -3.3 + 0.4 * (k / 10)};
+    people.push_back(at);
+    heading.push_back({{at, {-10.0, -2.5}, {14.0, -2.5}}, 0.0});
+    heading.back().length = polyline_length(heading.back().points);
+  }
+  std::vector<const Way*> ways;
+  for (const Way& way : heading) ways.push_back(&way);
+  const std::vector<char> present(people.size(), 1);
+  const Way straight{{{-14.0, -2.5}, {14.0, -2.5}}, 28.0};
+
+  const CrowdDensity going(grid, people, present, ways);
+  EXPECT_GT(going.density(grid.cell_of({-3.0, -2.5})), kFreeDensity);
+  const std::optional<Way> round = going.way_round(straight, mesh, 0.5);
+  ASSERT_TRUE(round.has_value());
+  EXPECT_TRUE(goes_north(round->points));
+
+  const CrowdDensity standing(grid, people, present);
+  EXPECT_EQ(standing.density(grid.cell_of({-3.0, -2.5})), 0.0);
+}
+
 TEST(CrowdDensity, AWayRoundMustGainOnTheWayThrough) {
   // One street only, full: there is no way round, and the way stays.
   Scenario scenario;
