@@ -263,6 +263,43 @@ class RecordingOperator:
         self.reports.append((levels, message))
 
 
+def project_rig_in_scene(scale=1.0):
+    """The project's rig as Blender's glTF importer makes it in a fresh
+    scene (not imported with Footfall), its armature object scaled by `scale`."""
+    import numpy
+
+    fresh_scene()
+    if "bool" not in numpy.__dict__:
+        numpy.bool = bool  # Debian's Blender 3.4 importer
+    bpy.ops.import_scene.gltf(filepath=str(ROOT / "rigs" / "footfall_humanoid.glb"))
+    (armature,) = [o for o in bpy.data.objects if o.type == "ARMATURE"]
+    armature.scale = (scale, scale, scale)
+    bpy.context.view_layer.update()
+    return armature
+
+
+def scene_state():
+    """The data-blocks, every object's and the scene's custom properties
+    (not those an add-on registers, stored once read), and the scene's rig."""
+    properties = {o.name: {k: str(o[k]) for k in o.keys() if k not in o.bl_rna.properties}
+                  for o in [*bpy.data.objects, bpy.context.scene]}
+    return inventory(), properties, bpy.context.scene.footfall_rig
+
+
+def plan_and_apply(agents):
+    """Plans the agents (scenario file entries) with the scene's rig; checks
+    that every one reaches its goal, and applies."""
+    from footfall.bridge import plan_store
+
+    scenario = TMP / "agents.json"
+    scenario.write_text(json.dumps({"format": "footfall-scenario", "version": 1, "agents": agents}))
+    check(bpy.ops.footfall.load_scenario(filepath=str(scenario)) == {"FINISHED"}, "load failed")
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
+    plan = json.loads(plan_store.load())
+    check(all(agent["status"] == "reached" for agent in plan["agents"]), [a["status"] for a in plan["agents"]])
+    check(bpy.ops.footfall.apply() == {"FINISHED"}, "apply failed")
+
+
 def skin_to(mesh, bone, other, keep):
     """Moves the weights of `bone`'s vertex group to `other`'s, except on
     the `keep` vertices skinned most to `bone` that are lowest (nearest the
@@ -285,17 +322,11 @@ def test_a_rig_whose_mesh_gives_its_upper_arms_nothing_plans_applies_and_exports
     .upper_arm_left: radius must be in (0, 1] m'): Import Rig says that both
     take the built-in body's radius, scaled to the rig, and the rig plans,
     applies and exports a valid glTF."""
-    import numpy
-
-    from footfall.bridge import plan_store, rig_body
+    from footfall.bridge import rig_body
     from footfall.core import body_capsules
     from footfall.ui.operators import FOOTFALL_OT_import_rig
 
-    fresh_scene()
-    if "bool" not in numpy.__dict__:
-        numpy.bool = bool  # Debian's Blender 3.4 importer
-    bpy.ops.import_scene.gltf(filepath=str(ROOT / "rigs" / "footfall_humanoid.glb"))
-    (armature,) = [o for o in bpy.data.objects if o.type == "ARMATURE"]
+    armature = project_rig_in_scene()
     (mesh,) = [o for o in bpy.data.objects if o.type == "MESH" and o.parent == armature]  # 4.x adds a bone shape
     skin_to(mesh, "upper_arm.R", "chest", keep=0)
     skin_to(mesh, "upper_arm.L", "chest", keep=1)
@@ -312,18 +343,47 @@ def test_a_rig_whose_mesh_gives_its_upper_arms_nothing_plans_applies_and_exports
         radius = body["poses"]["walk"][0][limb][6]
         check(radius == round(body_capsules.builtin_radius(limb, leg_length), 4), f"{limb}: radius {radius}")
 
-    scenario = TMP / "two-ways.json"
-    scenario.write_text(json.dumps({"format": "footfall-scenario", "version": 1, "agents": [
-        {"name": "ann", "position": [0, 0], "goals": [[5, 0]]},
-        {"name": "bob", "position": [5, 0.3], "goals": [[0, 0.3]]}]}))
-    check(bpy.ops.footfall.load_scenario(filepath=str(scenario)) == {"FINISHED"}, "load failed")
-    check(bpy.ops.footfall.plan() == {"FINISHED"}, "plan failed")
-    plan = json.loads(plan_store.load())
-    check(all(agent["status"] == "reached" for agent in plan["agents"]), [a["status"] for a in plan["agents"]])
-    check(bpy.ops.footfall.apply() == {"FINISHED"}, "apply failed")
+    plan_and_apply([{"name": "ann", "position": [0, 0], "goals": [[5, 0]]},
+                    {"name": "bob", "position": [5, 0.3], "goals": [[0, 0.3]]}])
     out = TMP / "armless.glb"
     check(bpy.ops.footfall.export_gltf(filepath=str(out)) == {"FINISHED"}, "export failed")
     expect_valid_gltf(out)
+
+
+def test_a_rig_too_tall_or_too_small_to_plan_is_refused_and_changes_nothing():
+    """The project's rig scaled 2 (3.6 m tall: Plan failed on 'character.body_height
+    must be in [0.5, 3]') and 0.2 (0.36 m, its centre of mass under the core's
+    0.2 m): Import Rig, from the scene or from a file, refuses it naming the rig,
+    the measurement and the limit, and the scene stays as it was."""
+    for scale, name, expected in (
+            (2.0, "giant", "is 3.60 m tall; Footfall plans bodies from 0.5 to 3 m tall: scale the rig"),
+            (0.2, "dwarf", "is 0.36 m tall; its hip height of 0.19 m gives a centre of mass Footfall cannot plan "
+                           "(character.com_height: must be in [0.2, 3], got 0.19")):
+        armature = project_rig_in_scene(scale)
+        armature.name = name
+        path = TMP / f"{name}.glb"
+        bpy.ops.export_scene.gltf(filepath=str(path), export_format="GLB")
+        for source, options in ((name, {"armature": name}), (path.name, {"filepath": str(path)})):
+            if "filepath" in options:
+                fresh_scene()
+                bpy.ops.mesh.primitive_uv_sphere_add()  # something of the user's, which must survive
+            before = scene_state()
+            try:
+                bpy.ops.footfall.import_rig(**options)
+                raise AssertionError(f"{source}: imported")
+            except RuntimeError as error:
+                message = str(error)
+            check(f"rig '{source}' {expected}" in message, message)
+            check(scene_state() == before, f"{source}: the refused import changed the scene: {scene_state()}")
+
+
+def test_a_rig_near_the_limits_imports_plans_and_applies():
+    """The project's rig scaled 1.6 (2.9 m tall) and 0.3 (0.54 m): Import Rig
+    takes it, and it plans and applies."""
+    for scale in (1.6, 0.3):
+        armature = project_rig_in_scene(scale)
+        check(bpy.ops.footfall.import_rig(armature=armature.name) == {"FINISHED"}, f"x{scale}: import failed")
+        plan_and_apply([{"name": "ann", "position": [0, 0], "goals": [[6, 0]]}])
 
 
 run([test_mixamo_rig_is_detected, test_bones_of_no_naming_scheme_are_found_from_the_skeleton,
@@ -331,4 +391,6 @@ run([test_mixamo_rig_is_detected, test_bones_of_no_naming_scheme_are_found_from_
      test_a_rigify_metarig_in_the_scene_is_used_as_it_is, test_unmappable_rig_lists_bones_and_changes_nothing,
      test_panel_fields_complete_the_map, test_profile_beside_the_file_completes_the_map,
      test_project_rig_matches_its_profile, test_the_planners_body_is_measured_from_the_rig,
-     test_a_rig_whose_mesh_gives_its_upper_arms_nothing_plans_applies_and_exports])
+     test_a_rig_whose_mesh_gives_its_upper_arms_nothing_plans_applies_and_exports,
+     test_a_rig_too_tall_or_too_small_to_plan_is_refused_and_changes_nothing,
+     test_a_rig_near_the_limits_imports_plans_and_applies])

@@ -7,7 +7,7 @@ import random
 
 import pytest
 
-from footfall.core import bone_map, character, rig_measure, rig_profile
+from footfall.core import body_capsules, bone_map, character, rig_measure, rig_profile
 from footfall.core.bone_map import Bone
 
 
@@ -233,6 +233,29 @@ def test_a_tall_rig_takes_longer_strides(ff):
     short = mean_stride({"hip_height": 0.7, "leg_length": 0.65, "shoulder_width": 0.3, "foot_length": 0.2})
     tall = mean_stride({"hip_height": 1.1, "leg_length": 1.05, "shoulder_width": 0.46, "foot_length": 0.3})
     assert tall > 1.3 * short
+
+
+def test_a_rig_the_core_would_refuse_is_named_in_the_users_terms(ff):
+    """character.problem asks the core's own checks, and names the rig and
+    the measurement a refused field comes from."""
+    person = {"hip_height": 0.93, "leg_length": 0.85, "shoulder_width": 0.38, "foot_length": 0.26}
+    assert character.problem(person, None, "ann") is None
+    small = {key: 0.2 * value for key, value in person.items()}
+    assert character.problem(small, None, "tiny.glb") == (
+        "rig 'tiny.glb'; its hip height of 0.19 m gives a centre of mass Footfall cannot plan "
+        "(character.com_height: must be in [0.2, 3], got 0.1953): scale the rig")
+    broad = character.problem({**person, "shoulder_width": 1.4}, None, "ox")
+    assert broad.startswith("rig 'ox'; its shoulder width of 1.40 m gives a torso Footfall cannot plan "
+                            "(character.torso_width: must be in (0, 1.5], got 1.5")
+    stilts = character.problem({**person, "leg_length": 3.0}, None, "stilts")
+    assert stilts.startswith("rig 'stilts'; its leg length of 3.00 m gives strides and paces Footfall cannot plan "
+                             "(character.left.max_step_length: must be in")
+    pose = {limb: [0.0, 0.0, 0.5, 0.0, 0.0, 1.0, 0.1] for limb in body_capsules.LIMBS}
+    fat = {"height": 1.8, "poses": {b: [{**pose, "torso": [0.0, 0.0, 0.9, 0.0, 0.0, 1.4, 1.2]}]
+                                    for b in ("walk", "arms_in", "side_step")}}
+    assert character.problem(person, fat, "fat") == (
+        "rig 'fat' is 1.80 m tall; its walk clip gives its torso a capsule Footfall cannot plan "
+        "(character.behaviors.walk.poses[0].torso: radius must be in (0, 1] m): scale the rig")
 
 
 def test_given_limbs_guide_the_trunk():

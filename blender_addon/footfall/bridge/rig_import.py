@@ -13,7 +13,7 @@ from typing import Dict, List, Optional
 
 import bpy
 
-from ..core import bone_map, rig_measure, rig_profile
+from ..core import bone_map, character, rig_measure, rig_profile
 from ..core.rig_profile import RigProfile
 from . import datablocks, rig_body, rig_clips
 
@@ -177,6 +177,9 @@ def import_rig(filepath: str = "", mapping: Optional[Dict[str, object]] = None,
         profile = RigProfile(bones=bones, clips=clips, dimensions=dimensions, rig=source)
         body, body_notes = rig_body.measured(rig, profile)
         notes += body_notes
+        refused = character.problem(dimensions, body, source)  # a rig that imports plans
+        if refused:
+            raise RigImportError(refused)
         rig[PROFILE_PROPERTY] = json.dumps(profile.to_document())  # last: a failure changes nothing
         if body is not None:
             rig[rig_body.BODY_PROPERTY] = json.dumps(body)

@@ -10,7 +10,10 @@ proportion to sqrt(L).
 """
 
 import math
+import re
 from typing import Dict, Mapping, Optional, Tuple
+
+from . import scenario
 
 REFERENCE_LEG_LENGTH = 0.9  # [m] of the paper's default character
 COM_ABOVE_HIPS = 1.05  # the COM stands about 5 % above the hip joints
@@ -77,3 +80,32 @@ def with_rig(document: dict, dimensions: Mapping[str, float], body: Optional[Map
     result["character"] = {**character, **document.get("character", {})}
     result["planner"] = {**planner, **document.get("planner", {})}
     return result
+
+
+# What each derived field is in the user's terms, and the dimension it comes
+# from; any other (strides, speeds, step durations, gaits) from the leg length.
+MEASURED_BY = {"com_height": ("hip_height", "a centre of mass"), "torso_width": ("shoulder_width", "a torso"),
+               "foot_radius": ("foot_length", "a foot")}
+
+
+def problem(dimensions: Mapping[str, float], body: Optional[Mapping], rig: str) -> Optional[str]:
+    """Why the core would refuse the character derived from rig `rig`, in
+    the user's terms; None if it plans. It asks the core's own checks, so
+    that Import Rig refuses exactly what Plan would."""
+    character, planner = derive_parameters(dimensions, body)
+    try:
+        scenario.parse(scenario.scenario_document(scenario.ScenarioInput(character=character, planner=planner)), rig)
+        return None
+    except ValueError as error:  # "RIG: FIELD.PATH: problem"
+        where, _, why = str(error).removeprefix(f"{rig}: ").partition(": ")
+    field = where.rsplit(".", 1)[-1]
+    tall = f"rig '{rig}'" + (f" is {body['height']:.2f} m tall" if body else "")
+    limits = re.match(r"must be in .(\S+), (\S+)., got", why)
+    if field == "body_height" and limits:
+        return f"{tall}; Footfall plans bodies from {limits[1]} to {limits[2]} m tall: scale the rig"
+    if ".poses[" in where:  # character.behaviors.BEHAVIOR.poses[i].LIMB
+        gives = f"its {where.split('.')[2]} clip gives its {field} a capsule"
+    else:
+        dimension, what = MEASURED_BY.get(field, ("leg_length", "strides and paces"))
+        gives = f"its {dimension.replace('_', ' ')} of {dimensions[dimension]:.2f} m gives {what}"
+    return f"{tall}; {gives} Footfall cannot plan ({where}: {why}): scale the rig"
