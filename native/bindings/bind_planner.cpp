@@ -170,10 +170,24 @@ void bind_planner(py::module_& m) {
       .value("REACHED", AgentStatus::kReached)
       .value("PARTIAL", AgentStatus::kPartial);
 
+  py::class_<Narrowest>(m, "Narrowest",
+                        "Where the way to a goal an agent cannot reach is narrowest (its reason "
+                        "'unreachable').")
+      .def_readonly("at", &Narrowest::at, "The narrowest point (x, y) [m].")
+      .def_readonly("width", &Narrowest::width,
+                    "The way's free width there [m]; 0: no way leads there.")
+      .def_readonly("needs", &Narrowest::needs, "The width its body needs with `behavior` [m].")
+      .def_property_readonly(
+          "behavior", [](const Narrowest& n) { return std::string(to_string(n.behavior)); },
+          "Its narrowest behaviour: 'side_step'.")
+      .def("__str__", &unreachable_text);
+
   py::class_<AgentPlan>(m, "AgentPlan", "One agent's timed footsteps.")
       .def_readonly("name", &AgentPlan::name)
       .def_readonly("status", &AgentPlan::status)
       .def_readonly("reason", &AgentPlan::reason)
+      .def_readonly("narrowest", &AgentPlan::narrowest,
+                    "With reason 'unreachable': where its way is too narrow (Narrowest); else None.")
       .def_readonly("stuck_at", &AgentPlan::stuck_at)
       .def_readonly("start", &AgentPlan::start)
       .def_readonly("footsteps", &AgentPlan::footsteps)

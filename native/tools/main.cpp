@@ -169,6 +169,15 @@ void warn_of_overlaps(const footfall::Plan& plan, const std::vector<std::string>
   }
 }
 
+// Names the agents that stand short of a goal no way leads to for their
+// bodies, and where their ways are too narrow.
+void warn_of_unreachable(const footfall::Plan& plan, std::ostream& out) {
+  for (const footfall::AgentPlan& agent : plan.agents)
+    if (agent.narrowest)
+      out << "footfall: " << user_text(agent.name) << " " << unreachable_text(*agent.narrowest)
+          << "\n";
+}
+
 // The named agents planned again among the others' plans in `fixed` (read
 // from --fixed); the core's "fixed" and "agents" fields are named as the
 // file and the flag.
@@ -222,6 +231,7 @@ int plan_and_write(const footfall::Scenario& scenario, const Options& options) {
             << " ms each\n";
   std::cout << "plan written to " << output << "\n";
   if (!options.fixed.empty()) warn_of_overlaps(plan, options.agents, std::cerr);
+  warn_of_unreachable(plan, std::cerr);
   if (!options.glb.empty()) footfall::tools::animate_and_write(plan, options.animate, options.glb, std::cout);
   return 0;
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <vector>
@@ -146,13 +147,24 @@ Plan plan_among(const Scenario& scenario, const RunControl& control,
   plan.obstacles = scenario.obstacles;
   std::vector<AgentSpec> agents = scenario.agents;
   detail::SectionPlanners sections(scenario, scene, planners);
-  detail::plan_sections(sections, agents, fixed);
+  const std::vector<std::optional<Narrowest>> narrowest =
+      detail::plan_sections(sections, agents, fixed);
   std::vector<const FootstepPlanner*> each;
   for (const AgentSpec& agent : agents) each.push_back(&planners.planner(agent));
   const Annotator annotate = [&](std::size_t i, Vec2 from, std::size_t first_goal) {
     return sections.plan(agents[i], from, first_goal);
   };
   plan.agents = plan_agents(agents, each, &mesh, control, fixed, annotate);
+  // One that stops short stands at its last goal: none of the scenario's.
+  for (std::size_t i = 0; i < agents.size(); ++i) {
+    if (!narrowest[i]) continue;
+    AgentPlan& agent = plan.agents[i];
+    agent.status = AgentStatus::kPartial;
+    agent.reason = "unreachable";
+    agent.narrowest = narrowest[i];
+    agent.goals_reached =
+        std::min(agent.goals_reached, static_cast<int>(agents[i].goals.size()) - 1);
+  }
   if (control.cancelled()) plan.status = Status::kCancelled;
   return plan;
 }

@@ -141,6 +141,13 @@ void write_agent(JsonWriter& out, const AgentPlan& agent) {
     out.key("reason").string(agent.reason).key("stopped_at");
     write_point(out, agent.stuck_at);
   }
+  if (agent.narrowest) {
+    const Narrowest& narrowest = *agent.narrowest;
+    out.key("narrowest").begin_object().key("at");
+    write_point(out, narrowest.at);
+    out.key("width").number(narrowest.width).key("needs").number(narrowest.needs);
+    out.key("behavior").string(to_string(narrowest.behavior)).end_object();
+  }
   if (agent.leaves) out.key("leaves").value(true);
   if (agent.scale != 1.0) out.key("scale").number(agent.scale);
   if (agent.character) out.key("character").value(character_to_json(*agent.character));
@@ -449,12 +456,25 @@ FootstepState read_start(const Json& start, const std::string& path,
   return state;
 }
 
+Narrowest read_narrowest(const Json& json, const std::string& path) {
+  expect_object(json, path, {"at", "width", "needs", "behavior"});
+  Narrowest narrowest;
+  narrowest.at = point(require(json, path, "at"), child(path, "at"));
+  narrowest.width = number(require(json, path, "width"), child(path, "width"));
+  narrowest.needs = number(require(json, path, "needs"), child(path, "needs"));
+  if (!(narrowest.width >= 0.0)) fail(child(path, "width"), "must be >= 0");
+  if (!(narrowest.needs > 0.0)) fail(child(path, "needs"), "must be > 0");
+  narrowest.behavior = read_enum(require(json, path, "behavior"), child(path, "behavior"),
+                                 {Behavior::kWalk, Behavior::kArmsIn, Behavior::kSideStep});
+  return narrowest;
+}
+
 AgentPlan read_agent(const Json& json, const std::string& path, int version,
                      const CharacterParams& shared, Characters& characters) {
   expect_object(
       json, path,
-      {"name", "status", "leaves", "reason", "stopped_at", "start", "footsteps", "sections",
-       "stats", "character", "scale"});
+      {"name", "status", "leaves", "reason", "stopped_at", "narrowest", "start", "footsteps",
+       "sections", "stats", "character", "scale"});
   AgentPlan agent;
   if (json.contains("character")) {
     auto& own = characters[json["character"].dump()];
@@ -479,6 +499,7 @@ AgentPlan read_agent(const Json& json, const std::string& path, int version,
   if (json.contains("reason")) agent.reason = string(json["reason"], child(path, "reason"));
   if (json.contains("stopped_at"))
     agent.stuck_at = point(json["stopped_at"], child(path, "stopped_at"));
+  if (json.contains("narrowest")) agent.narrowest = read_narrowest(json["narrowest"], child(path, "narrowest"));
   const std::string steps_path = child(path, "footsteps");
   if (version == 2) {
     // Version 2's first step starts from the start: read before.

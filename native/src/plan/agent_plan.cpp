@@ -2,10 +2,24 @@
 // crowd driver's, in crowd/crowd_planner.cpp.)
 #include "footfall/plan/plan.hpp"
 
+#include <cstdio>
+
 namespace footfall {
 
 const char* to_string(AgentStatus status) {
   return status == AgentStatus::kReached ? "reached" : "partial";
+}
+
+std::string unreachable_text(const Narrowest& narrowest) {
+  const std::string head = "cannot reach its goal: ";
+  if (narrowest.width <= 0.0) return head + "no way leads there";
+  const char* moving = narrowest.behavior == Behavior::kWalk     ? "walking"
+                       : narrowest.behavior == Behavior::kArmsIn ? "with its arms in"
+                                                                 : "side-stepping";
+  char text[160];
+  std::snprintf(text, sizeof text, "the way at (%.2f, %.2f) is %.2f m wide, its body needs %.2f m %s",
+                narrowest.at.x, narrowest.at.y, narrowest.width, narrowest.needs, moving);
+  return head + text;
 }
 
 double AgentPlan::total_cost() const {

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,11 +33,30 @@ struct BehaviorSection {
   double length = 0;         ///< [m]
 };
 
+/// Where the way to a goal an agent cannot reach is narrowest (its reason
+/// "unreachable"): the narrowest point of the widest way there, which its
+/// narrowest behaviour does not pass.
+struct Narrowest {
+  Vec2 at;            ///< The narrowest point; where it stands, if no way leads there. [m]
+  double width = 0;   ///< Free width there: twice the clearance; 0 if no way leads there. [m]
+  double needs = 0;   ///< The width its body needs with `behavior`: twice that clearance. [m]
+  Behavior behavior = Behavior::kSideStep;  ///< The narrowest behaviour.
+};
+
+/// "cannot reach its goal: the way at (1.20, 3.40) is 0.25 m wide, its body
+/// needs 0.42 m side-stepping" (or "...: no way leads there" for width 0).
+std::string unreachable_text(const Narrowest& narrowest);
+
 struct AgentPlan {
   std::string name;                            ///< The agent's name.
   AgentStatus status = AgentStatus::kPartial;  ///< Reached or partial.
-  /// Empty when reached; otherwise "stuck", "time limit" or "cancelled".
+  /// Empty when reached; otherwise "unreachable", "stuck", "time limit" or
+  /// "cancelled".
   std::string reason;
+  /// With reason "unreachable": where its way is too narrow for its body. It
+  /// walks to the nearest point before there where it stands clear, and
+  /// stands; goals after the one it cannot reach are not visited.
+  std::optional<Narrowest> narrowest;
   Vec2 stuck_at;                    ///< Where the agent stopped, when partial. [m]
   FootstepState start;              ///< Standing start state.
   std::vector<Footstep> footsteps;  ///< The timed footsteps, in order.
