@@ -7,7 +7,9 @@ import time
 
 import pytest
 
-from conftest import scenario_json
+import re
+
+from conftest import scenario_json, slot_scenario_json
 
 
 def run(cli, *args, cwd=None):
@@ -252,3 +254,25 @@ def test_an_agent_planned_again_where_fixed_agents_walk_is_named(cli, tmp_path):
     assert len(warnings) == 1 and warnings[0].startswith("footfall: warning: agent 'bo' planned again overlaps "
                                                          "others or obstacles at "), result.stderr
     assert "five-circle overlaps: 0" not in run(cli, "metrics", str(again)).stdout
+
+
+def test_an_agent_that_cannot_reach_its_goal_is_named_with_the_narrowest_place(cli, tmp_path):
+    """The slot is 0.25 m wide; the side-stepping body needs about 0.42 m:
+    one line on standard error says so, the plan file says where, and the
+    one that can reach its goal is not named."""
+    scenario = tmp_path / "slot.json"
+    scenario.write_text(slot_scenario_json([{"name": "wide", "position": [1, 0], "goals": [[10, 0]]},
+                                            {"name": "near", "position": [1, -0.6], "goals": [[3, -0.6]]}]))
+    out = tmp_path / "slot-plan.json"
+    result = run(cli, "plan", str(scenario), "-o", str(out))
+    assert result.returncode == 0, result.stderr
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1, result.stderr
+    assert re.fullmatch(r"footfall: 'wide' cannot reach its goal: the way at \(5\.1\d, 0\.3\d\) is 0\.25 m wide, "
+                        r"its body needs 0\.4\d m side-stepping", lines[0]), lines[0]
+    assert "partial (unreachable)" in result.stdout
+    wide, near = json.loads(out.read_text())["agents"]
+    assert wide["reason"] == "unreachable" and near["status"] == "reached" and "narrowest" not in near
+    assert wide["narrowest"]["at"] == pytest.approx([5.15, 0.3], abs=0.03)
+    assert wide["narrowest"]["width"] == pytest.approx(0.25, abs=0.005)
+    assert wide["narrowest"]["behavior"] == "side_step"

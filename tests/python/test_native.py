@@ -8,7 +8,7 @@ from time import perf_counter
 
 import pytest
 
-from conftest import scenario_json
+from conftest import scenario_json, slot_scenario_json
 
 
 def test_demo_plans_to_the_goal(ff):
@@ -373,3 +373,21 @@ def test_an_agent_turns_to_its_facing_at_each_goal_and_waits_facing_it(ff):
         ann([None, 2.0], end_facing=1.0)
     with pytest.raises(ValueError, match=r"agents\[0\].goal_facings: needs one facing \(or null\) per goal: 2 goals, 1"):
         ann([1.0])
+
+
+def test_an_agent_that_cannot_reach_says_where_its_way_is_too_narrow(ff, tmp_path):
+    scenario = ff.parse_scenario(slot_scenario_json([{"name": "wide", "position": [1, 0], "goals": [[10, 0]]}]),
+                                 "slot.json")
+    plan = ff.plan_scenario(scenario)
+    agent = plan.agents[0]
+    assert agent.status == ff.AgentStatus.PARTIAL and agent.reason == "unreachable"
+    narrowest = agent.narrowest
+    assert narrowest.at == pytest.approx((5.15, 0.3), abs=0.03)
+    assert narrowest.width == pytest.approx(0.25, abs=0.005)
+    assert narrowest.needs > narrowest.width and narrowest.behavior == "side_step"
+    assert str(narrowest).startswith("cannot reach its goal: the way at (5.1")
+    path = tmp_path / "plan.json"
+    ff.write_plan_file(plan, str(path))
+    read = ff.load_plan(str(path)).agents[0].narrowest
+    assert (read.at, read.width, read.needs) == (narrowest.at, narrowest.width, narrowest.needs)
+    assert ff.plan_scenario(ff.demo_scenario()).agents[0].narrowest is None

@@ -107,7 +107,7 @@ std::optional<ShortOfGoal> short_of_goal(const NavMesh& mesh, double clearance, 
   const double at = narrowest_along(mesh, way);
   const Vec2 point = way.point_at(at);
   ShortOfGoal result{{point, 2.0 * mesh.clearance(point), needs, Behavior::kSideStep}, from};
-  for (double s = at; s > 0.0; s -= kSample) {
+  for (double s = at - kStandBack; s > 0.0; s -= kSample) {
     if (mesh.clearance(way.point_at(s)) >= clearance + kStandRoom) {
       result.stand = way.point_at(s);
       break;

@@ -22,7 +22,8 @@ struct ShortOfGoal {
 /// Otherwise the narrowest point of the widest way (the widest disc that
 /// passes, found by halving; its point is the middle of the passage that
 /// stops a wider one), and where, walking back from there along that way,
-/// the clearance first reaches `clearance` + kStandRoom (else `from`). With
+/// the clearance first reaches `clearance` + kStandRoom, kStandBack or more
+/// from it (else `from`). With
 /// no way for even a disc of kThinnest, the narrowest point is `from`, 0 wide.
 std::optional<ShortOfGoal> short_of_goal(const NavMesh& mesh, double clearance, Vec2 from,
                                          Vec2 to);
@@ -30,6 +31,9 @@ std::optional<ShortOfGoal> short_of_goal(const NavMesh& mesh, double clearance, 
 /// The room kept beyond the side-stepping clearance where the agent stands:
 /// its feet's spread and the sway of its last steps. [m]
 constexpr double kStandRoom = 0.1;
+/// It stands at least this far back along the way from the narrowest point:
+/// out of the mouth of the passage, where others that pass it walk. [m]
+constexpr double kStandBack = 1.0;
 /// A way narrower than twice this is no way. [m]
 constexpr double kThinnest = 0.005;
 
