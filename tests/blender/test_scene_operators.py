@@ -653,6 +653,36 @@ def test_planning_an_agent_again_where_fixed_agents_walk_names_it():
     check(moving[0].start_time >= 9.9, f"bo's new plan was not stored: he sets off at {moving[0].start_time} s")
 
 
+def test_an_agent_too_wide_for_the_door_is_named_with_where():
+    """A room behind a door 0.52 m wide: 'big' (scale 1.6) needs about 0.6 m
+    side-stepping, 'small' walks through with its arms in, 'stroller' walks
+    outside. Plan reports a WARNING naming big and the door's width, the
+    panel shows it on a line of its own, and the others reach their goals."""
+    from footfall.bridge import plan_store, scene_build
+    from footfall.ui import scene_operators
+
+    def box(x0, y0, x1, y1):
+        return {"polygon": [[x0, y0], [x1, y0], [x1, y1], [x0, y1]], "height": 2.2}
+
+    fresh_scene()
+    scene = bpy.context.scene
+    scene_build.build(scene, {"format": "footfall-scenario", "version": 1, "obstacles": [
+        box(5, -2.2, 5.2, -0.26), box(5, 0.26, 5.2, 2.2), box(5, 2, 9.2, 2.2), box(5, -2.2, 9.2, -2),
+        box(9, -2.2, 9.2, 2.2)], "agents": [
+        {"name": "big", "position": [1, 1], "goals": [[7.5, 1]], "scale": 1.6},
+        {"name": "small", "position": [1, -1], "goals": [[7.5, -1]]},
+        {"name": "stroller", "position": [0, 3.5], "goals": [[3, 4.5]]}]}, "door")
+    stand_in = RecordingOperator(selected_only=False)
+    check(scene_operators.FOOTFALL_OT_plan.execute(stand_in, bpy.context) == {"FINISHED"}, "plan failed")
+    (levels, message), = stand_in.reports
+    said = "'big' cannot reach its goal: the way at (5.10, 0.00) is 0.52 m wide, its body needs 0.6"
+    check(levels == {"WARNING"} and said in message and "2/3 agents reached their goals" in message, message)
+    check(any(line.startswith(said) for line in panel_lines()), panel_lines())
+    plan = plan_store.load_plan()
+    check([a.reason for a in plan.agents] == ["unreachable", "", ""], [a.reason for a in plan.agents])
+    check(plan.agents[0].narrowest is not None and plan.agents[1].narrowest is None, "narrowest not stored")
+
+
 def test_the_panel_says_how_the_crowd_is_animated():
     from footfall.bridge import scene_build
 
@@ -902,6 +932,7 @@ run([test_load_builds_the_conventions_and_extracts_back, test_obstacles_keep_the
      test_an_agents_own_speed_and_start, test_randomize_draws_speeds_and_rigs_for_the_selected_agents,
      test_scatter_places_agents_clear_of_obstacles_and_each_other, test_the_plan_is_out_of_date_once_the_scene_changes,
      test_errors_leave_the_scene_as_it_was, test_planning_an_agent_again_where_fixed_agents_walk_names_it,
+     test_an_agent_too_wide_for_the_door_is_named_with_where,
      test_the_panel_says_how_the_crowd_is_animated,
      test_failing_operators_report_and_cancel, test_steersuite_case_loads, test_the_overlay_draws_the_stored_plan,
      test_the_agent_panel_sets_and_shows_an_agents_properties, test_an_agent_turns_as_its_last_goal_is_turned,

@@ -1,6 +1,6 @@
 """The plan's outcome as the Plan operator and the panel report it."""
 
-from footfall.core.plan_report import NAMED, outcome, overlapping
+from footfall.core.plan_report import NAMED, outcome, overlapping, unreachable
 
 
 def test_all_reached_is_one_count():
@@ -27,3 +27,11 @@ def test_only_agents_planned_again_that_overlap_are_named():
     assert text.endswith("plan every agent")
     many = overlapping([(f"a{i}", 1) for i in range(NAMED + 2)], {f"a{i}" for i in range(NAMED + 2)}, 20.0)
     assert many.count("(1 samples") == NAMED and "and 2 more" in many
+
+
+def test_those_that_cannot_reach_get_a_line_each_saying_where():
+    said = "cannot reach its goal: the way at (5.10, 0.00) is 0.52 m wide, its body needs 0.60 m side-stepping"
+    assert unreachable([]) == ""
+    assert unreachable([("big", said)]) == "; 'big' " + said
+    many = unreachable([(f"a{i}", said) for i in range(NAMED + 2)])
+    assert many.count("; ") == NAMED + 1 and many.endswith("; 2 more cannot reach their goals")

@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """What a plan's outcome says to the user: how many agents reached their
-goals, and which did not, and why; after a Plan of the selected agents,
-which of them overlap others."""
+goals, and which did not, and why; which cannot reach a goal, and where
+their way is too narrow; after a Plan of the selected agents, which of them
+overlap others."""
 
 from typing import Collection, Sequence, Tuple
 
@@ -17,6 +18,18 @@ def outcome(agents: Sequence[Tuple[str, bool, str]]) -> str:
     if not missing:
         return text
     return text + NOT_THERE + _listed([f"'{name}' ({reason or 'partial'})" for name, reason in missing])
+
+
+def unreachable(agents: Sequence[Tuple[str, str]]) -> str:
+    """`agents`: (name, what the core says of its narrowest place, str(Narrowest))
+    per agent that cannot reach a goal. "; 'big' cannot reach its goal: the
+    way at (5.10, 0.00) is 0.52 m wide, its body needs 0.60 m side-stepping"
+    for each of the first NAMED (a line of the panel each), then how many
+    more; "" for none."""
+    lines = [f"'{name}' {said}" for name, said in agents[:NAMED]]
+    if len(agents) > NAMED:
+        lines.append(f"{len(agents) - NAMED} more cannot reach their goals")
+    return "".join("; " + line for line in lines)
 
 
 def _listed(items: Sequence[str]) -> str:

@@ -91,7 +91,7 @@ def _store(operator, context, result, names, seconds, read_at: int):
     """Stores the plan of the scene as it was at change count `read_at`
     (plan_watch) and reports its outcome on `operator`."""
     from ..bridge import plan_store, plan_watch
-    from ..core.plan_report import outcome, overlapping
+    from ..core.plan_report import outcome, overlapping, unreachable
 
     ff = native.load()
     plan_store.store(ff.plan_to_json(result), result)
@@ -101,7 +101,8 @@ def _store(operator, context, result, names, seconds, read_at: int):
     if names:  # fixed agents make way for no one: say who overlaps them
         metrics = ff.measure_plan(result)
         clashes = overlapping([(m.name, m.overlaps) for m in metrics.agents], set(names), metrics.rate)
-    said = outcome([(a.name, a.status == ff.AgentStatus.REACHED, a.reason) for a in result.agents]) + clashes
+    said = (outcome([(a.name, a.status == ff.AgentStatus.REACHED, a.reason) for a in result.agents])
+            + unreachable([(a.name, str(a.narrowest)) for a in result.agents if a.narrowest is not None]) + clashes)
     context.scene[plan_store.OUTCOME] = said
     steps = sum(len(agent.footsteps) for agent in result.agents)
     fine = all(a.status == ff.AgentStatus.REACHED for a in result.agents) and not clashes
