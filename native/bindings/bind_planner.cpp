@@ -187,7 +187,8 @@ void bind_planner(py::module_& m) {
       .def_readonly("status", &AgentPlan::status)
       .def_readonly("reason", &AgentPlan::reason)
       .def_readonly("narrowest", &AgentPlan::narrowest,
-                    "With reason 'unreachable': where its way is too narrow (Narrowest); else None.")
+                    "With reason 'unreachable': where its way is too narrow (Narrowest); else "
+                    "None.")
       .def_readonly("stuck_at", &AgentPlan::stuck_at)
       .def_readonly("start", &AgentPlan::start)
       .def_readonly("footsteps", &AgentPlan::footsteps)

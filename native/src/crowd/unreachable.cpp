@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 #include "footfall/model/polyline.hpp"
@@ -14,16 +13,8 @@ namespace {
 
 /// Halvings of the widest disc's radius: to well under a millimetre.
 constexpr int kHalvings = 20;
-/// Samples along the way. [m]
+/// Samples along the way, and across it. [m]
 constexpr double kSample = 0.01;
-/// A sample this much roomier than the tightest one may still be the
-/// narrowest place: the widest way passes its bottleneck and the corners it
-/// turns round alike at its disc's radius, up to the arcs' sampling. [m]
-constexpr double kNear = 0.02;
-/// How far across the way a sample looks for the middle of its passage, and
-/// in what steps: round a corner the clearance grows away from it, in a
-/// passage it is greatest in the middle. [m]
-constexpr double kAcross = 0.1;
 constexpr double kAcrossStep = 0.005;
 /// Half widths this close are the same passage's. [m]
 constexpr double kSameWidth = 1e-3;
@@ -36,51 +27,62 @@ PathResult path_for(const NavMesh& mesh, Vec2 from, Vec2 to, double radius) {
   return mesh.find_path(query);
 }
 
-// Half the width of the passage `along` the way: the most clearance across
-// it there, looking to each side as far as the first blocked point.
-double half_width(const NavMesh& mesh, const Polyline& way, double along) {
+struct Sample {
+  double along;  // [m]
+  double half;   // half the passage's width there [m]
+  Vec2 middle;   // the passage's middle there [m]
+};
+
+// The passage `along` the way: the most clearance across it there, and
+// where, looking `reach` to each side up to the first blocked point. Round a
+// corner the clearance grows away from it (to `reach` more), in a passage
+// narrower than 2 `reach` it is greatest in the middle (the way, bent round
+// a narrower passage farther on, need not pass this one in the middle).
+Sample across_way(const NavMesh& mesh, const Polyline& way, double along, double reach) {
   const double heading = way.heading_at(along);
   const Vec2 across{-std::sin(heading), std::cos(heading)};
   const Vec2 p = way.point_at(along);
-  double most = mesh.clearance(p);
+  Sample most{along, mesh.clearance(p), p};
   for (const double side : {-1.0, 1.0}) {
-    for (double s = kAcrossStep; s <= kAcross + 1e-12; s += kAcrossStep) {
-      const double c = mesh.clearance(p + (side * s) * across);
+    for (double s = kAcrossStep; s <= reach + kAcrossStep; s += kAcrossStep) {
+      const Vec2 q = p + (side * s) * across;
+      const double c = mesh.clearance(q);
       if (c <= 0.0) break;
-      most = std::max(most, c);
+      if (c > most.half) most = {along, c, q};
     }
   }
   return most;
 }
 
-struct Sample {
-  double along;  // [m]
-  double half;   // half_width there [m]
-};
-
-// How far along `way` it is narrowest: the middle of the narrowest passage.
-double narrowest_along(const NavMesh& mesh, const Polyline& way) {
-  std::vector<double> along;
-  std::vector<double> clear;
+// Where along `way` its first passage narrower than 2 `clearance` is
+// narrowest: the middle of its narrowest part (if the samples miss every
+// such passage, by a hair, the tightest sample).
+Sample narrowest_on(const NavMesh& mesh, const Polyline& way, double clearance) {
+  // The samples of that passage, from the first one narrower on.
+  std::vector<Sample> passage;
+  Sample tightest{0.0, clearance, way.point_at(0.0)};
   for (double s = 0.0; s < way.length() + kSample; s += kSample) {
-    along.push_back(std::min(s, way.length()));
-    clear.push_back(mesh.clearance(way.point_at(along.back())));
+    const double along = std::min(s, way.length());
+    const Vec2 p = way.point_at(along);
+    const double clear = mesh.clearance(p);
+    if (clear < tightest.half) tightest = {along, clear, p};
+    if (clear >= clearance && passage.empty()) continue;
+    const Sample sample =
+        clear < clearance ? across_way(mesh, way, along, clearance) : Sample{along, clear, p};
+    if (sample.half < clearance)
+      passage.push_back(sample);
+    else if (!passage.empty())
+      break;
   }
-  const double tightest = *std::min_element(clear.begin(), clear.end());
-  std::vector<Sample> near;
-  for (std::size_t k = 0; k < along.size(); ++k)
-    if (clear[k] <= tightest + kNear) near.push_back({along[k], half_width(mesh, way, along[k])});
-  const auto least = std::min_element(near.begin(), near.end(), [](const Sample& a, const Sample& b) {
-    return a.half < b.half;
-  });
-  // The run of samples next to each other as narrow as the least.
-  const auto same = [&](std::size_t a, std::size_t b) {
-    return near[b].along - near[a].along <= 1.5 * kSample && near[b].half <= least->half + kSameWidth;
-  };
-  std::size_t first = static_cast<std::size_t>(least - near.begin()), last = first;
-  while (first > 0 && same(first - 1, first)) --first;
-  while (last + 1 < near.size() && same(last, last + 1)) ++last;
-  return 0.5 * (near[first].along + near[last].along);
+  if (passage.empty()) return tightest;
+  const auto least = std::min_element(
+      passage.begin(), passage.end(), [](const Sample& a, const Sample& b) { return a.half < b.half; });
+  // The run of samples as narrow as the least around it (a slot's depth).
+  const auto same = [&](const Sample& s) { return s.half <= least->half + kSameWidth; };
+  auto first = least, last = least;
+  while (first != passage.begin() && same(*(first - 1))) --first;
+  while (last + 1 != passage.end() && same(*(last + 1))) ++last;
+  return across_way(mesh, way, 0.5 * (first->along + last->along), clearance);
 }
 
 }  // namespace
@@ -104,10 +106,9 @@ std::optional<ShortOfGoal> short_of_goal(const NavMesh& mesh, double clearance, 
     }
   }
   const Polyline way(widest.points);
-  const double at = narrowest_along(mesh, way);
-  const Vec2 point = way.point_at(at);
-  ShortOfGoal result{{point, 2.0 * mesh.clearance(point), needs, Behavior::kSideStep}, from};
-  for (double s = at - kStandBack; s > 0.0; s -= kSample) {
+  const Sample narrowest = narrowest_on(mesh, way, clearance);
+  ShortOfGoal result{{narrowest.middle, 2.0 * narrowest.half, needs, Behavior::kSideStep}, from};
+  for (double s = narrowest.along - kStandBack; s > 0.0; s -= kSample) {
     if (mesh.clearance(way.point_at(s)) >= clearance + kStandRoom) {
       result.stand = way.point_at(s);
       break;

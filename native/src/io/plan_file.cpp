@@ -499,7 +499,8 @@ AgentPlan read_agent(const Json& json, const std::string& path, int version,
   if (json.contains("reason")) agent.reason = string(json["reason"], child(path, "reason"));
   if (json.contains("stopped_at"))
     agent.stuck_at = point(json["stopped_at"], child(path, "stopped_at"));
-  if (json.contains("narrowest")) agent.narrowest = read_narrowest(json["narrowest"], child(path, "narrowest"));
+  if (json.contains("narrowest"))
+    agent.narrowest = read_narrowest(json["narrowest"], child(path, "narrowest"));
   const std::string steps_path = child(path, "footsteps");
   if (version == 2) {
     // Version 2's first step starts from the start: read before.

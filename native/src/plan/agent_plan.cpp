@@ -17,8 +17,9 @@ std::string unreachable_text(const Narrowest& narrowest) {
                        : narrowest.behavior == Behavior::kArmsIn ? "with its arms in"
                                                                  : "side-stepping";
   char text[160];
-  std::snprintf(text, sizeof text, "the way at (%.2f, %.2f) is %.2f m wide, its body needs %.2f m %s",
-                narrowest.at.x, narrowest.at.y, narrowest.width, narrowest.needs, moving);
+  std::snprintf(text, sizeof text,
+                "the way at (%.2f, %.2f) is %.2f m wide, its body needs %.2f m %s", narrowest.at.x,
+                narrowest.at.y, narrowest.width, narrowest.needs, moving);
   return head + text;
 }
 

@@ -93,6 +93,23 @@ TEST(Unreachable, AGoalPastTheSlotEndsTheWalkThere) {
   EXPECT_EQ(check_body(plan).penetrations, 0);
 }
 
+// Two slots in a row, 0.30 m wide at x = 3-3.3, then the 0.25 m one: the
+// first stops the walker, and it is the one named; it stands before it.
+TEST(Unreachable, OfTwoSlotsTooNarrowTheFirstIsNamed) {
+  Scenario s = slot_scenario({{10, 0}});
+  s.obstacles.push_back(prism({{3, -1}, {3.3, -1}, {3.3, -0.45}, {3, -0.45}}));
+  s.obstacles.push_back(prism({{3, -0.15}, {3.3, -0.15}, {3.3, 1}, {3, 1}}));
+  const Plan plan = plan_scenario(s);
+  const AgentPlan& agent = plan.agents.front();
+  EXPECT_EQ(agent.reason, "unreachable");
+  ASSERT_TRUE(agent.narrowest.has_value());
+  EXPECT_LT(distance(agent.narrowest->at, {3.15, -0.3}), 0.03);
+  EXPECT_NEAR(agent.narrowest->width, 0.30, 0.005);
+  EXPECT_LT(agent.stuck_at.x, 3.0);
+  EXPECT_LT(walked(agent), 2.5);
+  EXPECT_EQ(check_body(plan).penetrations, 0);
+}
+
 // A goal walled in all round: no way leads there at all. The agent stands
 // where it is, and the narrowest point is there, 0 wide.
 TEST(Unreachable, AGoalWalledInAllRoundLeavesTheAgentWhereItStands) {
