@@ -75,8 +75,8 @@ Sample narrowest_on(const NavMesh& mesh, const Polyline& way, double clearance) 
       break;
   }
   if (passage.empty()) return tightest;
-  const auto least = std::min_element(
-      passage.begin(), passage.end(), [](const Sample& a, const Sample& b) { return a.half < b.half; });
+  const auto narrower = [](const Sample& a, const Sample& b) { return a.half < b.half; };
+  const auto least = std::min_element(passage.begin(), passage.end(), narrower);
   // The run of samples as narrow as the least around it (a slot's depth).
   const auto same = [&](const Sample& s) { return s.half <= least->half + kSameWidth; };
   auto first = least, last = least;

@@ -19,12 +19,12 @@ struct ShortOfGoal {
 
 /// Nothing if a disc of `clearance` finds a path from `from` to `to` on
 /// `mesh`, or cannot stand at either end: then the way is not too narrow.
-/// Otherwise the narrowest point of the widest way (the widest disc that
-/// passes, found by halving; its point is the middle of the passage that
-/// stops a wider one), and where, walking back from there along that way,
-/// the clearance first reaches `clearance` + kStandRoom, kStandBack or more
-/// from it (else `from`). With
-/// no way for even a disc of kThinnest, the narrowest point is `from`, 0 wide.
+/// Otherwise, on the widest way (the widest disc's path, found by halving),
+/// the middle of the narrowest part of the first passage narrower than
+/// 2 `clearance`, and where, walking back from there along that way, the
+/// clearance first reaches `clearance` + kStandRoom, kStandBack or more from
+/// it (else `from`). With no way for even a disc of kThinnest, the narrowest
+/// point is `from`, 0 wide.
 std::optional<ShortOfGoal> short_of_goal(const NavMesh& mesh, double clearance, Vec2 from,
                                          Vec2 to);
 
