@@ -491,19 +491,23 @@ void note_roomy_place(Walker& w, const Attempt& a, const NavMesh* mesh) {
 }
 
 /// True if agent `i` is stuck: its way has not shortened by min_progress for
-/// kStuckAfter, and neither has that of any agent within kQueueDistance. One
+/// kStuckAfter, and neither has that of any agent within kQueueDistance
+/// bound the same way as it (its goal less than 90 degrees round). One
 /// waiting behind others that move is queueing (at a crowded exit, for
-/// longer than kStuckAfter), not stuck; a deadlock does not move at all. One
-/// that has just reached its goal there counts as moving: it may have stood
-/// in the way until then.
+/// longer than kStuckAfter), not stuck; a deadlock does not move at all. In
+/// a knot of crossing streams some always shuffle on, bound elsewhere: they
+/// are no queue it waits in. One that has just reached its goal there
+/// counts as moving: it may have stood in the way until then.
 bool stuck(const std::vector<Walker>& walkers, std::size_t i) {
   const Walker& w = walkers[i];
   const double since = w.state.time - kStuckAfter;
   if (w.improved_at >= since) return false;
+  const Vec2 bound = bound_of(w, w.state.com);
   for (std::size_t j = 0; j < walkers.size(); ++j) {
     const Walker& other = walkers[j];
     if (j != i && other.improved_at >= since &&
-        distance(other.state.com, w.state.com) <= kQueueDistance)
+        distance(other.state.com, w.state.com) <= kQueueDistance &&
+        dot(bound_of(other, other.state.com), bound) > 0.0)
       return false;
   }
   return true;
