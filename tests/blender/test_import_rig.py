@@ -386,6 +386,66 @@ def test_a_rig_near_the_limits_imports_plans_and_applies():
         plan_and_apply([{"name": "ann", "position": [0, 0], "goals": [[6, 0]]}])
 
 
+
+def test_an_agent_scaled_past_what_footfall_plans_is_named_and_changes_nothing():
+    """Issue 49: the project's rig scaled 1.6 (2.9 m tall) imports, but an
+    agent of footfall_scale 1.1 on it stands 3.2 m tall, which the core
+    refused as 'agents[0].character.body_height'. Plan now refuses it naming
+    the agent, its rig, both heights, the scale and the limits, and changes
+    nothing; at the scale the message offers it plans. Randomize Agents
+    refuses a size range that reaches past 3 m on the rig, and draws one
+    within it."""
+    import math
+
+    from footfall.bridge import plan_store, rig_body
+
+    armature = project_rig_in_scene(1.6)
+    armature.name = "giant"
+    check(bpy.ops.footfall.import_rig(armature="giant") == {"FINISHED"}, "the giant was not imported")
+    height = rig_body.body_of(armature)["height"]
+    check(2.75 < height < 3.0, f"the giant is {height} m tall")
+    scenario = TMP / "walker.json"
+    scenario.write_text(json.dumps({"format": "footfall-scenario", "version": 1, "agents": [
+        {"name": "ann", "position": [0, 3], "goals": [[6, 3]]},
+        {"name": "walker", "position": [0, 0], "goals": [[6, 0]], "scale": 1.1}]}))
+    check(bpy.ops.footfall.load_scenario(filepath=str(scenario)) == {"FINISHED"}, "load failed")
+    walker = bpy.data.objects["walker"]
+    walker.name = "Walker.003"  # the message names the object, as the user sees it, not the agent's name
+    walker["footfall_agent_name"] = "walker"
+    within = math.floor(100 * 3.0 / height) / 100
+
+    before = scene_state()
+    try:
+        bpy.ops.footfall.plan()
+        raise AssertionError("a 3.2 m agent was planned")
+    except RuntimeError as error:
+        message = str(error)
+    check(f"agent 'Walker.003': its rig 'giant' ({height:.2f} m) at scale 1.10 is {1.1 * height:.2f} m tall; "
+          f"Footfall plans bodies from 0.5 to 3 m: lower its scale to {within:.2f} or less" in message, message)
+    check("body_height" not in message, message)
+    check(scene_state() == before and plan_store.TEXT_NAME not in bpy.data.texts,
+          f"the refused Plan changed the scene: {scene_state()}")
+
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(obj == walker)
+    try:
+        bpy.ops.footfall.randomize_agents(scale_min=1.0, scale_max=1.2)
+        raise AssertionError("sizes up to 1.2 drawn for a 2.9 m rig")
+    except RuntimeError as error:
+        message = str(error)
+    check(f"Size range 1-1.2: at 1.2, rig 'giant' is {1.2 * height:.2f} m tall; Footfall plans bodies from 0.5 "
+          "to 3 m tall: narrow the size range" in message, message)
+    check(scene_state() == before, f"the refused Randomize changed the scene: {scene_state()}")
+    check(bpy.ops.footfall.randomize_agents(scale_min=1.0, scale_max=within) == {"FINISHED"}, "randomize failed")
+    check(1.0 <= walker["footfall_scale"] <= within, walker["footfall_scale"])
+
+    walker["footfall_scale"] = within
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "the agent at a scale within the range did not plan")
+    plan = json.loads(plan_store.load())
+    check(all(agent["status"] == "reached" for agent in plan["agents"]), [a["status"] for a in plan["agents"]])
+    (planned,) = [agent for agent in plan["agents"] if agent["name"] == "walker"]
+    check(planned["scale"] == within, planned.get("scale"))
+
 run([test_mixamo_rig_is_detected, test_bones_of_no_naming_scheme_are_found_from_the_skeleton,
      test_rigs_are_read_from_gltf_and_fbx_files_only, test_an_fbx_rig_is_imported_and_kept_out_of_renders,
      test_a_rigify_metarig_in_the_scene_is_used_as_it_is, test_unmappable_rig_lists_bones_and_changes_nothing,
@@ -393,4 +453,5 @@ run([test_mixamo_rig_is_detected, test_bones_of_no_naming_scheme_are_found_from_
      test_project_rig_matches_its_profile, test_the_planners_body_is_measured_from_the_rig,
      test_a_rig_whose_mesh_gives_its_upper_arms_nothing_plans_applies_and_exports,
      test_a_rig_too_tall_or_too_small_to_plan_is_refused_and_changes_nothing,
-     test_a_rig_near_the_limits_imports_plans_and_applies])
+     test_a_rig_near_the_limits_imports_plans_and_applies,
+     test_an_agent_scaled_past_what_footfall_plans_is_named_and_changes_nothing])

@@ -258,6 +258,41 @@ def test_a_rig_the_core_would_refuse_is_named_in_the_users_terms(ff):
         "(character.behaviors.walk.poses[0].torso: radius must be in (0, 1] m): scale the rig")
 
 
+def test_an_agent_scaled_past_the_cores_limits_is_named_in_the_users_terms(ff):
+    """character.scaled_problem words the core's own refusal of a scaled
+    agent (issue 49): the agent, its rig and height, the scale and the height
+    it makes, the limits, and which way the scale must go."""
+    from footfall.core import scenario
+
+    def pose(radius):  # the clearances rise with the radius: side_step < arms_in < walk
+        return [{limb: [0.0, 0.0, 0.5, 0.0, 0.0, 1.0, radius] for limb in body_capsules.LIMBS}]
+
+    def refusal(dimensions, height, scale):
+        body = {"height": height, "poses": {"walk": pose(0.12), "arms_in": pose(0.1), "side_step": pose(0.08)}}
+        own, planner = character.derive_parameters(dimensions, body)
+        document = scenario.scenario_document(scenario.ScenarioInput(
+            agents=[scenario.AgentInput("w", (0.0, 0.0), [(5.0, 0.0)], scale=scale)], character=own, planner=planner))
+        scenario.parse({**document, "agents": [{**document["agents"][0], "scale": 1.0}]}, "scene")  # plans unscaled
+        with pytest.raises(ValueError) as refused:
+            scenario.parse(document, "scene")
+        return str(refused.value).removeprefix("scene: ")
+
+    giant = {"hip_height": 1.49, "leg_length": 1.36, "shoulder_width": 0.61, "foot_length": 0.42}
+    said = refusal(giant, 2.88, 1.1)
+    assert said.startswith("agents[0].character.body_height: must be in [0.5, 3], got 3.168"), said
+    assert character.scaled_problem(said, "Walker.003", "giant.glb", 2.88, 1.1) == (
+        "agent 'Walker.003': its rig 'giant.glb' (2.88 m) at scale 1.10 is 3.17 m tall; Footfall plans bodies "
+        "from 0.5 to 3 m: lower its scale to 1.04 or less")
+    assert character.scaled_problem(said.replace("got 3.168", "got 0.4"), "tot", None, 0.8, 0.5) == (
+        "agent 'tot': the scene's character (0.80 m) at scale 0.50 is 0.40 m tall; Footfall plans bodies "
+        "from 0.5 to 3 m: raise its scale to 0.63 or more")
+    small = {"hip_height": 0.3, "leg_length": 0.27, "shoulder_width": 0.12, "foot_length": 0.08}
+    said = refusal(small, 0.56, 0.6)
+    assert character.scaled_problem(said, "kid", "tiny.glb", 0.56, 0.6).startswith(
+        "agent 'kid': its rig 'tiny.glb' (0.56 m) at scale 0.60 gives a centre of mass Footfall cannot plan "
+        "(character.com_height: must be in [0.2, 3], got 0.18"), said
+
+
 def test_given_limbs_guide_the_trunk():
     # Thighs detection cannot read: given, they still locate the hips.
     bones = [Bone({"thigh.L": "Femur_A", "thigh.R": "Femur_B"}.get(b.name, b.name),

@@ -9,11 +9,14 @@ another imported rig is animated with that one, and walks with a character
 sized from it: its own `character` in the scenario.
 """
 
+import re
 from typing import Dict, Optional
 
 import bpy
 
-from ..core.character import COM_ABOVE_HIPS, derive_parameters, scaled, with_rig
+from ..core import native
+from ..core.character import COM_ABOVE_HIPS, derive_parameters, scaled, scaled_problem, with_rig
+from ..core.scenario import parse
 from .rig_body import body_of
 from .rig_import import imported_rigs, profile_of
 from .scene_extract import AGENT_RIG, agent_empties
@@ -48,7 +51,8 @@ def scene_rig(scene, name: str = "") -> Optional[bpy.types.Object]:
     return rigs[0] if rigs else None
 
 
-def _agent_rig(agent: str, name) -> bpy.types.Object:
+def agent_rig(agent: str, name) -> bpy.types.Object:
+    """The imported rig that agent `agent`'s "footfall_rig" names (`name`)."""
     if not isinstance(name, str):
         raise RigChoiceError(f"Agent '{agent}': custom property '{AGENT_RIG}' must be a rig's name, got {name!r}")
     rig = bpy.data.objects.get(name)
@@ -65,20 +69,63 @@ def sized(document: dict, agent_rigs: Dict[str, str], rig: Optional[bpy.types.Ob
     (where the agent sets no value itself; the core scales the scenario's
     character for the others)."""
     result = with_rig(document, profile_of(rig).dimensions, body_of(rig)) if rig is not None else dict(document)
-    agents = []
     derived = {}  # per rig and scale: a crowd's agents share a few
-    for entry in result.get("agents", []):
-        own = agent_rigs.get(entry["name"])
-        if own is not None and (rig is None or own != rig.name):
-            own_rig = _agent_rig(entry["name"], own)
-            key = (own_rig.name, entry.get("scale", 1.0))
-            if key not in derived:
-                derived[key], _planner = derive_parameters(*scaled(profile_of(own_rig).dimensions, body_of(own_rig),
-                                                                   key[1]))
-            entry = {**entry, "character": {**derived[key], **entry.get("character", {})}}
-        agents.append(entry)
-    result["agents"] = agents
+    result["agents"] = [_sized_agent(entry, agent_rigs, rig, derived) for entry in result.get("agents", [])]
     return result
+
+
+def _own_rig(entry: dict, agent_rigs: Dict[str, str], rig: Optional[bpy.types.Object]):
+    """The agent's own rig when it is not the scene's `rig`, else None."""
+    own = agent_rigs.get(entry["name"])
+    if own is not None and (rig is None or own != rig.name):
+        return agent_rig(entry["name"], own)
+    return None
+
+
+def _sized_agent(entry: dict, agent_rigs: Dict[str, str], rig, derived: dict) -> dict:
+    own_rig = _own_rig(entry, agent_rigs, rig)
+    if own_rig is None:
+        return entry
+    key = (own_rig.name, entry.get("scale", 1.0))
+    if key not in derived:
+        derived[key], _planner = derive_parameters(*scaled(profile_of(own_rig).dimensions, body_of(own_rig), key[1]))
+    return {**entry, "character": {**derived[key], **entry.get("character", {})}}
+
+
+def check_sizes(document: dict, sized_document: dict, agent_rigs: Dict[str, str],
+                rig: Optional[bpy.types.Object], objects: Dict[str, str]) -> None:
+    """Raises RigChoiceError, in the user's terms, for an agent whose scale
+    takes the character it is sized from (its rig's, or the scene's) where
+    the core will not plan it: `sized_document` is what sized() made of
+    `document`, `objects` each agent's object by agent name. The core's own
+    checks decide (they parse the document, as Plan would), so that the two
+    never disagree; a refusal that is not the scale's (the agent plans at
+    scale 1 no better) is left for Plan to report as the core words it."""
+    try:
+        parse(sized_document, "scene")
+        return
+    except ValueError as error:
+        refusal = str(error).removeprefix("scene: ")
+    found = re.match(r"agents\[(\d+)\]\.character\.", refusal)
+    if found is None:
+        return
+    index = int(found[1])
+    entry = sized_document["agents"][index]
+    scale = entry.get("scale", 1.0)
+    if scale == 1.0:
+        return
+    unscaled = _sized_agent({k: v for k, v in document["agents"][index].items() if k != "scale"}, agent_rigs, rig,
+                            {})
+    alone = {key: value for key, value in sized_document.items() if key not in ("agents", "obstacles")}
+    try:
+        parse({**alone, "agents": [unscaled]}, "scene")
+    except ValueError:
+        return  # not (only) its size: Plan reports the core's words
+    chosen = _own_rig(entry, agent_rigs, rig) or rig
+    character = {**sized_document.get("character", {}), **unscaled.get("character", {})}
+    height = character.get("body_height", native.load().CharacterParams().body_height)
+    raise RigChoiceError(scaled_problem(refusal, objects.get(entry["name"], entry["name"]),
+                                        None if chosen is None else chosen.name, height, scale))
 
 
 def rigs_of(scene, plan, rig: Optional[bpy.types.Object]) -> Dict[str, bpy.types.Object]:
@@ -90,7 +137,7 @@ def rigs_of(scene, plan, rig: Optional[bpy.types.Object]) -> Dict[str, bpy.types
     for agent in plan.agents:
         empty = empties.get(agent.name)
         own = empty.get(AGENT_RIG) if empty is not None else None
-        chosen = rig if own is None else _agent_rig(agent.name, own)
+        chosen = rig if own is None else agent_rig(agent.name, own)
         if chosen is None:
             raise RigChoiceError("Import a rig first (Footfall > Import Rig)")
         planned = (agent.character or plan.character).com_height

@@ -88,10 +88,11 @@ MEASURED_BY = {"com_height": ("hip_height", "a centre of mass"), "torso_width": 
                "foot_radius": ("foot_length", "a foot")}
 
 
-def problem(dimensions: Mapping[str, float], body: Optional[Mapping], rig: str) -> Optional[str]:
+def problem(dimensions: Mapping[str, float], body: Optional[Mapping], rig: str, remedy: str = "scale the rig"
+            ) -> Optional[str]:
     """Why the core would refuse the character derived from rig `rig`, in
-    the user's terms; None if it plans. It asks the core's own checks, so
-    that Import Rig refuses exactly what Plan would."""
+    the user's terms, ending in `remedy`; None if it plans. It asks the
+    core's own checks, so that Import Rig refuses exactly what Plan would."""
     character, planner = derive_parameters(dimensions, body)
     try:
         scenario.parse(scenario.scenario_document(scenario.ScenarioInput(character=character, planner=planner)), rig)
@@ -102,10 +103,39 @@ def problem(dimensions: Mapping[str, float], body: Optional[Mapping], rig: str) 
     tall = f"rig '{rig}'" + (f" is {body['height']:.2f} m tall" if body else "")
     limits = re.match(r"must be in .(\S+), (\S+)., got", why)
     if field == "body_height" and limits:
-        return f"{tall}; Footfall plans bodies from {limits[1]} to {limits[2]} m tall: scale the rig"
+        return f"{tall}; Footfall plans bodies from {limits[1]} to {limits[2]} m tall: {remedy}"
     if ".poses[" in where:  # character.behaviors.BEHAVIOR.poses[i].LIMB
         gives = f"its {where.split('.')[2]} clip gives its {field} a capsule"
     else:
         dimension, what = MEASURED_BY.get(field, ("leg_length", "strides and paces"))
         gives = f"its {dimension.replace('_', ' ')} of {dimensions[dimension]:.2f} m gives {what}"
-    return f"{tall}; {gives} Footfall cannot plan ({where}: {why}): scale the rig"
+    return f"{tall}; {gives} Footfall cannot plan ({where}: {why}): {remedy}"
+
+
+def scaled_problem(refusal: str, agent: str, rig: Optional[str], height: float, scale: float) -> str:
+    """The core's `refusal` ("agents[i].character.FIELD: problem") of an
+    agent whose scale takes the character it is sized from (rig `rig`, None
+    for the scene's character, `height` m tall) outside what the core plans,
+    in the user's terms: the agent, its rig, the heights, the limits and
+    which way its scale must go."""
+    where, _, why = refusal.partition(": ")
+    path = where.split(".character.", 1)[-1]
+    who = f"agent '{agent}': " + (f"its rig '{rig}'" if rig else "the scene's character") + f" ({height:.2f} m)"
+    limits = re.match(r"must be in .(\S+), (\S+)., got (\S+)", why)
+    if limits is None:
+        remedy = "change its scale"
+    elif float(limits[3]) > float(limits[2]):
+        remedy = "lower its scale"
+    else:
+        remedy = "raise its scale"
+    if path == "body_height" and limits:
+        least, most = float(limits[1]), float(limits[2])
+        if remedy.startswith("lower"):
+            remedy += f" to {math.floor(100 * most / height + 1e-9) / 100:.2f} or less"
+        else:
+            remedy += f" to {math.ceil(100 * least / height - 1e-9) / 100:.2f} or more"
+        return (f"{who} at scale {scale:.2f} is {height * scale:.2f} m tall; Footfall plans bodies from "
+                f"{limits[1]} to {limits[2]} m: {remedy}")
+    field = path.rsplit(".", 1)[-1]
+    what = "a body capsule" if ".poses[" in path else MEASURED_BY.get(field, ("", "strides and paces"))[1]
+    return f"{who} at scale {scale:.2f} gives {what} Footfall cannot plan (character.{path}: {why}): {remedy}"

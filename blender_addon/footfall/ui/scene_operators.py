@@ -51,12 +51,16 @@ def _planning_input(context, names=None):
     agent is planned), and the read scene (to name objects in errors).
     Raises SceneError naming the object or field at fault."""
     from ..bridge import agent_rigs
-    from ..bridge.scene_extract import AGENTS, SceneError, read
+    from ..bridge.scene_extract import AGENTS, SceneError, agent_empties, read
 
     extracted = read(context.scene)
     # The rigs' sizes set the strides; the scene's and agents' own overrides win.
     try:
-        document = agent_rigs.sized(extracted.document, extracted.agent_rigs, agent_rigs.scene_rig(context.scene))
+        rig = agent_rigs.scene_rig(context.scene)
+        document = agent_rigs.sized(extracted.document, extracted.agent_rigs, rig)
+        # An agent scaled past what the core plans: named in the user's terms, before anything runs.
+        objects = {name: empty.name for name, empty in agent_empties(context.scene).items()}
+        agent_rigs.check_sizes(extracted.document, document, extracted.agent_rigs, rig, objects)
     except agent_rigs.RigChoiceError as error:
         raise SceneError(str(error)) from error
     if not document["agents"]:
