@@ -86,6 +86,8 @@ def with_rig(document: dict, dimensions: Mapping[str, float], body: Optional[Map
 # from; any other (strides, speeds, step durations, gaits) from the leg length.
 MEASURED_BY = {"com_height": ("hip_height", "a centre of mass"), "torso_width": ("shoulder_width", "a torso"),
                "foot_radius": ("foot_length", "a foot")}
+# The core's words for a value out of its range: "must be in [LOW, HIGH], got VALUE".
+OUT_OF_RANGE = re.compile(r"must be in .(\S+), (\S+)., got (\S+)")
 
 
 def problem(dimensions: Mapping[str, float], body: Optional[Mapping], rig: str, remedy: str = "scale the rig"
@@ -101,7 +103,7 @@ def problem(dimensions: Mapping[str, float], body: Optional[Mapping], rig: str, 
         where, _, why = str(error).removeprefix(f"{rig}: ").partition(": ")
     field = where.rsplit(".", 1)[-1]
     tall = f"rig '{rig}'" + (f" is {body['height']:.2f} m tall" if body else "")
-    limits = re.match(r"must be in .(\S+), (\S+)., got", why)
+    limits = OUT_OF_RANGE.match(why)
     if field == "body_height" and limits:
         return f"{tall}; Footfall plans bodies from {limits[1]} to {limits[2]} m tall: {remedy}"
     if ".poses[" in where:  # character.behaviors.BEHAVIOR.poses[i].LIMB
@@ -121,7 +123,7 @@ def scaled_problem(refusal: str, agent: str, rig: Optional[str], height: float, 
     where, _, why = refusal.partition(": ")
     path = where.split(".character.", 1)[-1]
     who = f"agent '{agent}': " + (f"its rig '{rig}'" if rig else "the scene's character") + f" ({height:.2f} m)"
-    limits = re.match(r"must be in .(\S+), (\S+)., got (\S+)", why)
+    limits = OUT_OF_RANGE.match(why)
     if limits is None:
         remedy = "change its scale"
     elif float(limits[3]) > float(limits[2]):
