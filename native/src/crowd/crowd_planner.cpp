@@ -593,6 +593,21 @@ double progress_of(const Walker& w) {
   return (static_cast<double>(w.goal) + current) / static_cast<double>(w.spec->goals.size());
 }
 
+/// Moves the first steps of walker w's plan that no check or search reaches
+/// any more, those kSettledAge before `t`, to `settled`: every copy of a
+/// plan (the views, each trial) then holds only what is still checked. Its
+/// bounds follow; `walk`, which reads its plan, starts over. False if too
+/// few would go to be worth it (kSettleAtLeast).
+bool settle(Walker& w, PlanWalk& walk, std::vector<Footstep>& settled, double t) {
+  const std::size_t count = droppable_steps(w.plan, t - kSettledAge);
+  if (count < kSettleAtLeast) return false;
+  drop_steps(w.plan, count, settled);
+  w.plan.footsteps.shrink_to_fit();
+  w.bounds = std::make_shared<const PlanBounds>(w.plan, w.planner->character());
+  walk = PlanWalk(w.plan);
+  return true;
+}
+
 /// One tick's searches and checks, run on the workers, committed a tick later.
 struct TickJobs {
   double t = 0.0;
@@ -660,6 +675,10 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
   }
   std::vector<PlanWalk> walks;
   for (const Walker& w : walkers) walks.emplace_back(w.plan);
+  // The steps settled (settle()), and where each plan started before them.
+  std::vector<std::vector<Footstep>> settled(walkers.size());
+  std::vector<FootstepState> first_states;
+  for (const Walker& w : walkers) first_states.push_back(w.plan.start);
   std::optional<CrowdGrid> crowd_grid;
   if (mesh != nullptr) crowd_grid.emplace(*mesh, sway_room(planners.front()->character()));
   // Two views (see the top of this file), one per tick in flight; each is
@@ -738,6 +757,10 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     std::vector<std::size_t> woken;
     wake_where_gone(walkers, departures, t, woken);
     for (const std::size_t j : woken) touch(j);
+    // Not those in flight: their commits replace their plans with the view's.
+    if (tick % kSettleTicks == 0)
+      for (std::size_t i = 0; i < walkers.size(); ++i)
+        if (!in_flight[i] && settle(walkers[i], walks[i], settled[i], t)) touch(i);
     bool active = !departures.empty();
     for (std::size_t i = 0; i < walkers.size(); ++i) {
       if (walkers[i].done || walkers[i].dormant) continue;
@@ -789,7 +812,8 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       std::vector<Walker>& view = views[static_cast<std::size_t>(tick % 2)];
       std::uint64_t& view_synced = synced[static_cast<std::size_t>(tick % 2)];
       for (std::size_t j = 0; j < walkers.size(); ++j)
-        if (changed_at[j] > view_synced) view[j] = walkers[j];
+        // A fresh copy: one assigned over the old would keep its longer plan's room.
+        if (changed_at[j] > view_synced) view[j] = Walker(walkers[j]);
       view_synced = epoch++;
       // The dearest-looking jobs start first (those that search, by what
       // their last ones took), so that threads finish together; results go
@@ -840,6 +864,9 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       continue;
     }
     Walker& w = walkers[i];
+    w.plan.start = first_states[i];
+    settled[i].insert(settled[i].end(), w.plan.footsteps.begin(), w.plan.footsteps.end());
+    w.plan.footsteps = std::move(settled[i]);
     w.plan.stuck_at = w.resting > 0 ? w.rested.com : w.state.com;
     choose_foot_orientations(w.plan.footsteps, w.plan.start.foot_orientation,
                              w.planner->character());

@@ -140,6 +140,25 @@ PlanBounds::From PlanBounds::from(double from) const {
   return bounds;
 }
 
+std::size_t droppable_steps(const AgentPlan& plan, double from) {
+  const auto& steps = plan.footsteps;
+  if (steps.empty() || from < steps.front().start_time) return 0;
+  std::array<bool, 2> found{false, false};
+  for (int i = step_index(plan, from) - 1; i >= 0; --i) {
+    found[static_cast<int>(steps[i].foot)] = true;
+    if (found[0] && found[1]) return static_cast<std::size_t>(i);
+  }
+  return 0;
+}
+
+void drop_steps(AgentPlan& plan, std::size_t count, std::vector<Footstep>& past) {
+  const auto end = plan.footsteps.begin() + static_cast<std::ptrdiff_t>(count);
+  for (auto step = plan.footsteps.begin(); step != end; ++step)
+    plan.start = state_after(plan.start, *step);
+  past.insert(past.end(), plan.footsteps.begin(), end);
+  plan.footsteps.erase(plan.footsteps.begin(), end);
+}
+
 double facing_at(const AgentPlan& plan, double t) {
   if (plan.footsteps.empty() || t < plan.footsteps.front().start_time) return plan.start.facing;
   return plan.footsteps[step_index(plan, t)].phi;

@@ -186,6 +186,17 @@ std::vector<Circle> collision_circles(const AgentPlan& plan, const CharacterPara
 int collision_circles(const AgentPlan& plan, const CharacterParams& character, double t,
                       std::array<Circle, 5>& out);
 
+/// How many of the plan's first steps may be dropped, with its start moved
+/// to the state after them (drop_steps), leaving every answer about time
+/// `from` and later the same to the bit: com_at, facing_at, feet_at,
+/// collision_circles and PlanBounds::from. The steps kept reach back from the
+/// one under way at `from` to where each foot was last planted before it
+/// (feet_at reads those). A crowd keeps only what is still to be checked.
+std::size_t droppable_steps(const AgentPlan& plan, double from);
+/// Moves the plan's first `count` steps to the end of `past` and its start
+/// to the state after them. (`past` holds what was dropped before.)
+void drop_steps(AgentPlan& plan, std::size_t count, std::vector<Footstep>& past);
+
 /// com_at and collision_circles of one plan, the same to the bit, for times
 /// that mostly grow (a check walking through its instants, the crowd's
 /// ticks): each step under way is found from the last, not searched for
