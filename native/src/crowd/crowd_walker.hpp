@@ -59,10 +59,10 @@ constexpr double kFreezeRadius = 5.0;
 constexpr double kGridCell = 5.0;
 /// Steps that ended this long before a tick are past every check and
 /// search (none reaches back more than a few seconds; settle()). [s]
-constexpr double kSettledAge = 30.0;
-/// How often plans are settled (every 10 s), and the fewest steps worth it.
-constexpr long kSettleTicks = 200;
-constexpr std::size_t kSettleAtLeast = 32;
+constexpr double kSettledAge = 10.0;
+/// How often plans are settled (every second), and the fewest steps worth it.
+constexpr long kSettleTicks = 20;
+constexpr std::size_t kSettleAtLeast = 8;
 /// Rests closer than this are the same place. [m]
 constexpr double kSamePlace = 0.01;
 /// Noticed agents are kept in mind while they are this near. [m]
