@@ -133,8 +133,10 @@ std::optional<SearchResult> step_aside(const FootstepState& state, const KeepOut
                                        const MovingObstacles& others,
                                        const FootstepPlanner& planner, const NavMesh* mesh,
                                        const SearchOptions& options) {
+  SearchOptions to_place = options;
+  to_place.reach_or_nothing = true;
   for (const Vec2 place : room_aside(state, keep_out, others, planner, mesh)) {
-    SearchResult result = planner.plan(state, place, others, options);
+    SearchResult result = planner.plan(state, place, others, to_place);
     if (result.status == Status::kSuccess && !result.footsteps.empty()) return result;
   }
   return std::nullopt;

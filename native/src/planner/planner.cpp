@@ -413,6 +413,8 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   int end = goal_node;
   if (goal_node >= 0) {
     result.status = Status::kSuccess;
+  } else if (options.reach_or_nothing) {
+    result.status = Status::kNoPath;
   } else {
     // Horizon: the closed node with the best heuristic that the character can
     // still stop from, free to set off where it stops, so that the worst

@@ -47,6 +47,10 @@ struct SearchOptions {
   /// agent's second chance); everywhere, they made more agents stuck than
   /// they freed.
   bool fine_pivots = false;
+  /// Only a way to the goal is wanted: a search that does not reach it
+  /// gives kNoPath at once, not looking for where to stop short of it (most
+  /// of a failed search's time in a crowd: a rest is tried at node after node).
+  bool reach_or_nothing = false;
 };
 
 /// Result of one footstep search.
@@ -62,7 +66,8 @@ struct SearchResult {
   /// single wait step.
   /// Also kPartial: steps cut before a rest taken for good (rest_grace);
   /// where the character can rest then is for the caller to find.
-  /// kNoPath: not even that is possible. kInvalidStart: the start collides.
+  /// kNoPath: not even that is possible (with reach_or_nothing: the goal
+  /// was not reached). kInvalidStart: the start collides.
   /// kInvalidGoal: the goal lies inside an obstacle.
   Status status = Status::kPartial;
   std::vector<Footstep> footsteps;  ///< The planned steps, in order.
