@@ -874,7 +874,6 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     // those the search gave a narrower one (the arms held in) keep it.
     for (Footstep& step : w.plan.footsteps)
       step.behavior = std::max(step.behavior, w.sections->of(step));
-    w.planner->hold_arms_in(w.plan.footsteps);
     w.plan.sections = w.sections->sections();
     w.plan.character = w.spec->character;
     w.plan.scale = w.spec->scale;

@@ -104,16 +104,18 @@ void set_trunk(const Body& b, BodyPose& pose, bool across) {
 }
 
 // Legs stepping along `travel` (unit, in the ground plane) with hips at
-// ±hip_y along `hips` (unit), knees and toes toward `facing`.
+// ±hip_y along `hips` (unit), knees and toes toward `facing`. With `hike`,
+// the swinging leg's hip rises as its foot does (the pelvis tilts), so that
+// its knee bends no further than the standing one's.
 void set_legs(const Body& b, BodyPose& pose, double phase, double stride, double lift_height,
-              Vec3 travel, Vec3 hips, Vec3 facing) {
+              Vec3 travel, Vec3 hips, Vec3 facing, bool hike) {
   const double z_hip = kHipHeight * b.height, z_ankle = kAnkleHeight * b.height;
   for (int leg = 0; leg < 2; ++leg) {
     const double sign = leg == 0 ? 1.0 : -1.0;  // 0: left (+hips)
     const double u = std::fmod(phase + 0.5 * leg, 1.0);
     double along = 0, lift = 0;
     foot_track(u, stride, lift_height, along, lift);
-    const Vec3 hip = Vec3{0, 0, z_hip} + sign * b.hip_y * hips;
+    const Vec3 hip = Vec3{0, 0, z_hip + (hike ? lift : 0.0)} + sign * b.hip_y * hips;
     Vec3 ankle = Vec3{0, 0, z_ankle + lift} + sign * b.hip_y * hips + along * travel;
     const Vec3 knee = knee_of(b, hip, ankle, facing);
     const int thigh = static_cast<int>(leg == 0 ? Limb::kThighLeft : Limb::kThighRight);
@@ -139,7 +141,7 @@ BodyPose walk_pose(const Body& b, const CharacterParams& c, double phase, bool a
   BodyPose pose;
   set_trunk(b, pose, false);
   const double stride = c.preferred_speed * 2 * c.preferred_step_duration;
-  set_legs(b, pose, phase, stride, kWalkLift, {1, 0, 0}, {0, 1, 0}, {1, 0, 0});
+  set_legs(b, pose, phase, stride, kWalkLift, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, false);
   const double z_shoulder = kShoulderHeight * b.height;
   const double upper = kUpperArm * b.height, fore = kForearmToPalm * b.height;
   for (int arm = 0; arm < 2; ++arm) {
@@ -175,7 +177,7 @@ BodyPose side_step_pose(const Body& b, const CharacterParams& c, double phase) {
   set_trunk(b, pose, true);
   const double stride = c.side_step_speed * kSideStepCycle;
   // Travel +X, facing +Y: the hips lie along X; leg 0 (the body's left) is at -X.
-  set_legs(b, pose, phase, stride, kSideStepLift, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0});
+  set_legs(b, pose, phase, stride, kSideStepLift, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, true);
   const double z_shoulder = kShoulderHeight * b.height;
   const double upper = kUpperArm * b.height, fore = kForearmToPalm * b.height;
   for (int arm = 0; arm < 2; ++arm) {
@@ -203,19 +205,6 @@ BehaviorMotion builtin_motion(Behavior behavior, const CharacterParams& characte
     motion.poses.push_back(side ? side_step_pose(body, character, phase)
                                 : walk_pose(body, character, phase,
                                             behavior == Behavior::kArmsIn));
-  }
-  if (side) {
-    // Centre the body across the way: the toes reach further forward than the back.
-    double lo = INFINITY, hi = -INFINITY;
-    for (const BodyPose& pose : motion.poses)
-      for (const Capsule& c : pose)
-        for (const Vec3 p : {c.a, c.b}) {
-          lo = std::min(lo, p.y - c.radius);
-          hi = std::max(hi, p.y + c.radius);
-        }
-    const Vec3 shift{0, -0.5 * (lo + hi), 0};
-    for (BodyPose& pose : motion.poses)
-      for (Capsule& c : pose) c = {c.a + shift, c.b + shift, c.radius};
   }
   return motion;
 }

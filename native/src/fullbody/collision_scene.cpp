@@ -1,6 +1,7 @@
 // Footfall — capsules against the scene's triangles.
 #include "footfall/fullbody/collision_scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "fullbody/capsule_triangle.hpp"
@@ -69,7 +70,35 @@ Contact capsule_contact(const CollisionTree& tree, const Capsule& capsule, bool 
   return best;
 }
 
+// A point of the world in the frame at `origin` whose x axis is `along`.
+Vec3 in_frame(Vec3 p, Vec2 origin, Vec2 along) {
+  const Vec2 d = ground(p) - origin;
+  return {dot(d, along), cross(along, d), p.z};
+}
+
+// False if an axis separates `box` from the triangle `q` (in the box's
+// frame, with its normal `n` there): the box's three axes and the normal.
+bool may_meet(const FrameBox& box, const std::array<Vec3, 3>& q, Vec3 n) {
+  const auto apart = [](double a, double b, double c, double lo, double hi) {
+    return std::max({a, b, c}) < lo || std::min({a, b, c}) > hi;
+  };
+  if (apart(q[0].x, q[1].x, q[2].x, box.min.x, box.max.x) ||
+      apart(q[0].y, q[1].y, q[2].y, box.min.y, box.max.y) ||
+      apart(q[0].z, q[1].z, q[2].z, box.min.z, box.max.z))
+    return false;
+  const Vec3 centre = 0.5 * (box.min + box.max), half = 0.5 * (box.max - box.min);
+  const double reach =
+      std::fabs(n.x) * half.x + std::fabs(n.y) * half.y + std::fabs(n.z) * half.z;
+  return std::fabs(dot(n, centre - q[0])) <= reach;
+}
+
 }  // namespace
+
+bool LimbSurfaces::empty() const {
+  for (const auto& surfaces : near_)
+    if (!surfaces.empty()) return false;
+  return true;
+}
 
 CollisionScene::CollisionScene(const std::vector<Obstacle>& obstacles)
     : tree_(std::make_unique<CollisionTree>(surfaces(obstacles))) {}
@@ -84,6 +113,58 @@ bool CollisionScene::near(Vec3 lo, Vec3 hi) const {
   box.take_in(lo);
   box.take_in(hi);
   return tree_->visit(box, [](const SceneTriangle&) { return true; });
+}
+
+void CollisionScene::near_limbs(Vec2 origin, double heading,
+                                const std::array<FrameBox, kLimbCount>& boxes,
+                                LimbSurfaces& near) const {
+  for (auto& surfaces : near.near_) surfaces.clear();
+  // A hair of room, so that rounding in the frame's turn leaves no touching
+  // surface out.
+  constexpr double kRoom = 1e-9;  // [m]
+  const Vec3 room{kRoom, kRoom, kRoom};
+  FrameBox all;
+  for (const FrameBox& b : boxes) {
+    all.min = {std::min(all.min.x, b.min.x), std::min(all.min.y, b.min.y),
+               std::min(all.min.z, b.min.z)};
+    all.max = {std::max(all.max.x, b.max.x), std::max(all.max.y, b.max.y),
+               std::max(all.max.z, b.max.z)};
+  }
+  const Vec2 along = unit(heading), left = perp(along);
+  Box3 world;
+  for (const double x : {all.min.x, all.max.x})
+    for (const double y : {all.min.y, all.max.y}) {
+      const Vec2 corner = origin + x * along + y * left;
+      world.take_in(Vec3{corner.x, corner.y, all.min.z} - room);
+      world.take_in(Vec3{corner.x, corner.y, all.max.z} + room);
+    }
+  tree_->visit(world, [&](const SceneTriangle& t) {
+    const std::array<Vec3, 3> q = {in_frame(t.corners[0], origin, along),
+                                   in_frame(t.corners[1], origin, along),
+                                   in_frame(t.corners[2], origin, along)};
+    const Vec3 n{dot(ground(t.normal), along), cross(along, ground(t.normal)), t.normal.z};
+    for (int limb = 0; limb < kLimbCount; ++limb) {
+      const FrameBox grown{boxes[limb].min - room, boxes[limb].max + room};
+      if (may_meet(grown, q, n)) near.near_[limb].push_back(&t);
+    }
+    return false;
+  });
+}
+
+Contact CollisionScene::test(const BodyPose& pose, const GroundPlacement& placement,
+                             const LimbSurfaces& near) const {
+  for (int limb = 0; limb < kLimbCount; ++limb) {
+    if (near.near_[limb].empty()) continue;
+    const Capsule placed = placement.apply(pose[limb]);
+    Contact contact;
+    double best_squared = placed.radius * placed.radius;
+    for (const SceneTriangle* t : near.near_[limb])
+      if (take_contact(*t, placed, contact, best_squared)) {
+        contact.limb = limb;
+        return contact;
+      }
+  }
+  return {};
 }
 
 Contact CollisionScene::test(const Capsule& capsule) const {

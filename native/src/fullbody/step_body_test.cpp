@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace footfall {
 
@@ -40,15 +40,20 @@ StepBodyTest::StepBodyTest(const CollisionScene& scene, const BodyModel& body, d
   if (!(pose_rate >= 1 && pose_rate <= 1000))
     throw std::invalid_argument("pose rate: must be in [1, 1000] poses per second");
   for (Behavior behavior : {Behavior::kWalk, Behavior::kArmsIn, Behavior::kSideStep}) {
-    Extent& extent = extents_[static_cast<int>(behavior)];
+    auto& boxes = limb_boxes_[static_cast<int>(behavior)];
+    // A pose between two samples, or between standing and walking, is a
+    // blend of theirs: within the box of both.
     const auto take_in = [&](const BodyPose& pose) {
-      for (const Capsule& c : pose)
+      for (int limb = 0; limb < kLimbCount; ++limb) {
+        const Capsule& c = pose[limb];
+        FrameBox& box = boxes[limb];
         for (const Vec3 p : {c.a, c.b}) {
-          extent.ahead = std::max(extent.ahead, p.x + c.radius);
-          extent.behind = std::max(extent.behind, c.radius - p.x);
-          extent.side = std::max(extent.side, std::fabs(p.y) + c.radius);
-          extent.top = std::max(extent.top, p.z + c.radius);
+          const Vec3 r{c.radius, c.radius, c.radius};
+          const Vec3 lo = p - r, hi = p + r;
+          box.min = {std::min(box.min.x, lo.x), std::min(box.min.y, lo.y), std::min(box.min.z, lo.z)};
+          box.max = {std::max(box.max.x, hi.x), std::max(box.max.y, hi.y), std::max(box.max.z, hi.z)};
         }
+      }
     };
     for (const BodyPose& pose : body.motion(behavior).poses) take_in(pose);
     take_in(body.standing(behavior));
@@ -56,36 +61,44 @@ StepBodyTest::StepBodyTest(const CollisionScene& scene, const BodyModel& body, d
 }
 
 bool StepBodyTest::hits(const Footstep& step) const {
-  const Extent& extent = extents_[static_cast<int>(step.behavior)];
-  // The box of the whole sweep: the body's box in its travel frame, turned
-  // to the step's heading, at both ends of the COM's chord, grown by 0.1 m
-  // (a step's COM stays within its sway of the chord).
-  const double heading = step.behavior == Behavior::kSideStep ? step.phi - 0.5 * kPi : step.phi;
-  const Vec2 along = unit(heading), across = perp(along);
-  Vec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), 0.0};
-  Vec3 hi{-lo.x, -lo.y, extent.top};
-  for (const Vec2 root : {step.com_start, step.com_end})
-    for (const double x : {extent.ahead, -extent.behind})
-      for (const double y : {extent.side, -extent.side}) {
-        const Vec2 corner = root + x * along + y * across;
-        lo = {std::min(lo.x, corner.x), std::min(lo.y, corner.y), 0.0};
-        hi = {std::max(hi.x, corner.x), std::max(hi.y, corner.y), extent.top};
-      }
-  constexpr double kSway = 0.1;  // [m]
-  if (!scene_.near({lo.x - kSway, lo.y - kSway, 0.0}, {hi.x + kSway, hi.y + kSway, hi.z})) return false;
-  BodyPose pose;
-  GroundPlacement placement;
-  const double span = step.end_time - step.start_time;
+  // The step's ends and the instants between them on the grid of
+  // 1/pose_rate s from time 0, where the plan's check (check_body) poses it.
   // A stop that leaves the COM where it is (a wait, a pivot) holds one
   // standing pose in one place: one test is all of them.
-  const bool still = step.kind == StepKind::kStop && step.com_start == step.com_end;
-  const long long count =
-      still ? 0 : std::max(1LL, static_cast<long long>(std::ceil(span * pose_rate_)));
-  for (long long k = 0; k <= count; ++k) {
-    const double share = count == 0 ? 0.0 : static_cast<double>(k) / static_cast<double>(count);
-    const double t = step.start_time + span * share;
+  thread_local std::vector<double> times;
+  times.assign(1, step.start_time);
+  if (!(step.kind == StepKind::kStop && step.com_start == step.com_end)) {
+    for (long long k = static_cast<long long>(std::floor(step.start_time * pose_rate_)) + 1;
+         static_cast<double>(k) / pose_rate_ < step.end_time; ++k)
+      times.push_back(static_cast<double>(k) / pose_rate_);
+    times.push_back(step.end_time);
+  }
+  // The COM's range at the tested times, in the travel frame at the step's
+  // start; each limb's box there is its box in the motion moved over that range.
+  const double heading = step.behavior == Behavior::kSideStep ? step.phi - 0.5 * kPi : step.phi;
+  const Vec2 along = unit(heading);
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  for (const double t : times) {
+    const Vec2 d = com_at(step, t).position - step.com_start;
+    const double x = dot(d, along), y = cross(along, d);
+    x0 = std::min(x0, x);
+    x1 = std::max(x1, x);
+    y0 = std::min(y0, y);
+    y1 = std::max(y1, y);
+  }
+  std::array<FrameBox, kLimbCount> swept = limb_boxes_[static_cast<int>(step.behavior)];
+  for (FrameBox& box : swept) {
+    box.min = box.min + Vec3{x0, y0, 0.0};
+    box.max = box.max + Vec3{x1, y1, 0.0};
+  }
+  thread_local LimbSurfaces near;
+  scene_.near_limbs(step.com_start, heading, swept, near);
+  if (near.empty()) return false;
+  BodyPose pose;
+  GroundPlacement placement;
+  for (const double t : times) {
     pose_during(body_, step, t, pose, placement);
-    if (scene_.test(pose, placement)) return true;
+    if (scene_.test(pose, placement, near)) return true;
   }
   return false;
 }

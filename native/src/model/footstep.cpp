@@ -414,6 +414,13 @@ ComSample com_at(const Footstep& step, double t) {
   return sample;
 }
 
+bool splits_on_set_off(const Footstep& walk, const FootstepState& before) {
+  const bool swung_in = !before.before_first_step && before.last_foot != walk.foot;
+  return walk.kind == StepKind::kWalk && before.standing() && !swung_in;
+}
+
+double set_off_lead(const Footstep& walk) { return std::min(kSetOffSwing, 0.5 * walk.duration()); }
+
 std::array<Footstep, 2> split_set_off(const Footstep& walk, const FootstepState& before,
                                       double lead) {
   // The walk's own COM curve, cut at the end of the start: a cubic Hermite

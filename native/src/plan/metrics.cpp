@@ -62,11 +62,6 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
   std::vector<std::size_t> around;
   std::vector<bool> colliding(n, false), present(n, true);
   std::vector<std::vector<Circle>> circles(n);
-  std::vector<char> in_3d(n);
-  for (size_t a = 0; a < n; ++a) {
-    for (const BehaviorSection& section : plan.agents[a].sections)
-      in_3d[a] = in_3d[a] || section.behavior != Behavior::kWalk;
-  }
   const double dt = 1.0 / rate;
   for (long s = 0; s < samples; ++s) {
     const double t = static_cast<double>(s) * dt;
@@ -94,13 +89,13 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
       }
       if (now && !colliding[a]) ++m.collision_episodes;
       colliding[a] = now;
-      // Our five circles against the obstacles and every other agent's. An
-      // agent with narrower sections followed them, its shoulders and arms
-      // tested in 3-D (check_body): against obstacles only its torso's centre
+      // Our five circles against the obstacles and every other agent's. The
+      // planner tests every agent's shoulders and arms in 3-D (check_body),
+      // over low obstacles too: against obstacles only its torso's centre
       // circle (the first) and its feet count.
       bool overlap = false;
       for (std::size_t c = 0; c < circles[a].size(); ++c)
-        overlap = overlap || (!(in_3d[a] && (c == 1 || c == 2)) && map.overlaps(circles[a][c]));
+        overlap = overlap || (c != 1 && c != 2 && map.overlaps(circles[a][c]));
       for (const size_t b : around) {
         if (overlap || b == a || !present[b] || distance(position[a], position[b]) > kNear)
           continue;

@@ -81,10 +81,8 @@ void split_set_offs(std::vector<Footstep>& steps, const FootstepState& start) {
   told.reserve(steps.size() + 1);
   FootstepState state = start;
   for (const Footstep& step : steps) {
-    const bool swung_in = !state.before_first_step && state.last_foot != step.foot;
-    if (step.kind == StepKind::kWalk && state.standing() && !swung_in) {
-      for (const Footstep& part :
-           split_set_off(step, state, std::min(kSetOffSwing, 0.5 * step.duration())))
+    if (splits_on_set_off(step, state)) {
+      for (const Footstep& part : split_set_off(step, state, set_off_lead(step)))
         told.push_back(part);
     } else {
       told.push_back(step);
@@ -260,6 +258,26 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
     add(create_footstep(state, {StepKind::kStop, stop_foot, phi, 0.0, params.stop_duration}, character), 0.0,
         phi);
   };
+  // Beside a narrower section's way, squared up to it: a passage barely
+  // wider than the body takes the body turned square to it (across it to
+  // side-step; in an arms-in section along it too, to walk) and on its way
+  // to within millimetres, which the tabled pivots and the steps toward the
+  // goal reach only by chance. Before the tabled pivots, so that one of
+  // those in the same cell of the seen-set gives way to it.
+  const SectionLookup* sections = search.whole ? search.whole->sections : nullptr;
+  const std::optional<WayLine> way =
+      sections && state.standing() ? sections->narrower_way(state.com) : std::nullopt;
+  if (way) {
+    const auto square_up = [&](double square) {
+      const double off = wrap_angle(square - state.facing);
+      // The nearer way round.
+      const double turn = std::fabs(off) <= 0.5 * kPi ? off : wrap_angle(off - kPi);
+      if (std::fabs(turn) > kDuplicateTurn) add_stop(wrap_angle(state.facing + turn));
+    };
+    const double along = angle_of(way->direction);
+    square_up(along + 0.5 * kPi);
+    if (way->behavior == Behavior::kArmsIn) square_up(along);
+  }
   for (const double turn : {0.0, kPivotTurn, -kPivotTurn, kMaxPivot, -kMaxPivot}) {
     if (turn != 0.0 && !state.standing()) break;
     add_stop(wrap_angle(state.facing + turn));
@@ -281,23 +299,7 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   const double skew = wrap_angle(goal_angle - across);
   if (std::fabs(skew) > kDuplicateTurn && std::fabs(skew) < 0.5 * kPi)
     add_side_step(wrap_angle(across + std::clamp(skew, -kMaxSideStepSkew, kMaxSideStepSkew)));
-  // Beside a narrower section's way, squared up to it: a passage barely
-  // wider than the body takes the body turned square to it (across it to
-  // side-step; in an arms-in section along it too, to walk) and on its way
-  // to within millimetres, which the tabled pivots and the steps toward the
-  // goal reach only by chance.
-  const SectionLookup* sections = search.whole ? search.whole->sections : nullptr;
-  const std::optional<WayLine> way = sections ? sections->narrower_way(state.com) : std::nullopt;
   if (!way) return;
-  const auto square_up = [&](double square) {
-    const double off = wrap_angle(square - state.facing);
-    // The nearer way round.
-    const double turn = std::fabs(off) <= 0.5 * kPi ? off : wrap_angle(off - kPi);
-    if (std::fabs(turn) > kDuplicateTurn) add_stop(wrap_angle(state.facing + turn));
-  };
-  const double along = angle_of(way->direction);
-  square_up(along + 0.5 * kPi);
-  if (way->behavior == Behavior::kArmsIn) square_up(along);
   // The side step that lands on the way, one side step along it (as near as
   // the skew allows).
   const double travel = 0.5 * kSideStepSpeed * params.stop_duration;
@@ -310,15 +312,8 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
 }
 
 std::optional<WholeBody> FootstepPlanner::whole_body(const SectionLookup* sections) const {
-  if (sections == nullptr || !sections->any_narrower()) return std::nullopt;
+  if (body_ == nullptr) return std::nullopt;
   return WholeBody{sections, body_};
-}
-
-void FootstepPlanner::hold_arms_in(std::vector<Footstep>& steps) const {
-  if (body_ == nullptr) return;
-  const WholeBody walking{nullptr, body_};
-  for (Footstep& step : steps)
-    if (step.kind == StepKind::kWalk && step.behavior == Behavior::kWalk) walking.passes(step);
 }
 
 SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
@@ -383,7 +378,8 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
       if (checks.step_touches_agents(step, search.nodes[search.nodes[current].parent].state,
                                      search.others) ||
           checks.hits_obstacles(step, whole != nullptr && whole->shoulders_in_3d()) ||
-          (whole != nullptr && !whole->passes(step)))
+          (whole != nullptr &&
+           !whole->passes(step, search.nodes[search.nodes[current].parent].state)))
         continue;
     }
     ++result.nodes_expanded;

@@ -98,11 +98,19 @@ bool WholeBody::label(Footstep& step) const {
   return true;
 }
 
-bool WholeBody::passes(Footstep& step) const {
-  if (body == nullptr || !body->hits(step)) return true;
+bool WholeBody::passes(Footstep& step, const FootstepState& before) const {
+  if (body == nullptr) return true;
+  // A split walk's start and rest are posed each in its own way.
+  const bool split = splits_on_set_off(step, before);
+  const auto hits = [&] {
+    if (!split) return body->hits(step);
+    const std::array<Footstep, 2> parts = split_set_off(step, before, set_off_lead(step));
+    return body->hits(parts[0]) || body->hits(parts[1]);
+  };
+  if (!hits()) return true;
   if (step.behavior != Behavior::kWalk) return false;
   step.behavior = Behavior::kArmsIn;
-  if (!body->hits(step)) return true;
+  if (!hits()) return true;
   step.behavior = Behavior::kWalk;
   return false;
 }
@@ -490,7 +498,7 @@ StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double f
   if (whole != nullptr) whole->label(stop.step);  // a stop goes anywhere
   if (step_touches_agents(stop.step, state, others) ||
       hits_obstacles(stop.step, whole != nullptr && whole->shoulders_in_3d()) ||
-      (whole != nullptr && !whole->passes(stop.step)))
+      (whole != nullptr && !whole->passes(stop.step, state)))
     stop.validity = StepValidity::kCollides;
   return stop;
 }
@@ -513,7 +521,8 @@ bool ValidityChecker::Impl::free_to_set_off(const FootstepState& rested,
   if (in_3d ? collides(rested, whole) : !room_to_turn(rested.com)) return false;
   const auto clear = [&](StepResult step, double, const detail::StepShape&) {
     if (!step.valid() || (whole != nullptr && !whole->label(step.step))) return false;
-    return !hits_obstacles(step.step, in_3d) && (whole == nullptr || whole->passes(step.step));
+    return !hits_obstacles(step.step, in_3d) &&
+           (whole == nullptr || whole->passes(step.step, rested));
   };
   if (tabled_walks(rested, Foot::kLeft, clear) || tabled_walks(rested, Foot::kRight, clear))
     return true;

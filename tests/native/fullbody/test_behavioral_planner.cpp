@@ -349,15 +349,14 @@ TEST(BehavioralFootsteps, WalkingStepsHoldTheArmsInWhereTheSwingWouldMeetABox) {
                                           0.95)};
     const CollisionScene scene(box);
     const StepBodyTest test(scene, body, 30);
-    const ObstacleMap map(box);
-    const FootstepPlanner planner(open.scenario.character, open.scenario.planner, map, &test);
     Footstep arms_in = walking;
     arms_in.behavior = Behavior::kArmsIn;
-    const Behavior expected =
-        test.hits(walking) && !test.hits(arms_in) ? Behavior::kArmsIn : Behavior::kWalk;
-    std::vector<Footstep> labelled{walking};
-    planner.hold_arms_in(labelled);
-    EXPECT_EQ(labelled.front().behavior, expected);
+    const bool holds = test.hits(walking) && !test.hits(arms_in);
+    const Behavior expected = holds ? Behavior::kArmsIn : Behavior::kWalk;
+    Footstep labelled = walking;
+    const FootstepState walking_on = state_after(FootstepState{}, steps[steps.size() / 2 - 1]);
+    EXPECT_EQ(WholeBody({nullptr, &test}).passes(labelled, walking_on), holds || !test.hits(walking));
+    EXPECT_EQ(labelled.behavior, expected);
     held += expected == Behavior::kArmsIn ? 1 : 0;
   }
   EXPECT_GE(held, 2);

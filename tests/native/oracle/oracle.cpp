@@ -30,6 +30,7 @@ std::string first_contact(const AgentPlan& plan, const CharacterParams& characte
   for (double t = 0.0; t <= end + 1e-9; t += dt) {
     const std::vector<Circle> circles = collision_circles(plan, character, t);
     for (size_t c = 0; c < circles.size(); ++c) {
+      if (c == 1 || c == 2) continue;  // the shoulders
       for (size_t o = 0; o < obstacles.size(); ++o) {
         const double gap =
             distance_to_polygon(obstacles[o].polygon, circles[c].center) - circles[c].radius;

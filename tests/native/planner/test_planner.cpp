@@ -28,6 +28,7 @@ AgentPlan plan_and_check(const Scenario& scenario) {
   const Plan plan = plan_scenario(scenario);
   const AgentPlan& agent = plan.agents.at(0);
   EXPECT_EQ(testing::first_contact(agent, scenario.character, scenario.obstacles), "");
+  EXPECT_EQ(check_body(plan).penetrations, 0);
   const CharacterParams& c = scenario.character;
   for (size_t i = 0; i < agent.footsteps.size(); ++i) {
     const Footstep& s = agent.footsteps[i];

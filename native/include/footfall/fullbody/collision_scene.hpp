@@ -2,6 +2,7 @@
 // hierarchy, for testing the body's capsules against them.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -13,6 +14,26 @@
 namespace footfall {
 
 struct CollisionTree;
+struct SceneTriangle;
+
+/// A box in a frame turned about the vertical: x along the frame's heading,
+/// y to its left, z up, from the frame's origin. [m]
+struct FrameBox {
+  Vec3 min{INFINITY, INFINITY, INFINITY};
+  Vec3 max{-INFINITY, -INFINITY, -INFINITY};
+};
+
+/// The surfaces each limb of a moving body may touch (CollisionScene::
+/// near_limbs), so that the sweep's poses are tested against those alone.
+class LimbSurfaces {
+ public:
+  /// True if no limb comes near a surface.
+  bool empty() const;
+
+ private:
+  friend class CollisionScene;
+  std::array<std::vector<const SceneTriangle*>, kLimbCount> near_;
+};
 
 /// Where a body pose meets an obstacle.
 struct Contact {
@@ -38,6 +59,16 @@ class CollisionScene {
   /// surface; with `deepest`, every limb is tested and the deepest contact
   /// returned instead.
   Contact test(const BodyPose& pose, const GroundPlacement& placement, bool deepest = false) const;
+  /// Finds for each limb the surfaces that may meet its box (`boxes`, in
+  /// the frame at `origin` turned by `heading`). Conservative: a surface
+  /// left out cannot touch the limb anywhere in its box (separating axes:
+  /// the frame's three and the triangle's normal).
+  void near_limbs(Vec2 origin, double heading, const std::array<FrameBox, kLimbCount>& boxes,
+                  LimbSurfaces& near) const;
+  /// The first limb of `pose`, placed by `placement`, that touches one of
+  /// the surfaces `near` found for it (near_limbs of a sweep holding the pose).
+  Contact test(const BodyPose& pose, const GroundPlacement& placement,
+               const LimbSurfaces& near) const;
   /// The deepest contact of one capsule (in world space) with a surface.
   Contact test(const Capsule& capsule) const;
   /// True if a triangle's bounding box meets the box [lo, hi]: a quick test

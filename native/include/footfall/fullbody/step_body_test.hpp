@@ -26,21 +26,19 @@ class StepBodyTest {
   /// `scene` and `body` must outlive the test. [pose_rate: 1 to 1000 a second]
   StepBodyTest(const CollisionScene& scene, const BodyModel& body, double pose_rate);
 
-  /// True if a pose of the step, every 1/pose_rate s and at its end, meets an
-  /// obstacle. A step whose whole sweep is far from every obstacle costs one
-  /// box query.
+  /// True if a pose of the step, at its ends and at each multiple of
+  /// 1/pose_rate s between them (where check_body poses a plan), meets an
+  /// obstacle. Only the limbs whose sweep over the step comes near a
+  /// surface are placed and tested, against those surfaces alone.
   bool hits(const Footstep& step) const;
 
  private:
   const CollisionScene& scene_;
   const BodyModel& body_;
   double pose_rate_;
-  // Per behaviour, the body's box in its travel frame over every pose [m]:
-  // how far it reaches ahead of and behind the root, to either side, and up.
-  struct Extent {
-    double ahead = 0, behind = 0, side = 0, top = 0;
-  };
-  std::array<Extent, 3> extents_{};
+  // Per behaviour, each limb's box in the travel frame over every pose and
+  // the standing one. [m]
+  std::array<std::array<FrameBox, kLimbCount>, 3> limb_boxes_{};
 };
 
 }  // namespace footfall

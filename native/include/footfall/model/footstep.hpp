@@ -219,6 +219,11 @@ ComSample com_at(const Footstep& step, double t);
 /// walk's COM, torso and feet and cost what it costs.
 std::array<Footstep, 2> split_set_off(const Footstep& walk, const FootstepState& before,
                                       double lead);
+/// True if `walk`, taken from `before`, is such a walk: a plan holds it as a
+/// start of set_off_lead(walk) seconds and the rest (split_set_off).
+bool splits_on_set_off(const Footstep& walk, const FootstepState& before);
+/// A split walk's start: kSetOffSwing, or half the walk if that is shorter. [s]
+double set_off_lead(const Footstep& walk);
 
 /// A bound on the COM's speed through a step: the largest of the velocity's
 /// Bezier control points (the curve's velocity lies in their hull). [m/s]

@@ -87,9 +87,9 @@ class FootstepPlanner {
  public:
   /// Validates both parameter sets (std::invalid_argument). `obstacles` must
   /// outlive the planner, and so must `body`: with it, every step a search
-  /// following narrower sections expands must also pass the full-body test
-  /// against the obstacles in 3-D (whole_body()), and hold_arms_in() can
-  /// test the steps of other searches.
+  /// expands must also pass the full-body test against the obstacles in 3-D
+  /// (whole_body()), a walking step labelled arms_in where only the arms
+  /// held in clear them.
   FootstepPlanner(const CharacterParams& character, const PlannerParams& planner,
                   const ObstacleMap& obstacles, const StepBodyTest* body = nullptr);
   ~FootstepPlanner();
@@ -120,15 +120,10 @@ class FootstepPlanner {
   /// The checks the search applies, for callers that check states and steps
   /// the same way (a crowd's rests, room and commits).
   const ValidityChecker& validity() const { return validity_; }
-  /// The full-body checks of a search following `sections` (SearchOptions),
-  /// for its callers' rests and waits: none unless a section is narrower
-  /// than walk.
+  /// The full-body checks of a search following `sections` (SearchOptions;
+  /// null: walk everywhere), for its callers' rests and waits: none without
+  /// a body.
   std::optional<WholeBody> whole_body(const SectionLookup* sections) const;
-  /// Labels arms_in each walking step of `steps` whose swinging arms would
-  /// meet an obstacle where holding them in clears it (with a body). Testing
-  /// every candidate of every search in 3-D instead would cost crowds among
-  /// walls and boxes half as much time again.
-  void hold_arms_in(std::vector<Footstep>& steps) const;
 
  private:
   struct Node;

@@ -58,10 +58,11 @@ struct WholeBody {
   /// Gives `step` its section's behaviour; false where it may not go (a
   /// walking step inside a side-step section).
   bool label(Footstep& step) const;
-  /// True if `step` passes the body test; a walking step whose limbs meet
-  /// an obstacle passes if it does with the arms held in, and is then
-  /// labelled arms_in.
-  bool passes(Footstep& step) const;
+  /// True if `step`, taken from `before`, passes the body test as a plan
+  /// holds it (a walk that sets off is split: split_set_off); a walking step
+  /// whose limbs meet an obstacle passes if it does with the arms held in,
+  /// and is then labelled arms_in.
+  bool passes(Footstep& step, const FootstepState& before) const;
 };
 
 /// Stop steps that bring a character to rest, and where they leave it.
