@@ -1,5 +1,5 @@
 // Footfall — the full-body planner's scenes. Sizes are the default body's
-// (clearances c1 0.21, c2 0.25, c3 0.33 m), with a few centimetres to spare.
+// (clearances c1 0.185, c2 0.25, c3 0.33 m), with a few centimetres to spare.
 #include "footfall/scenes/behavior_scenes.hpp"
 
 #include <cmath>
@@ -45,21 +45,21 @@ BehaviorScene door_scene() {
   return single(std::move(s), {-5.0, 0.0}, {3.0, 0.0});
 }
 
-BehaviorScene corridor_scene() {
+BehaviorScene corridor_scene(double last_gap) {
   Scenario s;
   add_sides(s, 0.0, 2.0, 0.29, kTall);  // arms in
   add_sides(s, 2.0, 4.5, 0.225, kKnee);  // walk: the arms swing above
-  add_sides(s, 4.5, 6.5, 0.225, kTall);  // side-step only
+  add_sides(s, 4.5, 6.5, 0.5 * last_gap, kTall);  // side-step only
   return single(std::move(s), {-2.0, 0.0}, {8.5, 0.0});
 }
 
-BehaviorScene gap_scene() {
+BehaviorScene gap_scene(double door) {
   Scenario s;
-  // A 4 x 4 m room; its east wall's door is 0.3 m wide (side-stepping needs 0.41).
+  // A 4 x 4 m room; its east wall's door (side-stepping needs 0.37 m).
   s.obstacles.push_back(box_obstacle({-2.0, 0.0}, {0.2, 4.2}, kTall));
   s.obstacles.push_back(box_obstacle({0.0, 2.0}, {4.2, 0.2}, kTall));
   s.obstacles.push_back(box_obstacle({0.0, -2.0}, {4.2, 0.2}, kTall));
-  for (Obstacle& o : wall_with_door(2.0, 0.3, 0.0, 2.1, 0.2)) {
+  for (Obstacle& o : wall_with_door(2.0, door, 0.0, 2.1, 0.2)) {
     o.height = kTall;
     s.obstacles.push_back(o);
   }

@@ -24,10 +24,11 @@ struct BehaviorScene {
 BehaviorScene door_scene();
 /// Figure 6: a corridor of three sections in a row: walls the swinging arms
 /// hit; then knee-high boxes, narrower, that the arms swing over; then walls
-/// closer than the shoulders.
-BehaviorScene corridor_scene();
-/// A room whose only door is narrower than side-stepping needs.
-BehaviorScene gap_scene();
+/// closer than the shoulders, `last_gap` apart. [m]
+BehaviorScene corridor_scene(double last_gap = 0.45);
+/// A room whose only door is `door` wide (by default narrower than
+/// side-stepping needs). [m]
+BehaviorScene gap_scene(double door = 0.3);
 /// Nothing near the way.
 BehaviorScene open_field_scene();
 /// Figures 7-8: boxes, low and tall, tables and shelves of random sizes

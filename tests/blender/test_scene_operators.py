@@ -654,7 +654,7 @@ def test_planning_an_agent_again_where_fixed_agents_walk_names_it():
 
 
 def test_an_agent_too_wide_for_the_door_is_named_with_where():
-    """A room behind a door 0.52 m wide: 'big' (scale 1.6) needs about 0.6 m
+    """A room behind a door 0.52 m wide: 'big' (scale 1.6) needs about 0.57 m
     side-stepping, 'small' walks through with its arms in, 'stroller' walks
     outside. Plan reports a WARNING naming big and the door's width, the
     panel shows it on a line of its own, and the others reach their goals."""
@@ -675,7 +675,7 @@ def test_an_agent_too_wide_for_the_door_is_named_with_where():
     stand_in = RecordingOperator(selected_only=False)
     check(scene_operators.FOOTFALL_OT_plan.execute(stand_in, bpy.context) == {"FINISHED"}, "plan failed")
     (levels, message), = stand_in.reports
-    said = "'big' cannot reach its goal: the way at (5.10, 0.00) is 0.52 m wide, its body needs 0.6"
+    said = "'big' cannot reach its goal: the way at (5.10, 0.00) is 0.52 m wide, its body needs 0.57"
     check(levels == {"WARNING"} and said in message and "2/3 agents reached their goals" in message, message)
     check(any(line.startswith(said) for line in panel_lines()), panel_lines())
     plan = plan_store.load_plan()

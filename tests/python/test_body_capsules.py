@@ -104,9 +104,3 @@ def test_lateral_extent_is_the_widest_reach_across():
     pose = {limb: [0, 0, 0, 0, 0, 1, 0.1] for limb in LIMBS}
     pose["forearm_left"] = [0, 0.2, 1, 0.1, 0.3, 0.8, 0.05]
     assert body_capsules.lateral_extent([pose]) == pytest.approx(0.35)
-
-
-def test_half_width_is_half_the_whole_width_across():
-    pose = {limb: [0, -0.1, 0, 0, -0.1, 1, 0.1] for limb in LIMBS}  # from -0.2 ...
-    pose["foot_left"] = [0, 0.1, 0, 0, 0.15, 0, 0.05]  # ... to 0.2
-    assert body_capsules.half_width([pose]) == pytest.approx(0.2)

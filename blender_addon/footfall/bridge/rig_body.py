@@ -129,9 +129,7 @@ def measured(rig, profile) -> Tuple[Optional[dict], List[str]]:
     built-in body."""
     body, fallbacks = measure(rig, profile)
     notes = _fallback_notes(fallbacks)
-    # As the core derives the clearances: a side step's width is centred on its way.
-    extents = {b: (body_capsules.half_width if b == "side_step" else body_capsules.lateral_extent)(
-        body["poses"][b]) for b in PLANNED_BEHAVIORS}
+    extents = {b: body_capsules.lateral_extent(body["poses"][b]) for b in PLANNED_BEHAVIORS}
     widths = ", ".join(f"{b} {extents[b]:.2f} m" for b in reversed(PLANNED_BEHAVIORS))
     if not extents["side_step"] < extents["arms_in"] < extents["walk"]:
         return None, notes + [f"body: its clips do not narrow from walk to arms in to side step (across the way: "

@@ -239,11 +239,3 @@ def lateral_extent(poses: Sequence[Mapping[str, Sequence[float]]]) -> float:
     """The farthest any capsule's surface reaches across the way (|y|) in
     the travel frame, over the poses [limb: ax, ay, az, bx, by, bz, r]."""
     return max(max(abs(c[1]), abs(c[4])) + c[6] for pose in poses for c in pose.values())
-
-
-def half_width(poses: Sequence[Mapping[str, Sequence[float]]]) -> float:
-    """Half the whole width across the way (y) of the poses' capsules: the
-    reach of a side-stepping body, which the planner centres on its way."""
-    lo = min(min(c[1], c[4]) - c[6] for pose in poses for c in pose.values())
-    hi = max(max(c[1], c[4]) + c[6] for pose in poses for c in pose.values())
-    return 0.5 * (hi - lo)

@@ -73,13 +73,6 @@ BodyPose standing_pose(const BehaviorMotion& motion) {
   return pose;
 }
 
-// Moves every capsule of `motion` `middle` metres back across the way.
-void centre_across(BehaviorMotion& motion, double middle) {
-  const Vec3 shift{0.0, -middle, 0.0};
-  for (BodyPose& pose : motion.poses)
-    for (Capsule& c : pose) c = {c.a + shift, c.b + shift, c.radius};
-}
-
 }  // namespace
 
 void validate(const BehaviorMotion& motion, const std::string& path) {
@@ -103,14 +96,11 @@ void validate(const BehaviorMotion& motion, const std::string& path) {
   }
 }
 
-AcrossExtent across_extent(const BehaviorMotion& motion) {
-  AcrossExtent extent{INFINITY, -INFINITY};
+double lateral_extent(const BehaviorMotion& motion) {
+  double extent = 0;
   for (const BodyPose& pose : motion.poses)
     for (const Capsule& c : pose)
-      for (const Vec3 p : {c.a, c.b}) {
-        extent.lo = std::min(extent.lo, p.y - c.radius);
-        extent.hi = std::max(extent.hi, p.y + c.radius);
-      }
+      extent = std::max({extent, std::fabs(c.a.y) + c.radius, std::fabs(c.b.y) + c.radius});
   return extent;
 }
 
@@ -126,11 +116,8 @@ BodyModel::BodyModel(const CharacterParams& character) {
       validate(given, std::string("character.behaviors.") + to_string(behavior));
       motions_[i] = given;
     }
-    const AcrossExtent across = across_extent(motions_[i]);
-    const bool side = behavior == Behavior::kSideStep;
-    if (side) centre_across(motions_[i], across.middle());
-    clearances_[i] = overrides[i] > 0 ? overrides[i]
-                                      : (side ? across.half() : across.from_root()) + kClearanceMargin;
+    clearances_[i] =
+        overrides[i] > 0 ? overrides[i] : lateral_extent(motions_[i]) + kClearanceMargin;
     standing_[i] = standing_pose(motions_[i]);
   }
   const double c1 = clearance(Behavior::kSideStep), c2 = clearance(Behavior::kArmsIn),

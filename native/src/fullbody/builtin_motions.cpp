@@ -206,6 +206,19 @@ BehaviorMotion builtin_motion(Behavior behavior, const CharacterParams& characte
                                 : walk_pose(body, character, phase,
                                             behavior == Behavior::kArmsIn));
   }
+  if (side) {
+    // Centre the body across the way: the toes reach further forward than the back.
+    double lo = INFINITY, hi = -INFINITY;
+    for (const BodyPose& pose : motion.poses)
+      for (const Capsule& c : pose)
+        for (const Vec3 p : {c.a, c.b}) {
+          lo = std::min(lo, p.y - c.radius);
+          hi = std::max(hi, p.y + c.radius);
+        }
+    const Vec3 shift{0, -0.5 * (lo + hi), 0};
+    for (BodyPose& pose : motion.poses)
+      for (Capsule& c : pose) c = {c.a + shift, c.b + shift, c.radius};
+  }
   return motion;
 }
 

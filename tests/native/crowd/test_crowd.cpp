@@ -15,6 +15,7 @@
 #include "footfall/plan/plan.hpp"
 #include "footfall/io/plan_file.hpp"
 #include "footfall/fullbody/behavioral_planner.hpp"
+#include "footfall/fullbody/body_check.hpp"
 #include "footfall/scenes/scenes.hpp"
 #include "footfall/io/steersuite.hpp"
 #include "model/contact.hpp"
@@ -40,14 +41,16 @@ void expect_smooth_motion(const AgentPlan& agent, const CharacterParams& shared)
 }
 
 /// Plans `scenario` and checks that every agent reached its goals with no
-/// overlap under the five-circle model and no SteerBench collision episode,
-/// moving smoothly (expect_smooth_motion).
+/// overlap under the five-circle model, no limb in an obstacle (the
+/// full-body check) and no SteerBench collision episode, moving smoothly
+/// (expect_smooth_motion).
 Plan plan_clear_of_each_other(const Scenario& scenario, int threads = 1) {
   RunControl control;
   control.threads = threads;
   const Plan plan = plan_scenario(scenario, control);
   const PlanMetrics metrics = measure_plan(plan);
   EXPECT_EQ(metrics.overlaps, 0);
+  EXPECT_EQ(check_body(plan).penetrations, 0);  // no limb in an obstacle
   for (std::size_t i = 0; i < plan.agents.size(); ++i) {
     EXPECT_EQ(plan.agents[i].status, AgentStatus::kReached)
         << plan.agents[i].name << ": " << plan.agents[i].reason;

@@ -231,12 +231,14 @@ TEST(BehavioralFootsteps, TheDoorIsWalkedThroughWithTheArmsIn) {
 // The corridor's footsteps, following its sections: arms in along the first
 // passage (0.58 m), walking between the knee-high sides (0.45 m; the
 // side-step section starts some 0.6 m before the tall sides, where the
-// character turns), then turned across the last passage (0.45 m, tall) and
-// stepping sideways; the
+// character turns), then turned across the last passage (tall; 0.45 m, and
+// 1.5 times the chest's depth, 0.39 m) and stepping sideways; the
 // character may stand in passages too narrow to turn in, and no limb enters
 // an obstacle. Each section is entered: the character reaches the goal.
-TEST(BehavioralFootsteps, TheCorridorIsWalkedArmsInThenWalkingThenSideStepping) {
-  const BehaviorScene scene = corridor_scene();
+class CorridorFootsteps : public ::testing::TestWithParam<double> {};
+
+TEST_P(CorridorFootsteps, TheCorridorIsWalkedArmsInThenWalkingThenSideStepping) {
+  const BehaviorScene scene = corridor_scene(GetParam() * CharacterParams{}.chest_depth);
   const Plan plan = plan_scenario(scene.scenario);
   const AgentPlan& agent = plan.agents.front();
   EXPECT_EQ(agent.status, AgentStatus::kReached);
@@ -260,6 +262,36 @@ TEST(BehavioralFootsteps, TheCorridorIsWalkedArmsInThenWalkingThenSideStepping) 
   for (const Footstep& step : agent.footsteps) lateral += step.kind == StepKind::kSideStep ? 1 : 0;
   EXPECT_GE(lateral, 6);  // 1.4 m in steps of 0.25 m at most
   EXPECT_EQ(check_body(plan).penetrations, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(LastGapOverChestDepth, CorridorFootsteps,
+                         ::testing::Values(0.45 / 0.26, 1.5));
+
+// The side-stepping body is centred on its way: from the back of its chest
+// to its toes it is 0.33 m wide, and its clearance keeps 2 cm more each
+// side. The only door of a room 5 cm wider than that is side-stepped
+// through; one 1 cm narrower than the body has no way for it, and the walker
+// says so and stands inside.
+TEST(BehavioralFootsteps, ADoorNarrowerThanTheSideSteppingBodyIsRefused) {
+  const double width =
+      2.0 * lateral_extent(BodyModel(CharacterParams{}).motion(Behavior::kSideStep));
+  EXPECT_NEAR(width, 0.33, 0.005);
+  for (const double door : {width + 0.05, width - 0.01}) {
+    SCOPED_TRACE(door);
+    const BehaviorScene scene = gap_scene(door);
+    const bool passes = door > width;
+    Planning setup(scene.scenario);
+    EXPECT_EQ(setup.planner.plan(scene.start, scene.goals[0]).status,
+              passes ? BehaviorPathStatus::kFound : BehaviorPathStatus::kNoPath);
+    const Plan plan = plan_scenario(scene.scenario);
+    const AgentPlan& agent = plan.agents.front();
+    EXPECT_EQ(agent.status, passes ? AgentStatus::kReached : AgentStatus::kPartial);
+    EXPECT_EQ(agent.reason, passes ? "" : "unreachable");
+    EXPECT_EQ(agent.narrowest.has_value(), !passes);
+    if (!passes) EXPECT_NEAR(agent.narrowest->width, door, 0.02);
+    EXPECT_EQ(agent.footsteps.back().com_end.x < 2.0, !passes);
+    EXPECT_EQ(check_body(plan).penetrations, 0);
+  }
 }
 
 // A passage a few millimetres wider than the side-on body and metres deep,

@@ -23,14 +23,12 @@ TEST(BodyModel, BuiltInMotionsHaveTheCharactersMeasures) {
   const BehaviorMotion walk = builtin_motion(Behavior::kWalk, c);
   const BehaviorMotion arms_in = builtin_motion(Behavior::kArmsIn, c);
   const BehaviorMotion side = builtin_motion(Behavior::kSideStep, c);
-  EXPECT_NEAR(across_extent(walk).from_root(), 0.5 * c.arm_swing_width, 1e-9);  // the swing's widest
-  EXPECT_NEAR(across_extent(arms_in).from_root(), 0.5 * c.shoulder_width, 1e-9);
-  // Turned across the way, the body reaches from the back of its chest to
-  // its toes, 0.2 m ahead of the ankles under the COM: the knees, kept in
+  EXPECT_NEAR(lateral_extent(walk), 0.5 * c.arm_swing_width, 1e-9);  // the swing's widest
+  EXPECT_NEAR(lateral_extent(arms_in), 0.5 * c.shoulder_width, 1e-9);
+  // Turned across the way and centred on it, the body reaches from the back
+  // of its chest to its toes, 0.2 m ahead of the ankles: the knees, kept in
   // by the swinging hip rising, and the hands reach less far.
-  const AcrossExtent across = across_extent(side);
-  EXPECT_NEAR(across.lo, -0.5 * c.chest_depth, 1e-9);
-  EXPECT_NEAR(across.hi, 0.75 * 0.152 * c.body_height, 1e-9);
+  EXPECT_NEAR(2.0 * lateral_extent(side), 0.5 * c.chest_depth + 0.75 * 0.152 * c.body_height, 1e-9);
   for (const auto* m : {&walk, &arms_in, &side}) {
     EXPECT_NEAR(top_of(*m), c.body_height, 1e-9);
     EXPECT_EQ(m->poses.size(), static_cast<std::size_t>(kBuiltinPhases));

@@ -2,7 +2,6 @@
 // (built in, or sampled from the rig's clips) and each behaviour's clearance.
 #pragma once
 
-#include <algorithm>
 #include <array>
 
 #include "footfall/model/body.hpp"
@@ -20,24 +19,13 @@ constexpr int kBuiltinPhases = 32;
 /// turns the body across the direction of travel and steps sideways.
 BehaviorMotion builtin_motion(Behavior behavior, const CharacterParams& character);
 
-/// How far a motion's body reaches across the direction of travel (its y),
-/// over every pose: the least and the greatest y of any capsule's surface. [m]
-struct AcrossExtent {
-  double lo = 0, hi = 0;
-  /// The largest distance from the root.
-  double from_root() const { return std::max(-lo, hi); }
-  /// Half the whole width: the reach from its middle.
-  double half() const { return 0.5 * (hi - lo); }
-  /// The middle, from the root.
-  double middle() const { return 0.5 * (lo + hi); }
-};
-AcrossExtent across_extent(const BehaviorMotion& motion);
+/// The lateral half-extent of a motion: the largest distance across the
+/// direction of travel from the root to the surface of any capsule, over
+/// every pose. [m]
+double lateral_extent(const BehaviorMotion& motion);
 
 /// The character's three motions and their clearances c1 < c2 < c3
-/// (side_step < arms_in < walk): a walk's is its reach across the way from
-/// the root. A side step turns the body across the way: its motion is moved
-/// across so that its whole width (back to chest, heels to toes) is centred
-/// on the root, and its clearance is half that width.
+/// (side_step < arms_in < walk).
 class BodyModel {
  public:
   /// Takes the character's motions (built in where it gives none) and the
