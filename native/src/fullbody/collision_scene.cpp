@@ -108,13 +108,6 @@ CollisionScene& CollisionScene::operator=(CollisionScene&&) noexcept = default;
 
 std::size_t CollisionScene::triangle_count() const { return tree_->triangles.size(); }
 
-bool CollisionScene::near(Vec3 lo, Vec3 hi) const {
-  Box3 box;
-  box.take_in(lo);
-  box.take_in(hi);
-  return tree_->visit(box, [](const SceneTriangle&) { return true; });
-}
-
 void CollisionScene::near_limbs(Vec2 origin, double heading,
                                 const std::array<FrameBox, kLimbCount>& boxes,
                                 LimbSurfaces& near) const {
@@ -143,6 +136,7 @@ void CollisionScene::near_limbs(Vec2 origin, double heading,
                                    in_frame(t.corners[1], origin, along),
                                    in_frame(t.corners[2], origin, along)};
     const Vec3 n{dot(ground(t.normal), along), cross(along, ground(t.normal)), t.normal.z};
+    if (!may_meet({all.min - room, all.max + room}, q, n)) return false;
     for (int limb = 0; limb < kLimbCount; ++limb) {
       const FrameBox grown{boxes[limb].min - room, boxes[limb].max + room};
       if (may_meet(grown, q, n)) near.near_[limb].push_back(&t);
@@ -153,9 +147,15 @@ void CollisionScene::near_limbs(Vec2 origin, double heading,
 
 Contact CollisionScene::test(const BodyPose& pose, const GroundPlacement& placement,
                              const LimbSurfaces& near) const {
+  // The turn's cosine and sine, found once for every limb.
+  const Vec2 along = unit(placement.heading);
+  const auto place = [&](Vec3 p) {
+    return Vec3{placement.position.x + along.x * p.x - along.y * p.y,
+                placement.position.y + along.y * p.x + along.x * p.y, p.z};
+  };
   for (int limb = 0; limb < kLimbCount; ++limb) {
     if (near.near_[limb].empty()) continue;
-    const Capsule placed = placement.apply(pose[limb]);
+    const Capsule placed{place(pose[limb].a), place(pose[limb].b), pose[limb].radius};
     Contact contact;
     double best_squared = placed.radius * placed.radius;
     for (const SceneTriangle* t : near.near_[limb])

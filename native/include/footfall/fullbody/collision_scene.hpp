@@ -71,9 +71,6 @@ class CollisionScene {
                const LimbSurfaces& near) const;
   /// The deepest contact of one capsule (in world space) with a surface.
   Contact test(const Capsule& capsule) const;
-  /// True if a triangle's bounding box meets the box [lo, hi]: a quick test
-  /// that nothing lies near a region. [m]
-  bool near(Vec3 lo, Vec3 hi) const;
   /// Number of triangles.
   std::size_t triangle_count() const;
 
