@@ -228,8 +228,10 @@ std::array<FootPose, 2> feet_during(const AgentPlan& plan, int k, double t) {
   // a lead-in at the start of its own step, the other foot still planted.
   double stance_start = step.start_time;
   const bool swung_in = k > 0 && steps[k - 1].foot != step.foot;
-  const bool moves =
-      !(before.position == step.foot_position) || before.orientation != step.foot_orientation;
+  // To a nanometre and a nanoradian: the orientations chosen over a whole
+  // plan may differ from the standing one in the last bit.
+  const bool moves = distance(before.position, step.foot_position) > 1e-9 ||
+                     std::fabs(wrap_angle(before.orientation - step.foot_orientation)) > 1e-9;
   if (!swung_in && moves && step.kind != StepKind::kStart) {
     const double lead = std::min(kSetOffSwing, 0.5 * step.duration());
     if (t < step.start_time + lead) {
