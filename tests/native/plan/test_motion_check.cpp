@@ -2,6 +2,8 @@
 // step boundaries, and stance feet that move.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "footfall/model/footstep.hpp"
 #include "footfall/plan/motion_check.hpp"
 #include "plan/action_plan.hpp"
@@ -51,6 +53,22 @@ TEST(MotionCheck, AStartedWalkMovesSmoothly) {
   started.footsteps[0].foot_orientation += 0.3;
   EXPECT_LT(check_motion(started).stance_slide, 1e-9);
   EXPECT_TRUE(feet_at(started, 0.1)[static_cast<int>(started.footsteps[0].foot)].planted);
+}
+
+// A first wait whose foot orientation the post-process chose a bit off the
+// standing one's (a crowd's box field, seed 190) keeps that foot planted: it
+// was swung in a lead-in, a slide of 1e-6 m in check_motion. A turn of a
+// millionth of a radian is a pivot and swings it.
+TEST(MotionCheck, AFootTurnedByARoundingErrorStaysPlanted) {
+  AgentPlan waited = plan_of({{StepKind::kStop, Foot::kLeft, 0.0, 0.0, 0.5},
+                              {StepKind::kWalk, Foot::kRight, 0.04, 1.3, 0.5}});
+  double& turned = waited.footsteps[0].foot_orientation;
+  const double standing = turned;
+  turned = std::nextafter(standing, 1.0);
+  EXPECT_TRUE(feet_at(waited, 0.05)[0].planted);
+  EXPECT_LT(check_motion(waited).stance_slide, 1e-9);
+  turned = standing + 1e-6;
+  EXPECT_FALSE(feet_at(waited, 0.05)[0].planted);
 }
 
 }  // namespace
