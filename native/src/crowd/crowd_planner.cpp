@@ -871,9 +871,12 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     choose_foot_orientations(w.plan.footsteps, w.plan.start.foot_orientation,
                              w.planner->character());
     // Steps not from a search (a first turn, a rest) take their sections' too;
-    // those the search gave a narrower one (the arms held in) keep it.
+    // those the search gave a narrower one (the arms held in) keep it, even
+    // where the sections now say side_step: the others were checked against
+    // the arms-in torso, narrower than a side-stepping one.
     for (Footstep& step : w.plan.footsteps)
-      step.behavior = std::max(step.behavior, w.sections->of(step));
+      if (step.behavior != Behavior::kArmsIn)
+        step.behavior = std::max(step.behavior, w.sections->of(step));
     w.plan.sections = w.sections->sections();
     w.plan.character = w.spec->character;
     w.plan.scale = w.spec->scale;
