@@ -117,12 +117,7 @@ void CollisionScene::near_limbs(Vec2 origin, double heading,
   constexpr double kRoom = 1e-9;  // [m]
   const Vec3 room{kRoom, kRoom, kRoom};
   FrameBox all;
-  for (const FrameBox& b : boxes) {
-    all.min = {std::min(all.min.x, b.min.x), std::min(all.min.y, b.min.y),
-               std::min(all.min.z, b.min.z)};
-    all.max = {std::max(all.max.x, b.max.x), std::max(all.max.y, b.max.y),
-               std::max(all.max.z, b.max.z)};
-  }
+  for (const FrameBox& b : boxes) all.take_in(b.min, b.max);
   const Vec2 along = unit(heading), left = perp(along);
   Box3 world;
   for (const double x : {all.min.x, all.max.x})

@@ -46,13 +46,8 @@ StepBodyTest::StepBodyTest(const CollisionScene& scene, const BodyModel& body, d
     const auto take_in = [&](const BodyPose& pose) {
       for (int limb = 0; limb < kLimbCount; ++limb) {
         const Capsule& c = pose[limb];
-        FrameBox& box = boxes[limb];
-        for (const Vec3 p : {c.a, c.b}) {
-          const Vec3 r{c.radius, c.radius, c.radius};
-          const Vec3 lo = p - r, hi = p + r;
-          box.min = {std::min(box.min.x, lo.x), std::min(box.min.y, lo.y), std::min(box.min.z, lo.z)};
-          box.max = {std::max(box.max.x, hi.x), std::max(box.max.y, hi.y), std::max(box.max.z, hi.z)};
-        }
+        const Vec3 r{c.radius, c.radius, c.radius};
+        for (const Vec3 p : {c.a, c.b}) boxes[limb].take_in(p - r, p + r);
       }
     };
     for (const BodyPose& pose : body.motion(behavior).poses) take_in(pose);

@@ -233,7 +233,7 @@ std::array<FootPose, 2> feet_during(const AgentPlan& plan, int k, double t) {
   const bool moves = distance(before.position, step.foot_position) > 1e-9 ||
                      std::fabs(wrap_angle(before.orientation - step.foot_orientation)) > 1e-9;
   if (!swung_in && moves && step.kind != StepKind::kStart) {
-    const double lead = std::min(kSetOffSwing, 0.5 * step.duration());
+    const double lead = set_off_lead(step);
     if (t < step.start_time + lead) {
       feet[stepping] = swing(before, step, (t - step.start_time) / lead);
       return feet;

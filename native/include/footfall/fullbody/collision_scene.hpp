@@ -2,6 +2,7 @@
 // hierarchy, for testing the body's capsules against them.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <memory>
@@ -21,6 +22,11 @@ struct SceneTriangle;
 struct FrameBox {
   Vec3 min{INFINITY, INFINITY, INFINITY};
   Vec3 max{-INFINITY, -INFINITY, -INFINITY};
+
+  void take_in(Vec3 lo, Vec3 hi) {
+    min = {std::min(min.x, lo.x), std::min(min.y, lo.y), std::min(min.z, lo.z)};
+    max = {std::max(max.x, hi.x), std::max(max.y, hi.y), std::max(max.z, hi.z)};
+  }
 };
 
 /// The surfaces each limb of a moving body may touch (CollisionScene::
