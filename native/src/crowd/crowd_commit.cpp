@@ -5,6 +5,21 @@
 
 namespace footfall::crowd {
 
+namespace {
+
+/// A wait of `duration` for walker w standing where its plan ends, in the
+/// posture its last step holds: every other plan was checked against it
+/// standing so past that end. Nothing moves, so nothing is checked (labelled
+/// anew, a wait could stand side-on where its rest stood arms in, and fail).
+StepResult stand_on(const Walker& w, const CharacterParams& character, double duration) {
+  StepResult wait = create_footstep(
+      w.state, {StepKind::kStop, other(w.state.last_foot), w.state.facing, 0.0, duration}, character);
+  if (!w.plan.footsteps.empty()) wait.step.behavior = w.plan.footsteps.back().behavior;
+  return wait;
+}
+
+}  // namespace
+
 void rest_until(Walker& w, const FootstepPlanner& planner, double t) {
   if (w.resting > 0) {
     w.state = w.rested;
@@ -13,8 +28,11 @@ void rest_until(Walker& w, const FootstepPlanner& planner, double t) {
   const std::optional<WholeBody> following = planner.whole_body(w.following());
   bool waited = false;
   while (w.state.time < t) {
-    const StepResult wait = planner.validity().stop_step(
-        w.state, std::min(t - w.state.time, kMaxWait), {}, following ? &*following : nullptr);
+    const double duration = std::min(t - w.state.time, kMaxWait);
+    const StepResult wait =
+        w.state.standing()
+            ? stand_on(w, planner.character(), duration)
+            : planner.validity().stop_step(w.state, duration, {}, following ? &*following : nullptr);
     if (!wait.valid()) break;
     w.plan.footsteps.push_back(wait.step);
     w.state = wait.state;

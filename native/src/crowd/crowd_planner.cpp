@@ -870,13 +870,15 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     w.plan.stuck_at = w.resting > 0 ? w.rested.com : w.state.com;
     choose_foot_orientations(w.plan.footsteps, w.plan.start.foot_orientation,
                              w.planner->character());
-    // Steps not from a search (a first turn, a rest) take their sections' too;
-    // those the search gave a narrower one (the arms held in) keep it, even
-    // where the sections now say side_step: the others were checked against
-    // the arms-in torso, narrower than a side-stepping one.
-    for (Footstep& step : w.plan.footsteps)
-      if (step.behavior != Behavior::kArmsIn)
-        step.behavior = std::max(step.behavior, w.sections->of(step));
+    // Without the full-body test the steps take their sections' behaviours
+    // (those a search gave the arms in keep them: the others were checked
+    // against that narrower torso). With it every step keeps the posture it
+    // was tested in: sections added later (annotate_anew()) would turn a wait
+    // side-on, its limbs where none was tested.
+    if (!w.planner->tests_body())
+      for (Footstep& step : w.plan.footsteps)
+        if (step.behavior != Behavior::kArmsIn)
+          step.behavior = std::max(step.behavior, w.sections->of(step));
     w.plan.sections = w.sections->sections();
     w.plan.character = w.spec->character;
     w.plan.scale = w.spec->scale;

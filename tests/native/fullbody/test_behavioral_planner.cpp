@@ -288,7 +288,9 @@ TEST(BehavioralFootsteps, ADoorNarrowerThanTheSideSteppingBodyIsRefused) {
     EXPECT_EQ(agent.status, passes ? AgentStatus::kReached : AgentStatus::kPartial);
     EXPECT_EQ(agent.reason, passes ? "" : "unreachable");
     EXPECT_EQ(agent.narrowest.has_value(), !passes);
-    if (!passes) EXPECT_NEAR(agent.narrowest->width, door, 0.02);
+    if (!passes) {
+      EXPECT_NEAR(agent.narrowest->width, door, 0.02);
+    }
     EXPECT_EQ(agent.footsteps.back().com_end.x < 2.0, !passes);
     EXPECT_EQ(check_body(plan).penetrations, 0);
   }

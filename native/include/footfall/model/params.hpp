@@ -227,8 +227,9 @@ struct ParamTable<PlannerParams> {
             "way is the annotated one, its steps take their sections' behaviours (the arms in "
             "narrow the torso; only lateral steps inside side-step sections), its shoulders "
             "are judged by the full-body test alone, and it may rest where it cannot turn. "
-            "0: steps follow the mesh's way and are labelled from the sections afterwards "
-            "(docs/full-body.md)."),
+            "0: steps follow the mesh's way, each labelled with the behaviour the full-body "
+            "test passed it in (walk, arms_in where only that passes, side_step for lateral "
+            "steps; docs/full-body.md)."),
       StructListParam<S, Gait>{"gaits", &S::gaits, 1, 16, "gaits",
                                "Gaits tried at every expansion. Three are enough with the "
                                "goal-directed phi (section 4); more cost time, not quality."},

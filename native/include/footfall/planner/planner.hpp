@@ -124,6 +124,9 @@ class FootstepPlanner {
   /// null: walk everywhere), for its callers' rests and waits: none without
   /// a body.
   std::optional<WholeBody> whole_body(const SectionLookup* sections) const;
+  /// True if every step it gives passed the full-body test, in the
+  /// behaviour it is labelled with.
+  bool tests_body() const { return body_ != nullptr; }
 
  private:
   struct Node;
