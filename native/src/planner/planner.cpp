@@ -45,6 +45,20 @@ std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, F
          static_cast<std::uint64_t>(last_foot) << 48 | 1ull << 63;
 }
 
+// True if `step`, taken from `before`, keeps clear of `others`; a walking
+// step that would touch one passes if it keeps clear with the arms held in
+// (the torso as narrow as the shoulders), and is then labelled arms_in, as
+// people squeezing past one another do.
+bool passes_others(const ValidityChecker::Impl& checks, Footstep& step,
+                   const FootstepState& before, detail::SampledAgents& others) {
+  if (!checks.step_touches_agents(step, before, others)) return true;
+  if (step.kind != StepKind::kWalk || step.behavior != Behavior::kWalk) return false;
+  step.behavior = Behavior::kArmsIn;
+  if (!checks.step_touches_agents(step, before, others)) return true;
+  step.behavior = Behavior::kWalk;
+  return false;
+}
+
 // The search took walking agents' rests to end after their grace; nothing
 // returned may rely on that, so the steps stop before the first that runs
 // into one taken for good.
@@ -370,16 +384,14 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
          search.nodes.size() < kMaxSearchNodes) {
     const int current = search.pop();
     // Collisions are checked lazily, when a node is taken off the open list:
-    // most generated nodes are never expanded.
-    // Following narrower sections, every step is tested whole, in 3-D, and
-    // its shoulders against obstacles only so.
+    // most generated nodes are never expanded. With a body, every step is
+    // tested whole, in 3-D, and its shoulders against obstacles only so.
     if (current != 0) {
       Footstep& step = search.nodes[current].step;
-      if (checks.step_touches_agents(step, search.nodes[search.nodes[current].parent].state,
-                                     search.others) ||
+      const FootstepState& before = search.nodes[search.nodes[current].parent].state;
+      if (!passes_others(checks, step, before, search.others) ||
           checks.hits_obstacles(step, whole != nullptr && whole->shoulders_in_3d()) ||
-          (whole != nullptr &&
-           !whole->passes(step, search.nodes[search.nodes[current].parent].state)))
+          (whole != nullptr && !whole->passes(step, before)))
         continue;
     }
     ++result.nodes_expanded;

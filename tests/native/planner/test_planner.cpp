@@ -482,9 +482,10 @@ TEST(Planner, ARestLeavesRoomToTurnAmongOtherAgents) {
 }
 
 // Another agent walks across the way and its plan ends where it crosses it.
-// Taken to stand there for good, its rest is walked round; taken for a
-// second only (a crowd's rests are provisional: the agent plans on), the
-// search goes straight on, and its steps are cut before the rest.
+// Taken to stand there for good, its rest is walked round (the arms held in
+// as it passes); taken for a second only (a crowd's rests are provisional:
+// the agent plans on), the search goes straight on, and its steps are cut
+// before the rest.
 TEST(Planner, AWalkingAgentsRestStandsForItsGraceOnly) {
   const CharacterParams character;
   const ObstacleMap none;
@@ -501,7 +502,7 @@ TEST(Planner, AWalkingAgentsRestStandsForItsGraceOnly) {
   };
   const SearchResult round = planner.plan(start, {12, 0}, {&crossing});
   EXPECT_EQ(round.status, Status::kSuccess);
-  EXPECT_GT(widest(round), 0.6);
+  EXPECT_GT(widest(round), 0.42);
   SearchOptions options;
   options.rest_grace = 1.0;
   const SearchResult straight = planner.plan(start, {12, 0}, {&crossing}, options);
