@@ -121,6 +121,28 @@ TEST(Commit, RestUntilLetsTheProvisionalRestHappen) {
   EXPECT_EQ(w.state.com, a.rest.state.com);
 }
 
+// rest_until: a wait stands as the rest before it stood, arms held in or
+// side-on: everyone else was checked against it standing so. (Labelled anew
+// from sections added since, a wait stood otherwise, could fail the
+// full-body test, and the plan stopped short of t: among boxes, the next
+// search began 29 s in the past and walked it into another agent.)
+TEST(Commit, RestUntilWaitsInTheRestsPosture) {
+  for (const Behavior posture : {Behavior::kArmsIn, Behavior::kSideStep}) {
+    SCOPED_TRACE(to_string(posture));
+    OpenGround crowd = crowd_with({});
+    Attempt a = crowd.attempt(0, {3, 0});
+    for (Footstep& stop : a.rest.steps) stop.behavior = posture;
+    ASSERT_EQ(crowd.propose_and_commit(0, a, {}, 0.0), -1);
+    Walker& w = crowd.walkers[0];
+    const std::size_t steps = w.plan.footsteps.size();
+    rest_until(w, crowd.planner, a.rest.state.time + 7.0);
+    ASSERT_EQ(w.plan.footsteps.size(), steps + 2);  // 5 + 2 s
+    for (std::size_t k = steps; k < w.plan.footsteps.size(); ++k)
+      EXPECT_EQ(w.plan.footsteps[k].behavior, posture);
+    EXPECT_NEAR(w.state.time, a.rest.state.time + 7.0, 1e-9);
+  }
+}
+
 // What a search finds beside one standing close (0.5 m apart, within the
 // check's padding) passes the commit check: both take the gap where the pair
 // last stood still. A pivot may turn a shoulder nearer first; with the gap

@@ -341,22 +341,6 @@ TEST(Crowd, AStuckAgentFollowsItsWayAnnotatedAnew) {
   plan_clear_of_each_other(box_field_crowd_scenario(500, 700, 190), 2);
 }
 
-// Seed 28 among 700 boxes, following sections: agent302 rested in a gap,
-// its last wait labelled arms_in; a wait after it, labelled anew from
-// sections added since, stood side-on, failed the full-body test, and its
-// plan stopped growing at 31.35 s. Its next search, at 60.25 s, began at
-// 31.35 s, behind what every other agent had already planned round it
-// standing still: agent307 was walking into it (18 overlap samples). A wait
-// now stands as the rest before it did, and the search starts now.
-TEST(Crowd, AWaitKeepsThePostureItsRestWasTestedIn) {
-  const Scenario scenario = box_field_crowd_scenario(500, 700, 28);
-  RunControl control;
-  control.threads = 2;
-  const Plan plan = plan_scenario(scenario, control);
-  EXPECT_EQ(measure_plan(plan).overlaps, 0);
-  EXPECT_EQ(check_body(plan).penetrations, 0);
-}
-
 // The crowd's checks take their bounds from PlanBounds, and pass over pairs
 // whose COM boxes keep apart: each must hold what it bounds, or a touch goes
 // unseen; and the bounds from a time hold those from any later time, as a
