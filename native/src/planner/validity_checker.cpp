@@ -283,7 +283,7 @@ bool ValidityChecker::Impl::touches_agents(const Footstep& step, detail::Sampled
   thread_local std::vector<Instant> mine;
   mine.assign(static_cast<std::size_t>(last - first + 1), Instant{});
   const auto torso_offsets =
-      torso_circles({0.0, 0.0}, step.phi, character_, 0.0, step.behavior);  // as above
+      torso_circles({0.0, 0.0}, step.phi, character_, 0.0, torso_width_of(step));  // as above
   const auto instant = [&](long k) -> const Instant& {
     Instant& sample = mine[static_cast<std::size_t>(k - first)];
     if (!sample.sampled) {

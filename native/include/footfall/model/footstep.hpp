@@ -239,6 +239,13 @@ double com_stray(const Footstep& step);
 std::array<Circle, 3> torso_circles(Vec2 com, double facing, const CharacterParams& character,
                                     double pad = 0.0, Behavior behavior = Behavior::kWalk);
 
+/// The width a step's torso circles take among other agents: its behaviour's,
+/// but a stop's body stands (coming to rest, waiting, pivoting), its arms
+/// hanging, no wider than the shoulders: as with the arms in.
+inline Behavior torso_width_of(const Footstep& step) {
+  return step.kind == StepKind::kStop ? Behavior::kArmsIn : step.behavior;
+}
+
 /// The state at the end of `step` taken from `state`: the COM where the step
 /// leaves it, its foot planted, the torso facing the step's phi.
 FootstepState state_after(const FootstepState& state, const Footstep& step);
