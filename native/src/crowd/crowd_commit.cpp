@@ -12,8 +12,9 @@ namespace {
 /// standing so past that end. Nothing moves, so nothing is checked (labelled
 /// anew, a wait could stand side-on where its rest stood arms in, and fail).
 StepResult stand_on(const Walker& w, const CharacterParams& character, double duration) {
-  StepResult wait = create_footstep(
-      w.state, {StepKind::kStop, other(w.state.last_foot), w.state.facing, 0.0, duration}, character);
+  const FootstepAction wait_there{StepKind::kStop, other(w.state.last_foot), w.state.facing, 0.0,
+                                  duration};
+  StepResult wait = create_footstep(w.state, wait_there, character);
   if (!w.plan.footsteps.empty()) wait.step.behavior = w.plan.footsteps.back().behavior;
   return wait;
 }
@@ -29,10 +30,10 @@ void rest_until(Walker& w, const FootstepPlanner& planner, double t) {
   bool waited = false;
   while (w.state.time < t) {
     const double duration = std::min(t - w.state.time, kMaxWait);
-    const StepResult wait =
-        w.state.standing()
-            ? stand_on(w, planner.character(), duration)
-            : planner.validity().stop_step(w.state, duration, {}, following ? &*following : nullptr);
+    const StepResult wait = w.state.standing()
+                                ? stand_on(w, planner.character(), duration)
+                                : planner.validity().stop_step(w.state, duration, {},
+                                                               following ? &*following : nullptr);
     if (!wait.valid()) break;
     w.plan.footsteps.push_back(wait.step);
     w.state = wait.state;

@@ -269,8 +269,9 @@ int circles_during(const AgentPlan& plan, int k, const CharacterParams& shared, 
   const auto& steps = plan.footsteps;
   const bool started = !steps.empty() && t >= steps.front().start_time;
   const Vec2 com = steps.empty() ? plan.start.com : com_at(steps[k], t).position;
-  const auto torso = started ? torso_circles(com, steps[k].phi, character, 0.0, torso_width_of(steps[k]))
-                             : torso_circles(com, plan.start.facing, character);
+  const Footstep* step = started ? &steps[k] : nullptr;
+  const auto torso = step ? torso_circles(com, step->phi, character, 0.0, torso_width_of(*step))
+                          : torso_circles(com, plan.start.facing, character);
   int count = 0;
   for (const Circle& circle : torso) out[count++] = circle;
   for (const FootPose& foot : started ? feet_during(plan, k, t) : standing_feet(plan)) {
