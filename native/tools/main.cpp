@@ -169,13 +169,12 @@ void warn_of_overlaps(const footfall::Plan& plan, const std::vector<std::string>
   }
 }
 
-// Names the agents that stand short of a goal no way leads to for their
-// bodies, and where their ways are too narrow.
-void warn_of_unreachable(const footfall::Plan& plan, std::ostream& out) {
+// Names the agents that stand short of their goals, where and why: a way
+// too narrow for their bodies, walled in by others until their time limits...
+void warn_of_short(const footfall::Plan& plan, std::ostream& out) {
   for (const footfall::AgentPlan& agent : plan.agents)
-    if (agent.narrowest)
-      out << "footfall: " << user_text(agent.name) << " " << unreachable_text(*agent.narrowest)
-          << "\n";
+    if (agent.status != footfall::AgentStatus::kReached)
+      out << "footfall: " << user_text(agent.name) << " " << short_of_goal_text(agent) << "\n";
 }
 
 // The named agents planned again among the others' plans in `fixed` (read
@@ -231,7 +230,7 @@ int plan_and_write(const footfall::Scenario& scenario, const Options& options) {
             << " ms each\n";
   std::cout << "plan written to " << output << "\n";
   if (!options.fixed.empty()) warn_of_overlaps(plan, options.agents, std::cerr);
-  warn_of_unreachable(plan, std::cerr);
+  warn_of_short(plan, std::cerr);
   if (!options.glb.empty()) footfall::tools::animate_and_write(plan, options.animate, options.glb, std::cout);
   return 0;
 }

@@ -256,6 +256,32 @@ def test_an_agent_planned_again_where_fixed_agents_walk_is_named(cli, tmp_path):
     assert "five-circle overlaps: 0" not in run(cli, "metrics", str(again)).stdout
 
 
+def test_an_agent_walled_in_by_another_until_its_time_limit_is_named_where_it_stands(cli, tmp_path):
+    """A corridor 0.9 m wide, shut behind the walker; another stands in it
+    for good: the walker comes up behind and stands there until its time
+    limit, and one line on standard error says where and why."""
+    def box(x0, y0, x1, y1):
+        return {"polygon": [[x0, y0], [x1, y0], [x1, y1], [x0, y1]], "height": 2.0}
+
+    scenario = tmp_path / "walled.json"
+    scenario.write_text(scenario_json(
+        obstacles=[box(-1, 0.45, 12, 0.8), box(-1, -0.8, 12, -0.45), box(-1.3, -0.8, -1, 0.8)],
+        agents=[{"name": "walled", "position": [0, 0], "goals": [[10, 0]], "time_limit": 20},
+                {"name": "blocker", "position": [4, 0], "goals": [[4.5, 0]]}]))
+    out = tmp_path / "walled-plan.json"
+    result = run(cli, "plan", str(scenario), "-o", str(out))
+    assert result.returncode == 0, result.stderr
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1, result.stderr
+    match = re.fullmatch(r"footfall: 'walled' stands at \((-?[\d.]+), (-?[\d.]+)\) short of its goal: "
+                         r"its time limit ran out", lines[0])
+    assert match, lines[0]
+    walled = json.loads(out.read_text())["agents"][0]
+    assert walled["reason"] == "time limit"
+    assert [float(match[1]), float(match[2])] == pytest.approx(walled["stopped_at"], abs=0.005)
+    assert 3.3 < float(match[1]) < 4.2, "it stands behind the other, not back where it started"
+
+
 def test_an_agent_that_cannot_reach_its_goal_is_named_with_the_narrowest_place(cli, tmp_path):
     """The slot is 0.25 m wide; the side-stepping body needs about 0.37 m:
     one line on standard error says so, the plan file says where, and the

@@ -23,6 +23,18 @@ std::string unreachable_text(const Narrowest& narrowest) {
   return head + text;
 }
 
+std::string short_of_goal_text(const AgentPlan& agent) {
+  if (agent.narrowest) return unreachable_text(*agent.narrowest);
+  const char* why = agent.reason == "time limit" ? "its time limit ran out"
+                    : agent.reason == "stuck"    ? "no step it could take led on"
+                    : agent.reason == "cancelled" ? "planning was cancelled"
+                                                  : agent.reason.c_str();
+  char at[80];
+  std::snprintf(at, sizeof at, "stands at (%.2f, %.2f) short of its goal: ", agent.stuck_at.x,
+                agent.stuck_at.y);
+  return at + std::string(why);
+}
+
 double AgentPlan::total_cost() const {
   double sum = 0.0;
   for (const Footstep& step : footsteps) sum += step.cost.total();

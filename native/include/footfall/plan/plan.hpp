@@ -47,6 +47,14 @@ struct Narrowest {
 /// needs 0.42 m side-stepping" (or "...: no way leads there" for width 0).
 std::string unreachable_text(const Narrowest& narrowest);
 
+struct AgentPlan;
+
+/// Why a partial agent stands short of its goals, for the user: its
+/// unreachable_text, or "stands at (1.20, 3.40) short of its goal: its time
+/// limit ran out" (walled in by others, or too slow for its way), "...: no
+/// step it could take led on" (stuck) or "...: planning was cancelled".
+std::string short_of_goal_text(const AgentPlan& agent);
+
 struct AgentPlan {
   std::string name;                            ///< The agent's name.
   AgentStatus status = AgentStatus::kPartial;  ///< Reached or partial.
