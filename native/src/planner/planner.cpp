@@ -305,8 +305,8 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
   // gap narrower than the shoulders leads to a local goal in sight beyond it;
   // out of a slot's end, toward a goal round the corner).
   if (!state.standing()) return;
-  const auto add_side_step = [&](double way) {
-    add(checks.side_step(state, way), kSideStepSpeed, state.facing);
+  const auto add_side_step = [&](double direction) {
+    add(checks.side_step(state, direction), kSideStepSpeed, state.facing);
   };
   const double across = wrap_angle(state.facing + outward_sign(stop_foot) * 0.5 * kPi);
   add_side_step(across);
