@@ -1,0 +1,102 @@
+// Footfall — the walkable ground of a scene (a scenario's "ground"): prisms
+// whose tops are floors, treads, platforms and decks, and meshes whose
+// upward-facing triangles are ramps, hills and scanned terrain. Indexed for
+// the questions a footstep planner asks of the ground under a point: which
+// levels lie there, which one is near a height, how much of a sole it holds.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "footfall/model/geometry3.hpp"
+#include "footfall/model/obstacles.hpp"
+
+namespace footfall {
+
+/// A ground surface: a prism (polygon, `height` of the top walked on, `base`
+/// of its underside; height may be 0 or negative) or a mesh. The same shapes
+/// as obstacles, read from the same fields.
+using GroundSurface = Obstacle;
+
+/// A ground surface as a scenario gives it: a prism from `base` (default
+/// min(0, height)) to `height`.
+GroundSurface ground_prism(std::vector<Vec2> polygon, double height);
+
+/// The ground at a point: the height of one walkable face there, its upward
+/// unit normal and the surface it belongs to.
+struct GroundPoint {
+  double z = 0;   ///< [m]
+  Vec3 normal;    ///< Unit, normal.z > 0.
+  int surface = -1;  ///< Index into Ground::surfaces().
+};
+
+/// A sole on the ground: a rectangle `length` along `heading` by `width`,
+/// centred on `centre`, lying in the plane through `centre` with `normal`.
+struct Sole {
+  Vec3 centre;         ///< [m]
+  Vec3 normal{0, 0, 1};  ///< Unit, normal.z > 0.
+  double heading = 0;  ///< [rad]
+  double length = 0;   ///< Heel to toe. [m]
+  double width = 0;    ///< [m]
+};
+
+/// The walkable ground, indexed. Immutable after construction, so it can be
+/// shared between threads.
+class Ground {
+ public:
+  /// At most this many triangles over all meshes: a bound on the index's
+  /// memory (some 100 bytes a triangle) and the time to build it.
+  static constexpr std::size_t kMaxTriangles = 2'000'000;
+  /// Within this height of each other, faces over a point are one level
+  /// (the triangles either side of a shared edge). [m]
+  static constexpr double kSameLevel = 1e-3;
+
+  /// Checks and indexes `surfaces`; throws std::invalid_argument naming the
+  /// field ("ground[3].polygon[1]: ...", "ground[0].mesh.triangles[7][2]:
+  /// ...", "ground: ... triangles, at most ..."). No surfaces: no ground.
+  explicit Ground(std::vector<GroundSurface> surfaces = {});
+
+  /// True if the scene has no ground given (the plane z = 0 is its floor).
+  bool empty() const { return surfaces_.empty(); }
+  const std::vector<GroundSurface>& surfaces() const { return surfaces_; }
+  /// Walkable faces indexed: prism tops and upward-facing triangles.
+  std::size_t face_count() const { return faces_.size(); }
+
+  /// Every level of walkable ground over `p`, lowest first.
+  std::vector<GroundPoint> levels_at(Vec2 p) const;
+  /// The level over `p` nearest the height `z`, if one lies within `reach`.
+  std::optional<GroundPoint> level_near(Vec2 p, double z, double reach) const;
+  /// The share of `sole` (sampled on a 7 x 4 grid) over a walkable face
+  /// within `tolerance` of the sole's plane, on a slope whose normal has at
+  /// least `min_normal_z` (the cosine of the steepest walkable slope). [0, 1]
+  double support(const Sole& sole, double tolerance, double min_normal_z) const;
+
+ private:
+  struct Face {
+    int surface = -1;
+    int triangle = -1;  ///< Into the mesh's triangles; -1 for a prism's top.
+    Vec3 normal;        ///< Unit, upward.
+    double d = 0;       ///< The face's plane: dot(normal, x) = d.
+  };
+  /// Faces whose boxes span at most a few cells of a level's size are kept
+  /// in that level's cells; the levels' cells grow by kLevelRatio.
+  struct IndexLevel {
+    double cell = 0;  ///< [m]
+    std::unordered_map<std::uint64_t, std::vector<int>> cells;
+  };
+
+  void add_face(Face face, Vec2 low, Vec2 high);
+  bool contains(const Face& face, Vec2 p) const;
+  double height_of(const Face& face, Vec2 p) const;
+  template <class Visit>
+  void visit_faces_at(Vec2 p, Visit&& visit) const;
+
+  std::vector<GroundSurface> surfaces_;
+  std::vector<Face> faces_;
+  std::vector<IndexLevel> index_;
+};
+
+}  // namespace footfall

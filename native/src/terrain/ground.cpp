@@ -1,0 +1,194 @@
+#include "footfall/terrain/ground.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace footfall {
+namespace {
+
+constexpr double kFirstCell = 0.5;  // [m] about two soles: treads, a height field's triangles
+constexpr double kLevelRatio = 4.0;
+constexpr double kMaxHeight = 1000.0;  // [m] as obstacles' heights
+constexpr double kMinNormalZ = 1e-9;   // a face steeper than this stands on edge: none to stand on
+constexpr int kAlong = 7, kAcross = 4;  // the sole's sample grid
+
+[[noreturn]] void refuse(const std::string& field, const std::string& what) {
+  throw std::invalid_argument(field + ": " + what);
+}
+
+std::string number_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+void validate_prism(const GroundSurface& prism, const std::string& name) {
+  if (prism.polygon.size() < 3)
+    refuse(name + ".polygon", "needs at least 3 points, got " + std::to_string(prism.polygon.size()));
+  for (std::size_t k = 0; k < prism.polygon.size(); ++k)
+    if (!in_world(prism.polygon[k]))
+      refuse(name + ".polygon[" + std::to_string(k) + "]",
+             "coordinates must be finite numbers within 1e9 m of the origin");
+  if (!(std::isfinite(prism.height) && std::fabs(prism.height) <= kMaxHeight))
+    refuse(name + ".height", "must be in [-1000, 1000] m, got " + number_text(prism.height));
+  if (!(std::isfinite(prism.base) && prism.base >= -kMaxHeight && prism.base <= prism.height))
+    refuse(name + ".base", "must be in [-1000, height] = [-1000, " + number_text(prism.height) +
+                               "] m, got " + number_text(prism.base));
+}
+
+std::uint64_t cell_key(std::int64_t ix, std::int64_t iy) {
+  return static_cast<std::uint64_t>(static_cast<std::uint32_t>(ix)) << 32 |
+         static_cast<std::uint32_t>(iy);
+}
+
+// Even-odd rule, as obstacles' footprints.
+bool inside_polygon(const std::vector<Vec2>& polygon, Vec2 p) {
+  bool inside = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const Vec2 a = polygon[i], b = polygon[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x))
+      inside = !inside;
+  }
+  return inside;
+}
+
+}  // namespace
+
+GroundSurface ground_prism(std::vector<Vec2> polygon, double height) {
+  return prism(std::move(polygon), height, std::min(0.0, height));
+}
+
+Ground::Ground(std::vector<GroundSurface> surfaces) : surfaces_(std::move(surfaces)) {
+  std::size_t triangles = 0;
+  for (std::size_t i = 0; i < surfaces_.size(); ++i) {
+    const std::string name = "ground[" + std::to_string(i) + "]";
+    if (surfaces_[i].is_mesh()) {
+      validate(surfaces_[i], name);
+      triangles += surfaces_[i].mesh.triangles.size();
+    } else {
+      validate_prism(surfaces_[i], name);
+    }
+  }
+  if (triangles > kMaxTriangles)
+    refuse("ground", std::to_string(triangles) + " triangles in all meshes, at most " +
+                         std::to_string(kMaxTriangles));
+  for (std::size_t i = 0; i < surfaces_.size(); ++i) {
+    const GroundSurface& surface = surfaces_[i];
+    const int index = static_cast<int>(i);
+    if (!surface.is_mesh()) {
+      Vec2 low = surface.polygon[0], high = low;
+      for (const Vec2 p : surface.polygon) {
+        low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+        high = {std::max(high.x, p.x), std::max(high.y, p.y)};
+      }
+      add_face({index, -1, {0, 0, 1}, surface.height}, low, high);
+      continue;
+    }
+    const std::vector<Vec3>& v = surface.mesh.vertices;
+    for (std::size_t t = 0; t < surface.mesh.triangles.size(); ++t) {
+      const auto& [i0, i1, i2] = surface.mesh.triangles[t];
+      const Vec3 n = cross(v[i1] - v[i0], v[i2] - v[i0]);
+      const double size = length(n);
+      if (!(size > 0.0) || n.z <= kMinNormalZ * size) continue;  // on edge, facing down, no area
+      const Vec3 normal = (1.0 / size) * n;
+      const Vec2 low{std::min({v[i0].x, v[i1].x, v[i2].x}), std::min({v[i0].y, v[i1].y, v[i2].y})};
+      const Vec2 high{std::max({v[i0].x, v[i1].x, v[i2].x}), std::max({v[i0].y, v[i1].y, v[i2].y})};
+      add_face({index, static_cast<int>(t), normal, dot(normal, v[i0])}, low, high);
+    }
+  }
+}
+
+void Ground::add_face(Face face, Vec2 low, Vec2 high) {
+  const int id = static_cast<int>(faces_.size());
+  faces_.push_back(face);
+  // The first level whose cells are at least half the box's larger side:
+  // the box then spans at most 3 x 3 of them.
+  const double side = std::max(high.x - low.x, high.y - low.y);
+  std::size_t level = 0;
+  double cell = kFirstCell;
+  while (cell < 0.5 * side) {
+    cell *= kLevelRatio;
+    ++level;
+  }
+  while (index_.size() <= level)
+    index_.push_back({kFirstCell * std::pow(kLevelRatio, static_cast<double>(index_.size())), {}});
+  IndexLevel& at = index_[level];
+  const auto first = [&](double x) { return static_cast<std::int64_t>(std::floor(x / at.cell)); };
+  for (std::int64_t ix = first(low.x); ix <= first(high.x); ++ix)
+    for (std::int64_t iy = first(low.y); iy <= first(high.y); ++iy)
+      at.cells[cell_key(ix, iy)].push_back(id);
+}
+
+bool Ground::contains(const Face& face, Vec2 p) const {
+  const GroundSurface& surface = surfaces_[face.surface];
+  if (face.triangle < 0) return inside_polygon(surface.polygon, p);
+  const auto& [i0, i1, i2] = surface.mesh.triangles[face.triangle];
+  const Vec2 a = ground(surface.mesh.vertices[i0]), b = ground(surface.mesh.vertices[i1]),
+             c = ground(surface.mesh.vertices[i2]);
+  // Upward faces wind counter-clockwise seen from above; edges count as inside.
+  return cross(b - a, p - a) >= 0.0 && cross(c - b, p - b) >= 0.0 && cross(a - c, p - c) >= 0.0;
+}
+
+double Ground::height_of(const Face& face, Vec2 p) const {
+  return (face.d - face.normal.x * p.x - face.normal.y * p.y) / face.normal.z;
+}
+
+template <class Visit>
+void Ground::visit_faces_at(Vec2 p, Visit&& visit) const {
+  for (const IndexLevel& level : index_) {
+    const auto cell = level.cells.find(cell_key(static_cast<std::int64_t>(std::floor(p.x / level.cell)),
+                                                static_cast<std::int64_t>(std::floor(p.y / level.cell))));
+    if (cell == level.cells.end()) continue;
+    for (const int id : cell->second)
+      if (contains(faces_[id], p)) visit(faces_[id]);
+  }
+}
+
+std::vector<GroundPoint> Ground::levels_at(Vec2 p) const {
+  std::vector<GroundPoint> all;
+  visit_faces_at(p, [&](const Face& face) {
+    all.push_back({height_of(face, p), face.normal, face.surface});
+  });
+  std::sort(all.begin(), all.end(),
+            [](const GroundPoint& a, const GroundPoint& b) { return a.z < b.z; });
+  std::vector<GroundPoint> levels;
+  for (const GroundPoint& point : all)
+    if (levels.empty() || point.z - levels.back().z > kSameLevel) levels.push_back(point);
+  return levels;
+}
+
+std::optional<GroundPoint> Ground::level_near(Vec2 p, double z, double reach) const {
+  std::optional<GroundPoint> nearest;
+  visit_faces_at(p, [&](const Face& face) {
+    const double h = height_of(face, p);
+    if (std::fabs(h - z) <= reach && (!nearest || std::fabs(h - z) < std::fabs(nearest->z - z)))
+      nearest = GroundPoint{h, face.normal, face.surface};
+  });
+  return nearest;
+}
+
+double Ground::support(const Sole& sole, double tolerance, double min_normal_z) const {
+  const Vec2 along = unit(sole.heading), across = perp(along);
+  int held = 0;
+  for (int i = 0; i < kAlong; ++i) {
+    for (int j = 0; j < kAcross; ++j) {
+      const Vec2 offset = ((i + 0.5) / kAlong - 0.5) * sole.length * along +
+                          ((j + 0.5) / kAcross - 0.5) * sole.width * across;
+      const Vec2 p = ground(sole.centre) + offset;
+      // The sole's plane over p.
+      const double plane =
+          sole.centre.z - (sole.normal.x * offset.x + sole.normal.y * offset.y) / sole.normal.z;
+      bool supported = false;
+      visit_faces_at(p, [&](const Face& face) {
+        supported = supported || (face.normal.z >= min_normal_z &&
+                                  std::fabs(height_of(face, p) - plane) <= tolerance);
+      });
+      held += supported ? 1 : 0;
+    }
+  }
+  return static_cast<double>(held) / (kAlong * kAcross);
+}
+
+}  // namespace footfall
