@@ -11,8 +11,8 @@ namespace {
 constexpr double kFirstCell = 0.5;  // [m] about two soles: treads, a height field's triangles
 constexpr double kLevelRatio = 4.0;
 constexpr double kMaxHeight = 1000.0;  // [m] as obstacles' heights
-constexpr double kMinNormalZ = 1e-9;   // a face steeper than this stands on edge: none to stand on
-constexpr int kAlong = 7, kAcross = 4;  // the sole's sample grid
+constexpr double kMinNormalZ = 1e-9;   // a face steeper than this stands on edge: no footprint
+constexpr int kSoleRows = 7, kSoleColumns = 4;  // the sole's sample grid
 
 [[noreturn]] void refuse(const std::string& field, const std::string& what) {
   throw std::invalid_argument(field + ": " + what);
@@ -83,7 +83,7 @@ Ground::Ground(std::vector<GroundSurface> surfaces) : surfaces_(std::move(surfac
         low = {std::min(low.x, p.x), std::min(low.y, p.y)};
         high = {std::max(high.x, p.x), std::max(high.y, p.y)};
       }
-      add_face({index, -1, {0, 0, 1}, surface.height}, low, high);
+      add_face({index, -1, {0, 0, 1}, surface.height, true}, low, high);
       continue;
     }
     const std::vector<Vec3>& v = surface.mesh.vertices;
@@ -91,11 +91,11 @@ Ground::Ground(std::vector<GroundSurface> surfaces) : surfaces_(std::move(surfac
       const auto& [i0, i1, i2] = surface.mesh.triangles[t];
       const Vec3 n = cross(v[i1] - v[i0], v[i2] - v[i0]);
       const double size = length(n);
-      if (!(size > 0.0) || n.z <= kMinNormalZ * size) continue;  // on edge, facing down, no area
+      if (!(size > 0.0) || std::fabs(n.z) <= kMinNormalZ * size) continue;  // on edge, no area
       const Vec3 normal = (1.0 / size) * n;
       const Vec2 low{std::min({v[i0].x, v[i1].x, v[i2].x}), std::min({v[i0].y, v[i1].y, v[i2].y})};
       const Vec2 high{std::max({v[i0].x, v[i1].x, v[i2].x}), std::max({v[i0].y, v[i1].y, v[i2].y})};
-      add_face({index, static_cast<int>(t), normal, dot(normal, v[i0])}, low, high);
+      add_face({index, static_cast<int>(t), normal, dot(normal, v[i0]), normal.z > 0.0}, low, high);
     }
   }
 }
@@ -103,6 +103,7 @@ Ground::Ground(std::vector<GroundSurface> surfaces) : surfaces_(std::move(surfac
 void Ground::add_face(Face face, Vec2 low, Vec2 high) {
   const int id = static_cast<int>(faces_.size());
   faces_.push_back(face);
+  walkable_faces_ += face.walkable ? 1 : 0;
   // The first level whose cells are at least half the box's larger side:
   // the box then spans at most 3 x 3 of them.
   const double side = std::max(high.x - low.x, high.y - low.y);
@@ -127,8 +128,20 @@ bool Ground::contains(const Face& face, Vec2 p) const {
   const auto& [i0, i1, i2] = surface.mesh.triangles[face.triangle];
   const Vec2 a = ground(surface.mesh.vertices[i0]), b = ground(surface.mesh.vertices[i1]),
              c = ground(surface.mesh.vertices[i2]);
-  // Upward faces wind counter-clockwise seen from above; edges count as inside.
-  return cross(b - a, p - a) >= 0.0 && cross(c - b, p - b) >= 0.0 && cross(a - c, p - c) >= 0.0;
+  // Upward faces wind counter-clockwise seen from above, downward ones
+  // clockwise; edges count as inside.
+  const double side = face.normal.z > 0.0 ? 1.0 : -1.0;
+  return side * cross(b - a, p - a) >= 0.0 && side * cross(c - b, p - b) >= 0.0 &&
+         side * cross(a - c, p - c) >= 0.0;
+}
+
+bool Ground::covers(const Face& face, Vec2 p, double z, double top) const {
+  if (face.triangle < 0) {
+    const GroundSurface& prism = surfaces_[face.surface];
+    return prism.height > z && prism.base < top;
+  }
+  const double h = height_of(face, p);
+  return h > z && h <= top;
 }
 
 double Ground::height_of(const Face& face, Vec2 p) const {
@@ -149,7 +162,7 @@ void Ground::visit_faces_at(Vec2 p, Visit&& visit) const {
 std::vector<GroundPoint> Ground::levels_at(Vec2 p) const {
   std::vector<GroundPoint> all;
   visit_faces_at(p, [&](const Face& face) {
-    all.push_back({height_of(face, p), face.normal, face.surface});
+    if (face.walkable) all.push_back({height_of(face, p), face.normal, face.surface});
   });
   std::sort(all.begin(), all.end(),
             [](const GroundPoint& a, const GroundPoint& b) { return a.z < b.z; });
@@ -159,11 +172,24 @@ std::vector<GroundPoint> Ground::levels_at(Vec2 p) const {
   return levels;
 }
 
+std::vector<GroundPoint> Ground::standable_at(Vec2 p, double headroom) const {
+  std::vector<GroundPoint> levels = levels_at(p);
+  const auto covered = [&](const GroundPoint& level) {
+    bool any = false;
+    visit_faces_at(p, [&](const Face& face) {
+      any = any || covers(face, p, level.z + kSameLevel, level.z + headroom);
+    });
+    return any;
+  };
+  levels.erase(std::remove_if(levels.begin(), levels.end(), covered), levels.end());
+  return levels;
+}
+
 std::optional<GroundPoint> Ground::level_near(Vec2 p, double z, double reach) const {
   std::optional<GroundPoint> nearest;
   visit_faces_at(p, [&](const Face& face) {
     const double h = height_of(face, p);
-    if (std::fabs(h - z) <= reach && (!nearest || std::fabs(h - z) < std::fabs(nearest->z - z)))
+    if (face.walkable && std::fabs(h - z) <= reach && (!nearest || std::fabs(h - z) < std::fabs(nearest->z - z)))
       nearest = GroundPoint{h, face.normal, face.surface};
   });
   return nearest;
@@ -172,23 +198,23 @@ std::optional<GroundPoint> Ground::level_near(Vec2 p, double z, double reach) co
 double Ground::support(const Sole& sole, double tolerance, double min_normal_z) const {
   const Vec2 along = unit(sole.heading), across = perp(along);
   int held = 0;
-  for (int i = 0; i < kAlong; ++i) {
-    for (int j = 0; j < kAcross; ++j) {
-      const Vec2 offset = ((i + 0.5) / kAlong - 0.5) * sole.length * along +
-                          ((j + 0.5) / kAcross - 0.5) * sole.width * across;
+  for (int i = 0; i < kSoleRows; ++i) {
+    for (int j = 0; j < kSoleColumns; ++j) {
+      const Vec2 offset = ((i + 0.5) / kSoleRows - 0.5) * sole.length * along +
+                          ((j + 0.5) / kSoleColumns - 0.5) * sole.width * across;
       const Vec2 p = ground(sole.centre) + offset;
       // The sole's plane over p.
       const double plane =
           sole.centre.z - (sole.normal.x * offset.x + sole.normal.y * offset.y) / sole.normal.z;
       bool supported = false;
       visit_faces_at(p, [&](const Face& face) {
-        supported = supported || (face.normal.z >= min_normal_z &&
+        supported = supported || (face.walkable && face.normal.z >= min_normal_z &&
                                   std::fabs(height_of(face, p) - plane) <= tolerance);
       });
       held += supported ? 1 : 0;
     }
   }
-  return static_cast<double>(held) / (kAlong * kAcross);
+  return static_cast<double>(held) / (kSoleRows * kSoleColumns);
 }
 
 }  // namespace footfall

@@ -50,7 +50,7 @@ std::string refusal(std::vector<GroundSurface> surfaces) {
 
 TEST(Ground, EachTreadIsALevelAtItsHeightAndBesideTheFlightThereIsNone) {
   const Ground ground(flight(5));
-  EXPECT_EQ(ground.face_count(), 6u);
+  EXPECT_EQ(ground.walkable_faces(), 6u);
   for (int k = 0; k < 5; ++k) {
     const std::vector<GroundPoint> levels = ground.levels_at({0.3 * k + 0.15, 0.5});
     ASSERT_EQ(levels.size(), 1u) << "tread " << k;
@@ -79,7 +79,7 @@ TEST(Ground, TrianglesFacingDownOrStandingOnEdgeAreNotWalkedOn) {
   wall.mesh.vertices = {{0, 0, 0}, {2, 0, 0}, {2, 0, 2}};
   wall.mesh.triangles = {{0, 1, 2}};
   const Ground ground({ramp(false), wall});
-  EXPECT_EQ(ground.face_count(), 0u);
+  EXPECT_EQ(ground.walkable_faces(), 0u);
   EXPECT_TRUE(ground.levels_at({2.0, 0.0}).empty());
 }
 
@@ -120,6 +120,80 @@ TEST(Ground, OnARampASoleAlongTheSlopeIsHeldAndAFlatOneOrATooSteepSlopeIsNot) {
   EXPECT_DOUBLE_EQ(
       ground.support(sole_at({2, 0, under.z}, 0.0, under.normal), 0.02, std::cos(10 * M_PI / 180)),
       0.0);
+}
+
+/// Total length of the walls whose middles satisfy `where`.
+template <class Where>
+double wall_length(const std::vector<GroundWall>& walls, Where&& where) {
+  double sum = 0.0;
+  for (const GroundWall& wall : walls)
+    if (where(0.5 * (wall.a + wall.b))) sum += distance(wall.a, wall.b);
+  return sum;
+}
+
+TEST(Ground, AFloorUnderAPlatformOrATooLowDeckIsCoveredAndUnderAHighDeckItIsNot) {
+  const Ground ground({ground_prism(rectangle(-10, -10, 10, 10), 0.0),
+                       ground_prism(rectangle(-8, -8, -6, -6), 0.8),
+                       prism(rectangle(0, -10, 2, 10), 1.2, 1.0),
+                       prism(rectangle(5, -10, 7, 10), 4.5, 4.3)});
+  ASSERT_EQ(ground.levels_at({-7, -7}).size(), 2u);
+  ASSERT_EQ(ground.standable_at({-7, -7}, 1.75).size(), 1u);
+  EXPECT_DOUBLE_EQ(ground.standable_at({-7, -7}, 1.75)[0].z, 0.8);
+  ASSERT_EQ(ground.standable_at({1, 0}, 1.75).size(), 1u);
+  EXPECT_DOUBLE_EQ(ground.standable_at({1, 0}, 1.75)[0].z, 1.2) << "under 1 m of headroom";
+  ASSERT_EQ(ground.standable_at({6, 0}, 1.75).size(), 2u) << "4.3 m of headroom";
+}
+
+TEST(Ground, AFlightIsWalledAtItsSidesAndOpenAtEveryTreadWithinTheStep) {
+  std::vector<GroundSurface> surfaces = flight(5);
+  surfaces.push_back(ground_prism(rectangle(1.5, -1, 4, 1), 0.85));  // the landing
+  const Ground ground(surfaces);
+  const auto across_the_flight = [](Vec2 m) {
+    return m.x > -4.99 && m.x < 3.99 && std::fabs(m.y) < 0.99;
+  };
+  const std::vector<GroundWall> walls = ground.walls(0.25, 1.75);
+  EXPECT_EQ(wall_length(walls, across_the_flight), 0.0);
+  // Its sides, from the first tread to the landing, both sides.
+  EXPECT_NEAR(wall_length(walls, [](Vec2 m) { return m.x > 0 && m.x < 1.5; }), 3.0, 1e-9);
+  // All round: floor, flight and landing, 9 m by 2 m.
+  EXPECT_NEAR(wall_length(walls, [](Vec2) { return true; }), 22.0, 1e-9);
+  // Risers of 0.17 m are walls to a body that steps 0.15 m at most: the
+  // five below the landing, each seen from the tread above and below.
+  EXPECT_NEAR(wall_length(ground.walls(0.15, 1.75), across_the_flight), 2.0 * 5 * 2, 1e-9);
+}
+
+TEST(Ground, APlatformTooHighToStepIsReachedByTheRampBesideIt) {
+  GroundSurface up;  // 0 to 0.8 m over x 0-4, 2 m wide
+  up.mesh.vertices = {{0, -1, 0}, {4, -1, 0.8}, {4, 1, 0.8}, {0, 1, 0}};
+  up.mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const Ground ground({ground_prism(rectangle(-5, -5, 10, 5), 0.0),
+                       ground_prism(rectangle(4, -5, 10, 5), 0.8), up});
+  EXPECT_EQ(ground.standable_at({2, 0}, 1.75).size(), 1u) << "the floor under the ramp is covered";
+  const std::vector<GroundWall> walls = ground.walls(0.25, 1.75);
+  // The platform's edge is a wall but where the ramp meets it.
+  EXPECT_NEAR(wall_length(walls, [](Vec2 m) { return std::fabs(m.x - 4) < 0.01; }), 8.0, 1e-9);
+  // The ramp's sides are walls where it is a step above the floor: from
+  // x = 0.25 / 0.2 = 1.25 m on (to the sample's 5 cm).
+  const double sides =
+      wall_length(walls, [](Vec2 m) { return std::fabs(std::fabs(m.y) - 1) < 0.01 && m.x < 4; });
+  EXPECT_NEAR(sides, 2 * (4 - 1.25), 0.1);
+  // Across the ramp's two ends, none.
+  EXPECT_EQ(wall_length(walls, [](Vec2 m) { return std::fabs(m.y) < 0.99 && m.x > -4.99 && m.x < 9.99; }),
+            0.0);
+}
+
+TEST(Ground, LevelsAboveOneAnotherAreFoundWhereABodyFitsBetweenThem) {
+  const GroundSurface floor = ground_prism(rectangle(-10, -10, 10, 10), 0.0);
+  const std::optional<StackedLevels> bridge =
+      Ground({floor, prism(rectangle(5, -10, 7, 10), 4.5, 4.3)}).stacked_levels(1.75);
+  ASSERT_TRUE(bridge);
+  EXPECT_DOUBLE_EQ(bridge->lower, 0.0);
+  EXPECT_DOUBLE_EQ(bridge->upper, 4.5);
+  EXPECT_GE(bridge->at.x, 5.0);
+  EXPECT_LE(bridge->at.x, 7.0);
+  EXPECT_FALSE(Ground({floor, prism(rectangle(5, -10, 7, 10), 1.2, 1.0)}).stacked_levels(1.75));
+  EXPECT_FALSE(Ground({floor, ground_prism(rectangle(5, -1, 7, 1), 0.8)}).stacked_levels(1.75));
+  EXPECT_FALSE(Ground(flight(5)).stacked_levels(1.75));
 }
 
 TEST(Ground, NoSurfacesIsNoGround) {
@@ -173,7 +247,10 @@ TEST(Ground, AHeightFieldWithASpikeAnswersEveryPoint) {
       field.mesh.triangles.push_back({a, b + 1, a + 1});
     }
   const Ground ground({field});
-  EXPECT_EQ(ground.face_count(), 2u * n * n);
+  EXPECT_EQ(ground.walkable_faces(), 2u * n * n);
+  // Walls only round its rim (the spike's slopes are the step limit's
+  // business, not the walls'): the triangles' shared edges are not sampled.
+  EXPECT_NEAR(wall_length(ground.walls(0.25, 1.75), [](Vec2) { return true; }), 4.0 * n, 1e-9);
   EXPECT_DOUBLE_EQ(ground.levels_at({10.3, 20.7}).at(0).z, 0.0);
   EXPECT_NEAR(ground.levels_at({29.75, 30.0}).at(0).z, 750.0, 1e-6);
 }

@@ -43,6 +43,18 @@ struct Sole {
   double width = 0;    ///< [m]
 };
 
+/// A wall of the ground in plan: an edge of standable ground with no
+/// standable level within a step across it.
+struct GroundWall {
+  Vec2 a, b;  ///< [m]
+};
+
+/// Two standable levels over one point.
+struct StackedLevels {
+  Vec2 at;                  ///< [m]
+  double lower = 0, upper = 0;  ///< Their heights. [m]
+};
+
 /// The walkable ground, indexed. Immutable after construction, so it can be
 /// shared between threads.
 class Ground {
@@ -62,11 +74,27 @@ class Ground {
   /// True if the scene has no ground given (the plane z = 0 is its floor).
   bool empty() const { return surfaces_.empty(); }
   const std::vector<GroundSurface>& surfaces() const { return surfaces_; }
-  /// Walkable faces indexed: prism tops and upward-facing triangles.
-  std::size_t face_count() const { return faces_.size(); }
+  /// Walkable faces: prism tops and upward-facing triangles.
+  std::size_t walkable_faces() const { return walkable_faces_; }
 
   /// Every level of walkable ground over `p`, lowest first.
   std::vector<GroundPoint> levels_at(Vec2 p) const;
+  /// The levels over `p` a body `headroom` tall can stand on: those with no
+  /// ground's face or prism within (z, z + headroom] over `p` (a floor under
+  /// a platform's prism, or under a deck too low to walk beneath, is
+  /// covered), lowest first.
+  std::vector<GroundPoint> standable_at(Vec2 p, double headroom) const;
+  /// The edges of standable ground (standable_at) a body `headroom` tall
+  /// cannot step across: where, 2 cm across, no standable level lies within
+  /// `max_step` of the edge's height (a flight's sides, a platform's edge,
+  /// the rim of all ground, the border of a face facing down), sampled every
+  /// 5 cm. They close round every piece of ground a walker can reach. Edges
+  /// a mesh's two walkable triangles share are not walls.
+  std::vector<GroundWall> walls(double max_step, double headroom) const;
+  /// A point with two standable levels over it, if any: checked every 5 cm
+  /// along each walkable face's edges, 2 cm inside it (where two faces
+  /// overlap, one's edge runs inside the other).
+  std::optional<StackedLevels> stacked_levels(double headroom) const;
   /// The level over `p` nearest the height `z`, if one lies within `reach`.
   std::optional<GroundPoint> level_near(Vec2 p, double z, double reach) const;
   /// The share of `sole` (sampled on a 7 x 4 grid) over a walkable face
@@ -75,11 +103,14 @@ class Ground {
   double support(const Sole& sole, double tolerance, double min_normal_z) const;
 
  private:
+  /// A prism's top, or a mesh triangle that is not on edge: walkable if it
+  /// faces up, else only solid (it may cover a level below it).
   struct Face {
     int surface = -1;
     int triangle = -1;  ///< Into the mesh's triangles; -1 for a prism's top.
-    Vec3 normal;        ///< Unit, upward.
+    Vec3 normal;        ///< Unit.
     double d = 0;       ///< The face's plane: dot(normal, x) = d.
+    bool walkable = false;
   };
   /// Faces whose boxes span at most a few cells of a level's size are kept
   /// in that level's cells; the levels' cells grow by kLevelRatio.
@@ -89,13 +120,21 @@ class Ground {
   };
 
   void add_face(Face face, Vec2 low, Vec2 high);
+  /// Calls visit(a, b, za, zb, outward) for each edge of each walkable face
+  /// but those a mesh's two walkable triangles share: its ends in plan and
+  /// their heights, and the unit normal pointing out of the face.
+  template <class Visit>
+  void visit_walkable_edges(Visit&& visit) const;
   bool contains(const Face& face, Vec2 p) const;
   double height_of(const Face& face, Vec2 p) const;
+  /// True if `face` holds solid ground within (z, top] over `p`.
+  bool covers(const Face& face, Vec2 p, double z, double top) const;
   template <class Visit>
   void visit_faces_at(Vec2 p, Visit&& visit) const;
 
   std::vector<GroundSurface> surfaces_;
   std::vector<Face> faces_;
+  std::size_t walkable_faces_ = 0;
   std::vector<IndexLevel> index_;
 };
 
