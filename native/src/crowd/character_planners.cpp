@@ -24,25 +24,26 @@ PlannerParams scaled_to(const CharacterParams& character, const Scenario& scenar
 }  // namespace
 
 CharacterPlanners::Entry::Entry(const CharacterParams& character, const Scenario& scenario,
-                                const CollisionScene* scene)
+                                const CollisionScene* scene, const Ground* ground)
     : params(scaled_to(character, scenario)),
       obstacles(scenario.obstacles, character.body_height),
       body(character),
       body_test(scene ? std::optional<StepBodyTest>(std::in_place, *scene, body,
                                                      scenario.planner.pose_rate)
                       : std::nullopt),
-      planner(character, params, obstacles, body_test ? &*body_test : nullptr) {}
+      planner(character, params, obstacles, body_test ? &*body_test : nullptr, ground) {}
 
-CharacterPlanners::CharacterPlanners(const Scenario& scenario, const CollisionScene* scene)
+CharacterPlanners::CharacterPlanners(const Scenario& scenario, const CollisionScene* scene,
+                                     const Ground* ground)
     : scenario_(&scenario) {
   entries_.emplace(&scenario.character,
-                   std::make_unique<const Entry>(scenario.character, scenario, scene));
+                   std::make_unique<const Entry>(scenario.character, scenario, scene, ground));
   for (std::size_t i = 0; i < scenario.agents.size(); ++i) {
     const AgentSpec& agent = scenario.agents[i];
     if (!agent.character || entries_.count(agent.character.get()) > 0) continue;
     try {
       entries_.emplace(agent.character.get(),
-                       std::make_unique<const Entry>(*agent.character, scenario, scene));
+                       std::make_unique<const Entry>(*agent.character, scenario, scene, ground));
     } catch (const std::invalid_argument& error) {
       // The planner names the field as the scenario's ("character.preferred_speed").
       throw std::invalid_argument(item("agents", i) + "." + error.what());

@@ -20,10 +20,12 @@ namespace footfall::detail {
 /// planner. An agent's own character walks the scenario's gaits scaled to
 /// it: speeds by its preferred speed over the scenario's, durations by its
 /// preferred step duration over the scenario's (a smaller character takes
-/// shorter, quicker steps). `scenario` and `scene` must outlive it.
+/// shorter, quicker steps). With `ground`, its planners plant every foot on
+/// it. `scenario`, `scene` and `ground` must outlive it.
 class CharacterPlanners {
  public:
-  CharacterPlanners(const Scenario& scenario, const CollisionScene* scene);
+  CharacterPlanners(const Scenario& scenario, const CollisionScene* scene,
+                    const Ground* ground = nullptr);
 
   /// What agent `agent` walks with.
   const CharacterParams& character(const AgentSpec& agent) const;
@@ -33,7 +35,8 @@ class CharacterPlanners {
 
  private:
   struct Entry {
-    Entry(const CharacterParams& character, const Scenario& scenario, const CollisionScene* scene);
+    Entry(const CharacterParams& character, const Scenario& scenario, const CollisionScene* scene,
+          const Ground* ground);
     PlannerParams params;
     ObstacleMap obstacles;
     BodyModel body;

@@ -15,6 +15,7 @@
 #include "footfall/fullbody/step_body_test.hpp"
 #include "footfall/model/footstep.hpp"
 #include "footfall/planner/planner.hpp"
+#include "footfall/terrain/ground.hpp"
 #include "navmesh/outline_union.hpp"
 #include "util/field_path.hpp"
 #include "util/quoted.hpp"
@@ -27,6 +28,8 @@ using detail::item;
 using detail::user_text;
 
 namespace {
+
+constexpr double kGroundWallWidth = 0.02;  // [m] a ground wall's obstacle in the mesh
 
 // Refuses two agents whose standing bodies (torso circles and feet) overlap:
 // neither could take a step. Swept along x, so that a crowd of thousands
@@ -73,6 +76,46 @@ void check_standing_apart(const Scenario& scenario, const detail::CharacterPlann
   }
 }
 
+/// With ground, refuses levels above one another (stage 1 of
+/// docs/notes/terrain.md) and agents whose feet or goals are not on it.
+void check_on_ground(const Scenario& scenario, const Ground& ground,
+                     const detail::CharacterPlanners& planners) {
+  if (ground.empty()) return;
+  const double headroom = scenario.character.body_height;
+  if (const std::optional<StackedLevels> stacked = ground.stacked_levels(headroom)) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "two levels over (%.2f, %.2f), at %.2f and %.2f m: ground with levels above "
+                  "one another is not planned on yet",
+                  stacked->at.x, stacked->at.y, stacked->lower, stacked->upper);
+    fail("ground", text);
+  }
+  for (std::size_t i = 0; i < scenario.agents.size(); ++i) {
+    const AgentSpec& agent = scenario.agents[i];
+    const std::string path = item("agents", i);
+    const CharacterParams& character = planners.character(agent);
+    const FootstepState standing = standing_state(agent.position, agent.facing, character);
+    for (const Foot foot : {Foot::kLeft, Foot::kRight}) {
+      const Vec2 at = standing.feet[static_cast<int>(foot)];
+      const std::vector<GroundPoint> levels = ground.standable_at(at, character.body_height);
+      const double held =
+          levels.empty() ? 0.0
+                         : ground.support({{at.x, at.y, levels[0].z}, levels[0].normal,
+                                           standing.foot_orientation[static_cast<int>(foot)].inner,
+                                           character.sole_length, character.sole_width},
+                                          0.02, std::cos(character.max_slope));
+      if (held < character.sole_support)
+        fail(child(path, "position"),
+             std::string("the standing agent's ") + to_string(foot) + " foot is not on the ground (" +
+                 std::to_string(static_cast<int>(std::lround(100 * held))) +
+                 " % of its sole on ground it can stand on)");
+    }
+    for (std::size_t k = 0; k < agent.goals.size(); ++k)
+      if (ground.standable_at(agent.goals[k], character.body_height).empty())
+        fail(item(child(path, "goals"), k), "over no ground to stand on");
+  }
+}
+
 }  // namespace
 
 void validate(const Scenario& scenario) {
@@ -82,8 +125,9 @@ void validate(const Scenario& scenario) {
     if (scenario.agents[i].character)
       validate(*scenario.agents[i].character, child(item("agents", i), "character"));
   }
+  const Ground ground(scenario.ground);
   // Their motions and clearances are checked as they are made.
-  const detail::CharacterPlanners planners(scenario, nullptr);
+  const detail::CharacterPlanners planners(scenario, nullptr, &ground);
   std::set<std::string> names;
   for (size_t i = 0; i < scenario.agents.size(); ++i) {
     const AgentSpec& agent = scenario.agents[i];
@@ -130,6 +174,7 @@ void validate(const Scenario& scenario) {
     }
   }
   check_standing_apart(scenario, planners);
+  check_on_ground(scenario, ground, planners);
 }
 
 namespace {
@@ -140,11 +185,13 @@ Plan plan_among(const Scenario& scenario, const RunControl& control,
                 const std::vector<const AgentPlan*>& fixed) {
   validate(scenario);
   const CollisionScene scene(scenario.obstacles);
-  const detail::CharacterPlanners planners(scenario, &scene);
+  const Ground ground(scenario.ground);
+  const detail::CharacterPlanners planners(scenario, &scene, &ground);
   const NavMesh mesh = navmesh_of(scenario);
   Plan plan;
   plan.character = scenario.character;
   plan.obstacles = scenario.obstacles;
+  plan.ground = scenario.ground;
   std::vector<AgentSpec> agents = scenario.agents;
   detail::SectionPlanners sections(scenario, scene, planners);
   const std::vector<std::optional<Narrowest>> narrowest =
@@ -216,6 +263,14 @@ NavMesh navmesh_of(const Scenario& scenario, double margin) {
     footprints.push_back(footprint(o, scenario.character.body_height));
     for (Vec2 p : footprints.back()) grow(p);
   }
+  // The ground's walls: its edges no one steps across (by the scenario's
+  // character: the lower of its step limits), as thin obstacles after them.
+  const double step = std::min(scenario.character.max_step_up, scenario.character.max_step_down);
+  for (const GroundWall& wall : Ground(scenario.ground).walls(step, scenario.character.body_height)) {
+    const Vec2 side = (0.5 * kGroundWallWidth / distance(wall.a, wall.b)) * perp(wall.b - wall.a);
+    footprints.push_back({wall.a - side, wall.b - side, wall.b + side, wall.a + side});
+    for (Vec2 p : footprints.back()) grow(p);
+  }
   for (const AgentSpec& a : scenario.agents) {
     grow(a.position);
     for (Vec2 g : a.goals) grow(g);
@@ -233,7 +288,10 @@ NavMesh navmesh_of(const Scenario& scenario, double margin) {
     regions[group.members.front()] = std::move(group.region);
   }
   for (std::size_t i = 0; i < footprints.size(); ++i) {
-    const std::string name = "obstacles[" + std::to_string(i) + "]";
+    const std::string name =
+        i < scenario.obstacles.size()
+            ? "obstacles[" + std::to_string(i) + "]"
+            : "ground wall " + std::to_string(i - scenario.obstacles.size());
     const int first = merged_into[i];
     if (footprints[i].empty() || (first >= 0 && first != static_cast<int>(i)))
       mesh.add_empty();

@@ -285,8 +285,10 @@ Json obstacle_to_json(const Obstacle& obstacle) {
   return json;
 }
 
-Json character_to_json(const CharacterParams& params) {
+Json character_to_json(const CharacterParams& params, bool ground) {
   Json json = struct_to_json(params);
+  if (!ground)
+    for (const char* field : kGroundCharacterFields) json.erase(field);
   Json motions = motions_to_json(params);
   if (!motions.empty()) json["behaviors"] = std::move(motions);
   return json;

@@ -20,7 +20,8 @@ void read_planner(const Json& json, const std::string& path, PlannerParams& para
 std::vector<Obstacle> read_obstacles(const Json& json);
 /// One obstacle as the files write it ("base" only when above the ground).
 Json obstacle_to_json(const Obstacle& obstacle);
-/// All character parameters as JSON.
-Json character_to_json(const CharacterParams& params);
+/// All character parameters as JSON; without `ground`, not those only ground
+/// uses (kGroundCharacterFields): flat plans' files stay as they were.
+Json character_to_json(const CharacterParams& params, bool ground = true);
 
 }  // namespace footfall::detail

@@ -134,7 +134,7 @@ void write_footsteps(JsonWriter& out, const AgentPlan& agent) {
   out.end_object();
 }
 
-void write_agent(JsonWriter& out, const AgentPlan& agent) {
+void write_agent(JsonWriter& out, const AgentPlan& agent, bool ground) {
   out.begin_object().key("name").string(agent.name);
   out.key("status").string(to_string(agent.status));
   if (agent.status != AgentStatus::kReached) {
@@ -150,7 +150,7 @@ void write_agent(JsonWriter& out, const AgentPlan& agent) {
   }
   if (agent.leaves) out.key("leaves").value(true);
   if (agent.scale != 1.0) out.key("scale").number(agent.scale);
-  if (agent.character) out.key("character").value(character_to_json(*agent.character));
+  if (agent.character) out.key("character").value(character_to_json(*agent.character, ground));
   out.key("start").begin_object().key("position");
   write_point(out, agent.start.com);
   out.key("facing").number(agent.start.facing).key("left_foot");
@@ -190,7 +190,8 @@ void write_plan(const Plan& plan, std::ostream& stream) {
   }
   JsonWriter out(stream);
   out.begin_object().key("format").string("footfall-plan").key("version").integer(2);
-  out.key("character").value(character_to_json(plan.character));
+  const bool ground = !plan.ground.empty();
+  out.key("character").value(character_to_json(plan.character, ground));
   out.key("obstacles").begin_array();
   for (const Obstacle& obstacle : plan.obstacles) out.value(obstacle_to_json(obstacle));
   out.end_array().key("stats").begin_object();
@@ -200,7 +201,7 @@ void write_plan(const Plan& plan, std::ostream& stream) {
   out.key("searches").integer(searches).key("nodes_generated").integer(generated);
   out.key("nodes_expanded").integer(expanded).end_object();
   out.key("agents").begin_array();
-  for (const AgentPlan& agent : plan.agents) write_agent(out, agent);
+  for (const AgentPlan& agent : plan.agents) write_agent(out, agent, ground);
   out.end_array().end_object();
   out.flush();
   stream << '\n';

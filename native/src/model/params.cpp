@@ -67,7 +67,8 @@ CharacterParams scaled(const CharacterParams& character, double scale) {
   for (double* length : {&c.com_height, &c.foot_offset, &c.torso_width, &c.torso_radius, &c.shoulder_radius,
                          &c.foot_radius, &c.body_height, &c.shoulder_width, &c.chest_depth, &c.arm_swing_width,
                          &c.arm_radius, &c.leg_radius, &c.walk_clearance, &c.arms_in_clearance,
-                         &c.side_step_clearance})
+                         &c.side_step_clearance, &c.max_step_up, &c.max_step_down, &c.sole_length,
+                         &c.sole_width})
     *length *= scale;
   for (double* speed : {&c.preferred_speed, &c.side_step_speed}) *speed *= pace;
   c.preferred_step_duration *= pace;

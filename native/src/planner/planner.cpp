@@ -125,12 +125,16 @@ using KeySet = util::OpenHashMap<std::uint64_t, util::NoValue, KeyHash, 2048, Hu
 
 // A search node: the state reached and the action that reached it; the step
 // itself is rebuilt (bit for bit) when needed.
+// [m] how much nearer or further land_on_ground tries to plant a foot, in turn
+constexpr double kLandingShifts[] = {0.03, 0.06, 0.09, 0.12};
+
 struct FootstepPlanner::Node {
   FootstepState state;
   double g = 0;
   double h = 0;
   int parent = -1;
   Footstep step;  ///< From the parent's state (none at the root): checked when popped.
+  bool landed = false;  ///< Made by land_on_ground: not moved again.
 };
 
 struct FootstepPlanner::Search {
@@ -168,8 +172,9 @@ struct FootstepPlanner::Search {
 };
 
 FootstepPlanner::FootstepPlanner(const CharacterParams& character, const PlannerParams& planner,
-                                 const ObstacleMap& obstacles, const StepBodyTest* body)
-    : validity_(character, planner, obstacles), body_(body) {
+                                 const ObstacleMap& obstacles, const StepBodyTest* body,
+                                 const Ground* ground)
+    : validity_(character, planner, obstacles, ground), body_(body) {
   // A normal step, through the model itself: straight, at the preferred speed
   // and duration, in steady walking (incoming at the same speed), the incoming
   // heading turned outward from phi by the smallest turn angle; by the right
@@ -202,6 +207,34 @@ FootstepPlanner::~FootstepPlanner() = default;
 double FootstepPlanner::heuristic(const FootstepState& state, Vec2 goal) const {
   const double remaining = std::max(0.0, distance(state.com, goal) - params().goal_tolerance);
   return expected_step_cost_ * remaining / expected_step_length_;
+}
+
+void FootstepPlanner::land_on_ground(Search& search, int index, Vec2 goal) const {
+  const Node& node = search.nodes[index];
+  if (node.landed || node.step.kind != StepKind::kWalk) return;
+  const ValidityChecker::Impl& checks = validity_.impl();
+  const int parent = node.parent;
+  const FootstepState before = search.nodes[parent].state;
+  const Footstep off = node.step;
+  // The foot lands half the chord ahead: a speed 2 d / T faster lands it d further.
+  for (const double sign : {1.0, -1.0}) {
+    for (const double shift : kLandingShifts) {
+      const StepResult next = create_footstep(
+          before,
+          {StepKind::kWalk, off.foot, off.phi, off.speed + sign * 2.0 * shift / off.duration(),
+           off.duration()},
+          checks.character_);
+      Footstep step = next.step;
+      if (!next.valid() || (search.whole && !search.whole->label(step)) ||
+          checks.off_ground(step, before))
+        continue;
+      search.push(Node{next.state, search.nodes[parent].g + step.cost.total(),
+                       heuristic(next.state, goal), parent, step, true},
+                  params().heuristic_weight);
+      ++search.generated;
+      break;
+    }
+  }
 }
 
 // Generates the successors of node `index`: every tabled action and the
@@ -389,6 +422,10 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     if (current != 0) {
       Footstep& step = search.nodes[current].step;
       const FootstepState& before = search.nodes[search.nodes[current].parent].state;
+      if (checks.off_ground(step, before)) {
+        land_on_ground(search, current, goal);
+        continue;
+      }
       if (!passes_others(checks, step, before, search.others) ||
           checks.hits_obstacles(step, whole != nullptr && whole->shoulders_in_3d()) ||
           (whole != nullptr && !whole->passes(step, before)))

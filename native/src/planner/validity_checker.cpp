@@ -4,9 +4,11 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "footfall/fullbody/step_body_test.hpp"
 #include "footfall/plan/section_lookup.hpp"
+#include "footfall/terrain/ground.hpp"
 #include "model/contact.hpp"
 #include "planner/validity_impl.hpp"
 
@@ -115,13 +117,17 @@ bool WholeBody::passes(Footstep& step, const FootstepState& before) const {
   return false;
 }
 
+// On ground, also steps as short as a stair's tread (0.25-0.35 m): one
+// tread a step, at people's pace on stairs.
+constexpr Gait kStairGaits[] = {{0.5, 0.6}, {0.4, 0.65}};
+
 using planner::detail::kPivotTurn;
 using planner::detail::kFacingTolerance;
 using planner::detail::kSideStepSpeed;
 
 ValidityChecker::ValidityChecker(const CharacterParams& character, const PlannerParams& planner,
-                                 const ObstacleMap& obstacles)
-    : impl_(std::make_unique<const Impl>(character, planner, obstacles)) {}
+                                 const ObstacleMap& obstacles, const Ground* ground)
+    : impl_(std::make_unique<const Impl>(character, planner, obstacles, ground)) {}
 
 ValidityChecker::~ValidityChecker() = default;
 
@@ -171,13 +177,22 @@ StepResult ValidityChecker::stop_step(const FootstepState& state,
 bool ValidityChecker::hits_obstacles(const Footstep& step) const {
   return impl_->hits_obstacles(step);
 }
+bool ValidityChecker::off_ground(const Footstep& step, const FootstepState& before) const {
+  return impl_->off_ground(step, before);
+}
 
 ValidityChecker::Impl::Impl(const CharacterParams& character, const PlannerParams& planner,
-                            const ObstacleMap& obstacles)
-    : character_(character), params_(planner), obstacles_(obstacles) {
+                            const ObstacleMap& obstacles, const Ground* ground)
+    : character_(character),
+      params_(planner),
+      obstacles_(obstacles),
+      ground_(ground != nullptr && !ground->empty() ? ground : nullptr),
+      min_normal_z_(std::cos(character.max_slope)) {
   validate(character_);
   validate(params_);
-  for (const Gait& gait : params_.gaits) {
+  std::vector<Gait> gaits = params_.gaits;
+  if (ground_ != nullptr) gaits.insert(gaits.end(), std::begin(kStairGaits), std::end(kStairGaits));
+  for (const Gait& gait : gaits) {
     for (const double turn : params_.turn_angles) {
       TabledAction action{detail::step_shape(gait.speed, gait.duration, turn, character_), {}};
       action.allowed[0] =
@@ -239,6 +254,59 @@ bool ValidityChecker::Impl::hits_obstacles(const Footstep& step, bool shoulders_
     for (std::size_t c = 0; c < circles; ++c)
       if (obstacles_.first_overlap({com + torso[c].center, torso[c].radius}, near) >= 0)
         return true;
+  }
+  return false;
+}
+
+namespace {
+
+constexpr double kSoleTolerance = 0.02;  // [m] the sole's plane to the ground it rests on
+constexpr double kSwingSpacing = 0.05;   // [m] between samples of a swinging foot's line
+// [m] ground this far above the higher foothold is an overhang (the body's
+// test), not ground the foot goes through
+constexpr double kSwingReach = 0.5;
+
+}  // namespace
+
+bool ValidityChecker::Impl::off_ground(const Footstep& step, const FootstepState& before) const {
+  if (ground_ == nullptr) return false;
+  const double headroom = character_.body_height;
+  const auto standing_height = [&](Vec2 p) -> std::optional<GroundPoint> {
+    const std::vector<GroundPoint> levels = ground_->standable_at(p, headroom);
+    if (levels.empty()) return std::nullopt;
+    return levels.front();
+  };
+  const std::optional<GroundPoint> here = standing_height(step.foot_position);
+  if (!here || here->normal.z < min_normal_z_) return true;
+  // Held at both ends of its orientations and between: the plan chooses
+  // among them later.
+  const OrientationInterval& turns = step.orientation_interval;
+  for (const double orientation :
+       {turns.inner, turns.outer, turns.inner + 0.5 * wrap_angle(turns.outer - turns.inner)}) {
+    const Sole sole{{step.foot_position.x, step.foot_position.y, here->z}, here->normal,
+                    orientation, character_.sole_length, character_.sole_width};
+    if (ground_->support(sole, kSoleTolerance, min_normal_z_) < character_.sole_support)
+      return true;
+  }
+  const int planted = static_cast<int>(step.foot);
+  const std::optional<GroundPoint> other = standing_height(before.feet[1 - planted]);
+  if (other) {
+    const double rise = here->z - other->z;
+    if (rise > character_.max_step_up || -rise > character_.max_step_down) return true;
+  }
+  // The swinging foot, from where it stood.
+  const Vec2 from = before.feet[planted];
+  const std::optional<GroundPoint> lifted = standing_height(from);
+  if (!lifted || from == step.foot_position) return false;
+  // It lifts over what lies between as high as the higher foothold (a
+  // tread's nosing, a kerb), not over a hump above both.
+  const double top = std::max(lifted->z, here->z);
+  const int samples =
+      static_cast<int>(std::ceil(distance(from, step.foot_position) / kSwingSpacing));
+  for (int i = 1; i < samples; ++i) {
+    const double t = static_cast<double>(i) / samples;
+    for (const GroundPoint& level : ground_->levels_at(from + t * (step.foot_position - from)))
+      if (level.z > top + kSoleTolerance && level.z <= top + kSwingReach) return true;
   }
   return false;
 }
@@ -497,7 +565,7 @@ StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double f
   if (!stop.valid()) return stop;
   if (whole != nullptr) whole->label(stop.step);  // a stop goes anywhere
   if (step_touches_agents(stop.step, state, others) ||
-      hits_obstacles(stop.step, whole != nullptr && whole->shoulders_in_3d()) ||
+      blocked(stop.step, state, whole != nullptr && whole->shoulders_in_3d()) ||
       (whole != nullptr && !whole->passes(stop.step, state)))
     stop.validity = StepValidity::kCollides;
   return stop;
@@ -521,7 +589,7 @@ bool ValidityChecker::Impl::free_to_set_off(const FootstepState& rested,
   if (in_3d ? collides(rested, whole) : !room_to_turn(rested.com)) return false;
   const auto clear = [&](StepResult step, double, const detail::StepShape&) {
     if (!step.valid() || (whole != nullptr && !whole->label(step.step))) return false;
-    return !hits_obstacles(step.step, in_3d) &&
+    return !blocked(step.step, rested, in_3d) &&
            (whole == nullptr || whole->passes(step.step, rested));
   };
   if (tabled_walks(rested, Foot::kLeft, clear) || tabled_walks(rested, Foot::kRight, clear))

@@ -28,7 +28,7 @@ struct ValidityChecker::Impl {
   };
 
   Impl(const CharacterParams& character, const PlannerParams& planner,
-       const ObstacleMap& obstacles);
+       const ObstacleMap& obstacles, const Ground* ground);
 
   // As ValidityChecker's, which forward here.
   bool collides(const FootstepState& state, const WholeBody* whole = nullptr) const;
@@ -53,6 +53,11 @@ struct ValidityChecker::Impl {
   // which sees the shoulders and arms exactly: against obstacles the torso is
   // then only its centre circle.
   bool hits_obstacles(const Footstep& step, bool shoulders_in_3d = false) const;
+  bool off_ground(const Footstep& step, const FootstepState& before) const;
+  // hits_obstacles or off_ground: what no step may do, whoever is about.
+  bool blocked(const Footstep& step, const FootstepState& before, bool shoulders_in_3d) const {
+    return hits_obstacles(step, shoulders_in_3d) || off_ground(step, before);
+  }
 
   // The same checks against `others` sampled once for many of them.
   // `from_standing`: the step sets off from a standing state.
@@ -89,6 +94,8 @@ struct ValidityChecker::Impl {
   CharacterParams character_;
   PlannerParams params_;
   const ObstacleMap& obstacles_;
+  const Ground* ground_;  // null: the plane z = 0
+  double min_normal_z_ = 0;  // cos(max_slope)
   double torso_extent_ = 0;  // how far the torso circles reach from the COM [m]
   std::vector<TabledAction> actions_;
 };

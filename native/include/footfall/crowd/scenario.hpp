@@ -16,6 +16,9 @@ namespace footfall {
 /// Everything needed to plan a scene: plain data.
 struct Scenario {
   std::vector<Obstacle> obstacles;  ///< Static obstacles.
+  /// The walkable ground (terrain/ground.hpp's surfaces); empty: the plane
+  /// z = 0 everywhere.
+  std::vector<Obstacle> ground;
   std::vector<AgentSpec> agents;    ///< Agents, each planned on its own.
   CharacterParams character;        ///< Shared character parameters.
   PlannerParams planner;            ///< Shared planner parameters.

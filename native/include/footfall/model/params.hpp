@@ -72,6 +72,12 @@ struct CharacterParams {
   double walk_clearance = 0;
   double arms_in_clearance = 0;
   double side_step_clearance = 0;
+  double max_step_up = 0.25;
+  double max_step_down = 0.3;
+  double max_slope = 0.4363323129985824;
+  double sole_support = 0.85;
+  double sole_length = 0.26;
+  double sole_width = 0.1;
   FootLimits left;
   FootLimits right;
   /// Sampled motions per behaviour (index: Behavior), from the scenario's
@@ -130,9 +136,30 @@ struct ParamTable<CharacterParams> {
             "Clearance c2 of walking with the arms in; 0: derived."),
       param("side_step_clearance", &S::side_step_clearance, "m", closed(0, 2),
             "Clearance c1 of side-stepping; 0: derived."),
+      param("max_step_up", &S::max_step_up, "m", above_up_to(0, 1),
+            "On ground: the highest a foothold may lie above the other foot's. Stair risers "
+            "are 0.15-0.20 m and kerbs up to about 0.2 m; a humanoid robot's footstep planner "
+            "allows 0.28 m."),
+      param("max_step_down", &S::max_step_down, "m", above_up_to(0, 1),
+            "On ground: the lowest a foothold may lie below the other foot's."),
+      param("max_slope", &S::max_slope, "rad", above_up_to(0, 1.2),
+            "On ground: the steepest slope a foot stands on (25 degrees; Minetti et al. 2002 "
+            "measured walking on gradients up to 45 %, 24 degrees)."),
+      param("sole_support", &S::sole_support, "1", above_up_to(0, 1),
+            "On ground: the share of the sole that must rest on walkable ground within 2 cm "
+            "of its plane (a robot footstep planner's default is 85 %)."),
+      param("sole_length", &S::sole_length, "m", above_up_to(0, 1),
+            "Heel to toe, for the ground's support of a foothold."),
+      param("sole_width", &S::sole_width, "m", above_up_to_field(0, "sole_length", 1),
+            "Across the sole, for the ground's support of a foothold."),
       nested_param("left", &S::left, "Limits on left-foot steps."),
       nested_param("right", &S::right, "Limits on right-foot steps."));
 };
+
+/// The fields of CharacterParams that only ground (a scenario's "ground")
+/// uses: plans of flat scenarios leave them out of their files.
+constexpr const char* kGroundCharacterFields[] = {"max_step_up",  "max_step_down", "max_slope",
+                                                  "sole_support", "sole_length",   "sole_width"};
 
 /// One walking gait of the discretised action space: a desired speed and a
 /// step duration, paired because the two are inversely correlated (section 4).

@@ -91,7 +91,8 @@ class FootstepPlanner {
   /// (whole_body()), a walking step labelled arms_in where only the arms
   /// held in clear them.
   FootstepPlanner(const CharacterParams& character, const PlannerParams& planner,
-                  const ObstacleMap& obstacles, const StepBodyTest* body = nullptr);
+                  const ObstacleMap& obstacles, const StepBodyTest* body = nullptr,
+                  const Ground* ground = nullptr);
   ~FootstepPlanner();
   FootstepPlanner(const FootstepPlanner&) = delete;
   FootstepPlanner& operator=(const FootstepPlanner&) = delete;
@@ -132,6 +133,10 @@ class FootstepPlanner {
   struct Node;
   struct Search;
   void expand(Search& search, int index, Vec2 goal) const;
+  /// On ground, node `index`'s walking step planted off it (a nosing, a
+  /// riser too high) is taken again landing a little nearer or further,
+  /// where the ground holds it: a stair's tread is barely longer than a sole.
+  void land_on_ground(Search& search, int index, Vec2 goal) const;
 
   ValidityChecker validity_;
   const StepBodyTest* body_ = nullptr;

@@ -38,6 +38,7 @@ using MovingObstacles = std::vector<MovingObstacle>;
 /// take (the crowd's yielding). The steps may cross them.
 using KeepOut = std::vector<Circle>;
 
+class Ground;
 class SectionLookup;
 class StepBodyTest;
 
@@ -76,10 +77,11 @@ struct Rest {
 /// between calls; const methods may run on several threads at once.
 class ValidityChecker {
  public:
-  /// Validates both parameter sets (std::invalid_argument). `obstacles` must
-  /// outlive the checker.
+  /// Validates both parameter sets (std::invalid_argument). `obstacles`, and
+  /// `ground` if given, must outlive the checker. Without ground the floor is
+  /// the plane z = 0; with it, every foothold must be on it (off_ground).
   ValidityChecker(const CharacterParams& character, const PlannerParams& planner,
-                  const ObstacleMap& obstacles);
+                  const ObstacleMap& obstacles, const Ground* ground = nullptr);
   ~ValidityChecker();
   ValidityChecker(const ValidityChecker&) = delete;
   ValidityChecker& operator=(const ValidityChecker&) = delete;
@@ -152,6 +154,16 @@ class ValidityChecker {
   /// True if the step's landing foot, or its torso circles at samples no
   /// further apart than the sample spacing, overlap a static obstacle.
   bool hits_obstacles(const Footstep& step) const;
+  /// With ground, true if `step` taken from `before` plants its foot off it:
+  /// no standable level under the foot; a slope over max_slope; less than
+  /// sole_support of the sole (sole_length by sole_width, at either end of
+  /// the foot's orientation interval) on walkable ground within 2 cm of the
+  /// sole's plane; a rise
+  /// from the other foot over max_step_up or a drop over max_step_down; or a
+  /// swinging foot that passes over ground more than 2 cm above the higher
+  /// of its two footholds (a hump, not a nosing). Ground of one level at every point
+  /// (stage 1 of docs/notes/terrain.md).
+  bool off_ground(const Footstep& step, const FootstepState& before) const;
 
   /// The character parameters.
   const CharacterParams& character() const;
