@@ -91,6 +91,8 @@ void bind_footstep(py::module_& m) {
       .def_readonly("start_time", &Footstep::start_time)
       .def_readonly("end_time", &Footstep::end_time)
       .def_readonly("foot_position", &Footstep::foot_position)
+      .def_readonly("foot_height", &Footstep::foot_height,
+                    "Height of the ground under the planted foot; 0 on flat ground [m].")
       .def_readonly("orientation_interval", &Footstep::orientation_interval)
       .def_readonly("foot_orientation", &Footstep::foot_orientation)
       .def_readonly("com_start", &Footstep::com_start)

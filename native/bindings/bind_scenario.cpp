@@ -62,6 +62,8 @@ void bind_scenario(py::module_& m) {
   py::class_<Scenario>(m, "Scenario", "Obstacles, agents and parameters: plain data.")
       .def(py::init<>())
       .def_readwrite("obstacles", &Scenario::obstacles)
+      .def_readwrite("ground", &Scenario::ground,
+                     "The walkable ground (prisms and meshes, as obstacles); empty: z = 0.")
       .def_readwrite("agents", &Scenario::agents)
       .def_readwrite("character", &Scenario::character)
       .def_readwrite("planner", &Scenario::planner);
@@ -90,6 +92,7 @@ void bind_scenario(py::module_& m) {
   py::class_<Plan>(m, "Plan", "Every agent's footsteps.")
       .def_readonly("agents", &Plan::agents)
       .def_readonly("character", &Plan::character)
+      .def_readonly("ground", &Plan::ground)
       .def_readonly("status", &Plan::status);
   m.def(
       "plan_scenario",

@@ -74,12 +74,15 @@ inline bool same_agent(const AgentSpec& a, const AgentSpec& b) {
          a.goals == b.goals && a.leave_at_goal == b.leave_at_goal && same_own_character &&
          a.time_limit == b.time_limit && a.start_delay == b.start_delay &&
          a.goal_wait == b.goal_wait && a.end_facing == b.end_facing &&
-         a.goal_facings == b.goal_facings && a.scale == b.scale;
+         a.goal_facings == b.goal_facings && a.scale == b.scale && a.height == b.height &&
+         a.goal_heights == b.goal_heights;
 }
 
 /// True if `a` and `b` hold the same obstacles, agents and parameters, to the bit.
 inline bool same_scenario(const Scenario& a, const Scenario& b) {
   return std::equal(a.obstacles.begin(), a.obstacles.end(), b.obstacles.begin(), b.obstacles.end(),
+                    same_obstacle) &&
+         std::equal(a.ground.begin(), a.ground.end(), b.ground.begin(), b.ground.end(),
                     same_obstacle) &&
          std::equal(a.agents.begin(), a.agents.end(), b.agents.begin(), b.agents.end(),
                     same_agent) &&

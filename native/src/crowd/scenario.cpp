@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <map>
 #include <optional>
 #include <set>
@@ -76,10 +78,46 @@ void check_standing_apart(const Scenario& scenario, const detail::CharacterPlann
   }
 }
 
-/// With ground, refuses levels above one another (stage 1 of
-/// docs/notes/terrain.md) and agents whose feet or goals are not on it.
+std::string metres(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f m", value);
+  return text;
+}
+
+/// Refuses a point of an agent (`field`) over no ground to stand on, or
+/// with a height (`height`) not within kHeightReach of the ground there
+/// (without ground, of z = 0).
+void check_standing_height(const Ground& ground, Vec2 p, std::optional<double> height,
+                           double headroom, const std::string& field) {
+  if (ground.empty()) {
+    if (height && std::fabs(*height) > kHeightReach)
+      fail(field, "at a height of " + metres(*height) +
+                      ", but the scenario has no ground: its floor is z = 0");
+    return;
+  }
+  const std::vector<GroundPoint> levels = ground.standable_at(p, headroom);
+  if (levels.empty()) fail(field, "over no ground to stand on");
+  if (height && std::none_of(levels.begin(), levels.end(), [&](const GroundPoint& level) {
+        return std::fabs(level.z - *height) <= kHeightReach;
+      }))
+    fail(field, "no ground to stand on within 0.50 m of its height " + metres(*height) +
+                    " (the ground there is at " + metres(levels.front().z) + ")");
+}
+
+/// Refuses levels above one another (stage 1 of docs/notes/terrain.md),
+/// and agents and goals off the ground or its height (check_standing_height).
 void check_on_ground(const Scenario& scenario, const Ground& ground,
                      const detail::CharacterPlanners& planners) {
+  for (std::size_t i = 0; i < scenario.agents.size(); ++i) {
+    const AgentSpec& agent = scenario.agents[i];
+    const std::string path = item("agents", i);
+    const double headroom = planners.character(agent).body_height;
+    check_standing_height(ground, agent.position, agent.height, headroom, child(path, "position"));
+    for (std::size_t k = 0; k < agent.goals.size(); ++k)
+      check_standing_height(ground, agent.goals[k],
+                            k < agent.goal_heights.size() ? agent.goal_heights[k] : std::nullopt,
+                            headroom, item(child(path, "goals"), k));
+  }
   if (ground.empty()) return;
   const double headroom = scenario.character.body_height;
   if (const std::optional<StackedLevels> stacked = ground.stacked_levels(headroom)) {
@@ -110,9 +148,6 @@ void check_on_ground(const Scenario& scenario, const Ground& ground,
                  std::to_string(static_cast<int>(std::lround(100 * held))) +
                  " % of its sole on ground it can stand on)");
     }
-    for (std::size_t k = 0; k < agent.goals.size(); ++k)
-      if (ground.standable_at(agent.goals[k], character.body_height).empty())
-        fail(item(child(path, "goals"), k), "over no ground to stand on");
   }
 }
 
@@ -202,6 +237,14 @@ Plan plan_among(const Scenario& scenario, const RunControl& control,
     return sections.plan(agents[i], from, first_goal);
   };
   plan.agents = plan_agents(agents, each, &mesh, control, fixed, annotate);
+  // Every foothold was checked on its one standable level: that is its height.
+  if (!ground.empty())
+    for (std::size_t i = 0; i < agents.size(); ++i)
+      for (Footstep& step : plan.agents[i].footsteps) {
+        const auto levels =
+            ground.standable_at(step.foot_position, planners.character(agents[i]).body_height);
+        if (!levels.empty()) step.foot_height = levels.front().z;
+      }
   // One that stops short stands at its last goal: none of the scenario's.
   for (std::size_t i = 0; i < agents.size(); ++i) {
     if (!narrowest[i]) continue;

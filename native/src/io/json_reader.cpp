@@ -198,6 +198,15 @@ Vec2 point(const Json& value, const std::string& path) {
   return {number(value[0], item(path, 0)), number(value[1], item(path, 1))};
 }
 
+std::pair<Vec2, std::optional<double>> point_and_height(const Json& value,
+                                                        const std::string& path) {
+  if (!value.is_array() || (value.size() != 2 && value.size() != 3))
+    fail(path, "expected a point [x, y] or [x, y, z]");
+  const Vec2 p{number(value[0], item(path, 0)), number(value[1], item(path, 1))};
+  if (value.size() == 2) return {p, std::nullopt};
+  return {p, number(value[2], item(path, 2))};
+}
+
 Json to_json(Vec2 p) { return Json::array({p.x, p.y}); }
 
 void expect_header(const Json& root, const char* format, int version) {

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <initializer_list>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 
 #include "footfall/model/geometry.hpp"
 #include "util/field_path.hpp"
@@ -40,6 +42,9 @@ std::string string(const Json& value, const std::string& path);
 const Json& array(const Json& value, const std::string& path);
 /// A point [x, y] of two finite numbers.
 Vec2 point(const Json& value, const std::string& path);
+/// A point [x, y] or [x, y, z] of finite numbers: the point and its height, if given.
+std::pair<Vec2, std::optional<double>> point_and_height(const Json& value,
+                                                        const std::string& path);
 
 /// A point as JSON [x, y].
 Json to_json(Vec2 point);

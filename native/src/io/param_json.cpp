@@ -240,35 +240,48 @@ TriangleMesh read_mesh(const Json& json, const std::string& path) {
 
 }  // namespace
 
-std::vector<Obstacle> read_obstacles(const Json& json) {
+namespace {
+
+// Prisms and meshes, as obstacles and ground give them; a prism without a
+// "base" gets base_of(height), and a ground's prism must give its height.
+template <class BaseOf>
+std::vector<Obstacle> read_shapes(const Json& json, const std::string& name, bool ground,
+                                  BaseOf base_of) {
   std::vector<Obstacle> result;
-  const Json& obstacles = array(json, "obstacles");
-  for (size_t i = 0; i < obstacles.size(); ++i) {
-    const std::string path = item("obstacles", i);
-    expect_object(obstacles[i], path, {"polygon", "height", "base", "mesh"});
-    Obstacle obstacle;
-    if (obstacles[i].contains("mesh")) {
+  const Json& shapes = array(json, name);
+  for (size_t i = 0; i < shapes.size(); ++i) {
+    const std::string path = item(name, i);
+    expect_object(shapes[i], path, {"polygon", "height", "base", "mesh"});
+    Obstacle shape;
+    if (shapes[i].contains("mesh")) {
       for (const char* prism_field : {"polygon", "height", "base"})
-        if (obstacles[i].contains(prism_field))
+        if (shapes[i].contains(prism_field))
           fail(child(path, prism_field), "not with \"mesh\": a mesh gives its own shape");
-      obstacle.mesh = read_mesh(obstacles[i]["mesh"], child(path, "mesh"));
-      result.push_back(std::move(obstacle));
+      shape.mesh = read_mesh(shapes[i]["mesh"], child(path, "mesh"));
+      result.push_back(std::move(shape));
       continue;
     }
     const std::string polygon_path = child(path, "polygon");
-    const Json& polygon = array(require(obstacles[i], path, "polygon"), polygon_path);
-    for (size_t k = 0; k < polygon.size(); ++k) {
-      obstacle.polygon.push_back(point(polygon[k], item(polygon_path, k)));
-    }
-    if (obstacles[i].contains("height")) {
-      obstacle.height = number(obstacles[i]["height"], child(path, "height"));
-    }
-    if (obstacles[i].contains("base")) {
-      obstacle.base = number(obstacles[i]["base"], child(path, "base"));
-    }
-    result.push_back(std::move(obstacle));
+    const Json& polygon = array(require(shapes[i], path, "polygon"), polygon_path);
+    for (size_t k = 0; k < polygon.size(); ++k)
+      shape.polygon.push_back(point(polygon[k], item(polygon_path, k)));
+    if (shapes[i].contains("height") || ground)
+      shape.height = number(require(shapes[i], path, "height"), child(path, "height"));
+    shape.base = shapes[i].contains("base") ? number(shapes[i]["base"], child(path, "base"))
+                                            : base_of(shape.height);
+    result.push_back(std::move(shape));
   }
   return result;
+}
+
+}  // namespace
+
+std::vector<Obstacle> read_obstacles(const Json& json) {
+  return read_shapes(json, "obstacles", false, [](double) { return 0.0; });
+}
+
+std::vector<Obstacle> read_ground(const Json& json) {
+  return read_shapes(json, "ground", true, [](double height) { return std::min(0.0, height); });
 }
 
 Json obstacle_to_json(const Obstacle& obstacle) {

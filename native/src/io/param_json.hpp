@@ -18,6 +18,9 @@ void read_character(const Json& json, const std::string& path, CharacterParams& 
 void read_planner(const Json& json, const std::string& path, PlannerParams& params);
 /// The "obstacles" array of a scenario or plan (its shape; ObstacleMap checks the values).
 std::vector<Obstacle> read_obstacles(const Json& json);
+/// The "ground" array of a scenario or plan: the obstacles' shapes, a
+/// prism's "base" defaulting to min(0, height) (Ground checks the values).
+std::vector<Obstacle> read_ground(const Json& json);
 /// One obstacle as the files write it ("base" only when above the ground).
 Json obstacle_to_json(const Obstacle& obstacle);
 /// All character parameters as JSON; without `ground`, not those only ground

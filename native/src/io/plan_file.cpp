@@ -10,6 +10,7 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "footfall/terrain/ground.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json_reader.hpp"
 #include "io/json_writer.hpp"
@@ -66,7 +67,7 @@ class ValueTable {
 void write_point(JsonWriter& out, Vec2 p) { out.begin_array().number(p.x).number(p.y).end_array(); }
 
 // One agent's footsteps as version 2's columns (docs/file-formats.md).
-void write_footsteps(JsonWriter& out, const AgentPlan& agent) {
+void write_footsteps(JsonWriter& out, const AgentPlan& agent, bool ground) {
   const std::vector<Footstep>& steps = agent.footsteps;
   ValueTable table;
   for (const Footstep& s : steps) {
@@ -74,6 +75,7 @@ void write_footsteps(JsonWriter& out, const AgentPlan& agent) {
                                s.orientation_interval.outer, s.speed, s.alpha, s.cost.fixed_rate,
                                s.cost.speed_change, s.cost.curvature})
       table.add(value);
+    if (ground) table.add(s.cost.terrain);
   }
   const auto column = [&](const char* name, auto write_item) {
     out.key(name).begin_array();
@@ -95,6 +97,7 @@ void write_footsteps(JsonWriter& out, const AgentPlan& agent) {
   column("foot_position", [&](const Footstep& s) { write_point(out, s.foot_position); });
   column("com_end", [&](const Footstep& s) { write_point(out, s.com_end); });
   column("com_velocity_end", [&](const Footstep& s) { write_point(out, s.com_velocity_end); });
+  if (ground) column("foot_height", [&](const Footstep& s) { out.number(s.foot_height); });
   out.key("values").begin_array();
   for (const double value : table.values()) out.number(value);
   out.end_array();
@@ -111,6 +114,7 @@ void write_footsteps(JsonWriter& out, const AgentPlan& agent) {
   column("fixed_rate", [&](const Footstep& s) { index(s.cost.fixed_rate); });
   column("speed_change", [&](const Footstep& s) { index(s.cost.speed_change); });
   column("curvature", [&](const Footstep& s) { index(s.cost.curvature); });
+  if (ground) column("terrain", [&](const Footstep& s) { index(s.cost.terrain); });
   // Only the steps that do not start where start_after says, to the bit.
   bool any = false;
   for (std::size_t i = 0; i < steps.size(); ++i) {
@@ -174,7 +178,7 @@ void write_agent(JsonWriter& out, const AgentPlan& agent, bool ground) {
   out.key("nodes_expanded").integer(agent.nodes_expanded);
   out.key("total_cost").number(agent.total_cost()).key("end_time").number(agent.end_time());
   out.end_object().key("footsteps");
-  write_footsteps(out, agent);
+  write_footsteps(out, agent, ground);
   out.end_object();
 }
 
@@ -194,7 +198,13 @@ void write_plan(const Plan& plan, std::ostream& stream) {
   out.key("character").value(character_to_json(plan.character, ground));
   out.key("obstacles").begin_array();
   for (const Obstacle& obstacle : plan.obstacles) out.value(obstacle_to_json(obstacle));
-  out.end_array().key("stats").begin_object();
+  out.end_array();
+  if (ground) {
+    out.key("ground").begin_array();
+    for (const Obstacle& surface : plan.ground) out.value(obstacle_to_json(surface));
+    out.end_array();
+  }
+  out.key("stats").begin_object();
   out.key("status").string(to_string(plan.status));
   out.key("agents").integer(static_cast<long long>(plan.agents.size()));
   out.key("agents_reached").integer(reached).key("footsteps").integer(footsteps);
@@ -285,7 +295,7 @@ class FootstepColumns {
   FootstepColumns(const Json& json, std::string path) : json_(json), path_(std::move(path)) {
     expect_object(json, path_,
                   {"count", "foot", "kind", "behavior", "end_time", "foot_position", "com_end",
-                   "com_velocity_end", "values", "phi", "foot_orientation", "orientation_interval",
+                   "com_velocity_end", "foot_height", "terrain", "values", "phi", "foot_orientation", "orientation_interval",
                    "speed", "alpha", "fixed_rate", "speed_change", "curvature", "starts"});
     const long long count = integer(require(json, path_, "count"), child(path_, "count"));
     if (count < 0) fail(child(path_, "count"), "must be at least 0, got " + std::to_string(count));
@@ -390,6 +400,11 @@ std::vector<Footstep> read_footstep_columns(const Json& json, const std::string&
     for (std::size_t i = 0; i < count; ++i)
       steps[i].*member = point(column[i], item(columns.path(name), i));
   }
+  if (json.contains("foot_height")) {
+    const Json& column = columns.items("foot_height");
+    for (std::size_t i = 0; i < count; ++i)
+      steps[i].foot_height = number(column[i], item(columns.path("foot_height"), i));
+  }
   columns.read_indexed("phi", steps, [](Footstep& s, double v) { s.phi = v; });
   columns.read_indexed("foot_orientation", steps,
                        [](Footstep& s, double v) { s.foot_orientation = v; });
@@ -407,6 +422,8 @@ std::vector<Footstep> read_footstep_columns(const Json& json, const std::string&
   columns.read_indexed("speed_change", steps,
                        [](Footstep& s, double v) { s.cost.speed_change = v; });
   columns.read_indexed("curvature", steps, [](Footstep& s, double v) { s.cost.curvature = v; });
+  if (json.contains("terrain"))
+    columns.read_indexed("terrain", steps, [](Footstep& s, double v) { s.cost.terrain = v; });
 
   // The times, and the starts: where start_after says, but for the steps in "starts".
   const Json none = Json::array();
@@ -580,11 +597,16 @@ int read_version(const Json& root) {
 
 Plan read_plan(const Json& root) {
   const int version = read_version(root);
-  expect_object(root, "", {"format", "version", "character", "obstacles", "agents", "stats"});
+  expect_object(root, "",
+                {"format", "version", "character", "obstacles", "ground", "agents", "stats"});
   Plan plan;
   if (root.contains("obstacles")) {
     plan.obstacles = read_obstacles(root["obstacles"]);
     ObstacleMap checked(plan.obstacles);  // the same checks as a scenario's obstacles
+  }
+  if (root.contains("ground")) {
+    plan.ground = read_ground(root["ground"]);
+    const Ground checked(plan.ground);  // as a scenario's
   }
   if (root.contains("character")) read_character(root["character"], "character", plan.character);
   validate(plan.character, "character");

@@ -1,9 +1,11 @@
 // Footfall — reading scenario files (docs/file-formats.md).
 #include "footfall/io/scenario_file.hpp"
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <stdexcept>
+#include <tuple>
 
 #include "footfall/io/steersuite.hpp"
 #include "io/json_reader.hpp"
@@ -35,9 +37,11 @@ void read_agent_characters(const Json& agents, Scenario& scenario) {
 
 Scenario read_scenario(const Json& root) {
   expect_header(root, "footfall-scenario", 1);
-  expect_object(root, "", {"format", "version", "obstacles", "agents", "character", "planner"});
+  expect_object(root, "",
+                {"format", "version", "obstacles", "ground", "agents", "character", "planner"});
   Scenario scenario;
   if (root.contains("obstacles")) scenario.obstacles = read_obstacles(root["obstacles"]);
+  if (root.contains("ground")) scenario.ground = read_ground(root["ground"]);
   if (root.contains("agents")) {
     const Json& agents = array(root["agents"], "agents");
     for (size_t i = 0; i < agents.size(); ++i) {
@@ -48,11 +52,18 @@ Scenario read_scenario(const Json& root) {
       AgentSpec agent;
       agent.name = agents[i].contains("name") ? string(agents[i]["name"], child(path, "name"))
                                               : "agent" + std::to_string(i);
-      agent.position = point(require(agents[i], path, "position"), child(path, "position"));
+      std::tie(agent.position, agent.height) =
+          point_and_height(require(agents[i], path, "position"), child(path, "position"));
       const std::string goals_path = child(path, "goals");
       const Json& goals = array(require(agents[i], path, "goals"), goals_path);
-      for (size_t k = 0; k < goals.size(); ++k)
-        agent.goals.push_back(point(goals[k], item(goals_path, k)));
+      for (size_t k = 0; k < goals.size(); ++k) {
+        const auto [goal, height] = point_and_height(goals[k], item(goals_path, k));
+        agent.goals.push_back(goal);
+        agent.goal_heights.push_back(height);
+      }
+      if (std::none_of(agent.goal_heights.begin(), agent.goal_heights.end(),
+                       [](const std::optional<double>& h) { return h.has_value(); }))
+        agent.goal_heights.clear();
       // Facing defaults to the direction of the first goal.
       if (agents[i].contains("facing")) {
         agent.facing = number(agents[i]["facing"], child(path, "facing"));

@@ -261,6 +261,21 @@ StepResult walk_step(const FootstepState& state, Foot foot, const Heading& headi
 
 const char* to_string(Foot foot) { return foot == Foot::kLeft ? "left" : "right"; }
 
+double terrain_cost(double mass, double run, double rise) {
+  constexpr double kSteepest = 0.45;  // the polynomial's measured range
+  constexpr double kStairFactor = 4.5;
+  constexpr double kGravity = 9.81;  // [m/s^2]
+  // Minetti et al. 2002, J Appl Physiol 93:1039, walking: C(i) in J/(kg m).
+  const auto minetti = [](double i) {
+    return (((((280.5 * i - 58.7) * i - 76.8) * i + 51.9) * i + 19.6) * i) + 2.5;
+  };
+  const double stairs = kStairFactor * mass * kGravity * rise;
+  if (!(run > 0.0)) return std::max(0.0, stairs);
+  const double gradient = std::clamp(rise / run, -kSteepest, kSteepest);
+  const double slope = mass * run * (minetti(gradient) - minetti(0.0));
+  return rise > kSteepest * run ? std::max(slope, stairs) : slope;
+}
+
 const char* to_string(StepKind kind) {
   switch (kind) {
     case StepKind::kWalk:

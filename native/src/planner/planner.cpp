@@ -135,6 +135,7 @@ struct FootstepPlanner::Node {
   int parent = -1;
   Footstep step;  ///< From the parent's state (none at the root): checked when popped.
   bool landed = false;  ///< Made by land_on_ground: not moved again.
+  bool costed = false;  ///< Its ground's cost is in g (see plan()).
 };
 
 struct FootstepPlanner::Search {
@@ -206,7 +207,9 @@ FootstepPlanner::~FootstepPlanner() = default;
 
 double FootstepPlanner::heuristic(const FootstepState& state, Vec2 goal) const {
   const double remaining = std::max(0.0, distance(state.com, goal) - params().goal_tolerance);
-  return expected_step_cost_ * remaining / expected_step_length_;
+  // On ground, and the climb to the goal.
+  return expected_step_cost_ * remaining / expected_step_length_ +
+         validity_.impl().climb_cost(state.com, goal);
 }
 
 void FootstepPlanner::land_on_ground(Search& search, int index, Vec2 goal) const {
@@ -422,9 +425,23 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
     if (current != 0) {
       Footstep& step = search.nodes[current].step;
       const FootstepState& before = search.nodes[search.nodes[current].parent].state;
-      if (checks.off_ground(step, before)) {
-        land_on_ground(search, current, goal);
+      if (const auto foothold = checks.foothold(step, before);
+          foothold != ValidityChecker::Impl::Foothold::kOnGround) {
+        if (foothold == ValidityChecker::Impl::Foothold::kUnsupported)
+          land_on_ground(search, current, goal);
         continue;
+      }
+      // The ground's cost is found for the steps taken off the open list
+      // only: one that changes is put back at its true cost.
+      if (!search.nodes[current].costed) {
+        search.nodes[current].costed = true;
+        step.cost.terrain = checks.ground_cost(step, before);
+        if (step.cost.terrain != 0.0) {
+          Node again = search.nodes[current];
+          again.g += step.cost.terrain;
+          search.push(std::move(again), params.heuristic_weight);
+          continue;
+        }
       }
       if (!passes_others(checks, step, before, search.others) ||
           checks.hits_obstacles(step, whole != nullptr && whole->shoulders_in_3d()) ||

@@ -268,8 +268,9 @@ constexpr double kSwingReach = 0.5;
 
 }  // namespace
 
-bool ValidityChecker::Impl::off_ground(const Footstep& step, const FootstepState& before) const {
-  if (ground_ == nullptr) return false;
+ValidityChecker::Impl::Foothold ValidityChecker::Impl::foothold(const Footstep& step,
+                                                               const FootstepState& before) const {
+  if (ground_ == nullptr) return Foothold::kOnGround;
   const double headroom = character_.body_height;
   const auto standing_height = [&](Vec2 p) -> std::optional<GroundPoint> {
     const std::vector<GroundPoint> levels = ground_->standable_at(p, headroom);
@@ -277,27 +278,28 @@ bool ValidityChecker::Impl::off_ground(const Footstep& step, const FootstepState
     return levels.front();
   };
   const std::optional<GroundPoint> here = standing_height(step.foot_position);
-  if (!here || here->normal.z < min_normal_z_) return true;
-  // Held at both ends of its orientations and between: the plan chooses
-  // among them later.
-  const OrientationInterval& turns = step.orientation_interval;
-  for (const double orientation :
-       {turns.inner, turns.outer, turns.inner + 0.5 * wrap_angle(turns.outer - turns.inner)}) {
-    const Sole sole{{step.foot_position.x, step.foot_position.y, here->z}, here->normal,
-                    orientation, character_.sole_length, character_.sole_width};
-    if (ground_->support(sole, kSoleTolerance, min_normal_z_) < character_.sole_support)
-      return true;
-  }
+  if (!here || here->normal.z < min_normal_z_) return Foothold::kOff;
   const int planted = static_cast<int>(step.foot);
   const std::optional<GroundPoint> other = standing_height(before.feet[1 - planted]);
   if (other) {
     const double rise = here->z - other->z;
-    if (rise > character_.max_step_up || -rise > character_.max_step_down) return true;
+    if (rise > character_.max_step_up || -rise > character_.max_step_down) return Foothold::kOff;
+  }
+  // Held at both ends of its orientations and between: the plan chooses
+  // among them later.
+  const OrientationInterval& turns = step.orientation_interval;
+  const double middle = turns.inner + 0.5 * wrap_angle(turns.outer - turns.inner);
+  for (const double orientation : {turns.inner, turns.outer, middle}) {
+    if (orientation != turns.inner && turns.outer == turns.inner) break;
+    const Sole sole{{step.foot_position.x, step.foot_position.y, here->z}, here->normal,
+                    orientation, character_.sole_length, character_.sole_width};
+    if (!ground_->holds(sole, kSoleTolerance, min_normal_z_, character_.sole_support))
+      return Foothold::kUnsupported;
   }
   // The swinging foot, from where it stood.
   const Vec2 from = before.feet[planted];
   const std::optional<GroundPoint> lifted = standing_height(from);
-  if (!lifted || from == step.foot_position) return false;
+  if (!lifted || from == step.foot_position) return Foothold::kOnGround;
   // It lifts over what lies between as high as the higher foothold (a
   // tread's nosing, a kerb), not over a hump above both.
   const double top = std::max(lifted->z, here->z);
@@ -306,9 +308,26 @@ bool ValidityChecker::Impl::off_ground(const Footstep& step, const FootstepState
   for (int i = 1; i < samples; ++i) {
     const double t = static_cast<double>(i) / samples;
     for (const GroundPoint& level : ground_->levels_at(from + t * (step.foot_position - from)))
-      if (level.z > top + kSoleTolerance && level.z <= top + kSwingReach) return true;
+      if (level.z > top + kSoleTolerance && level.z <= top + kSwingReach) return Foothold::kOff;
   }
-  return false;
+  return Foothold::kOnGround;
+}
+
+double ValidityChecker::Impl::ground_height(Vec2 p) const {
+  const std::vector<GroundPoint> levels = ground_->standable_at(p, character_.body_height);
+  return levels.empty() ? 0.0 : levels.front().z;
+}
+
+double ValidityChecker::Impl::ground_cost(const Footstep& step, const FootstepState& before) const {
+  if (ground_ == nullptr) return 0.0;
+  const double rise = ground_height(step.foot_position) -
+                      ground_height(before.feet[1 - static_cast<int>(step.foot)]);
+  return terrain_cost(character_.mass, distance(step.com_start, step.com_end), rise);
+}
+
+double ValidityChecker::Impl::climb_cost(Vec2 from, Vec2 to) const {
+  if (ground_ == nullptr) return 0.0;
+  return std::max(0.0, terrain_cost(character_.mass, 0.0, ground_height(to) - ground_height(from)));
 }
 
 bool ValidityChecker::Impl::touches_agents(const Footstep& step, detail::SampledAgents& others,
@@ -563,6 +582,7 @@ StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double f
   StepResult stop = create_footstep(
       state, {StepKind::kStop, other(state.last_foot), facing, 0.0, duration}, character_);
   if (!stop.valid()) return stop;
+  stop.step.cost.terrain = ground_cost(stop.step, state);
   if (whole != nullptr) whole->label(stop.step);  // a stop goes anywhere
   if (step_touches_agents(stop.step, state, others) ||
       blocked(stop.step, state, whole != nullptr && whole->shoulders_in_3d()) ||

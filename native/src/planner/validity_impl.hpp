@@ -53,7 +53,22 @@ struct ValidityChecker::Impl {
   // which sees the shoulders and arms exactly: against obstacles the torso is
   // then only its centre circle.
   bool hits_obstacles(const Footstep& step, bool shoulders_in_3d = false) const;
-  bool off_ground(const Footstep& step, const FootstepState& before) const;
+  // Where off_ground's step plants its foot: on the ground, on it but with
+  // too little of the sole held (a nosing: a little nearer or further may
+  // do), or off it.
+  enum class Foothold { kOnGround, kUnsupported, kOff };
+  Foothold foothold(const Footstep& step, const FootstepState& before) const;
+  bool off_ground(const Footstep& step, const FootstepState& before) const {
+    return foothold(step, before) != Foothold::kOnGround;
+  }
+  // With ground, `step`'s terrain_cost from `before`: the body rises as the
+  // stance moves from the other foot's ground to this foot's. 0 without.
+  double ground_cost(const Footstep& step, const FootstepState& before) const;
+  // With ground, the least the climb from `from` up to `to` costs (stairs'
+  // terrain_cost of the rise, 0 going down). 0 without.
+  double climb_cost(Vec2 from, Vec2 to) const;
+  // The standable ground's height under `p`; 0 where there is none.
+  double ground_height(Vec2 p) const;
   // hits_obstacles or off_ground: what no step may do, whoever is about.
   bool blocked(const Footstep& step, const FootstepState& before, bool shoulders_in_3d) const {
     return hits_obstacles(step, shoulders_in_3d) || off_ground(step, before);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 namespace footfall {
@@ -10,9 +11,11 @@ namespace {
 
 constexpr double kFirstCell = 0.5;  // [m] about two soles: treads, a height field's triangles
 constexpr double kLevelRatio = 4.0;
+constexpr double kMostCells = 16;  // a face's cells in the index
 constexpr double kMaxHeight = 1000.0;  // [m] as obstacles' heights
 constexpr double kMinNormalZ = 1e-9;   // a face steeper than this stands on edge: no footprint
 constexpr int kSoleRows = 7, kSoleColumns = 4;  // the sole's sample grid
+constexpr int kSoleSamples = kSoleRows * kSoleColumns;
 
 [[noreturn]] void refuse(const std::string& field, const std::string& what) {
   throw std::invalid_argument(field + ": " + what);
@@ -41,6 +44,13 @@ void validate_prism(const GroundSurface& prism, const std::string& name) {
 std::uint64_t cell_key(std::int64_t ix, std::int64_t iy) {
   return static_cast<std::uint64_t>(static_cast<std::uint32_t>(ix)) << 32 |
          static_cast<std::uint32_t>(iy);
+}
+
+double distance_to_outline(const std::vector<Vec2>& polygon, Vec2 p) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++)
+    nearest = std::min(nearest, distance_to_segment(p, polygon[j], polygon[i]));
+  return nearest;
 }
 
 // Even-odd rule, as obstacles' footprints.
@@ -104,12 +114,15 @@ void Ground::add_face(Face face, Vec2 low, Vec2 high) {
   const int id = static_cast<int>(faces_.size());
   faces_.push_back(face);
   walkable_faces_ += face.walkable ? 1 : 0;
-  // The first level whose cells are at least half the box's larger side:
-  // the box then spans at most 3 x 3 of them.
-  const double side = std::max(high.x - low.x, high.y - low.y);
+  // The first level on whose cells the box spans at most kMostCells (a
+  // tread 3 m wide lies on 0.5 m cells, few to a cell).
+  const auto spanned = [&](double cell) {
+    const auto count = [&](double lo, double hi) { return std::floor(hi / cell) - std::floor(lo / cell) + 1; };
+    return count(low.x, high.x) * count(low.y, high.y);
+  };
   std::size_t level = 0;
   double cell = kFirstCell;
-  while (cell < 0.5 * side) {
+  while (spanned(cell) > kMostCells) {
     cell *= kLevelRatio;
     ++level;
   }
@@ -160,10 +173,16 @@ void Ground::visit_faces_at(Vec2 p, Visit&& visit) const {
 }
 
 std::vector<GroundPoint> Ground::levels_at(Vec2 p) const {
+  thread_local std::vector<const Face*> here;
+  here.clear();
+  visit_faces_at(p, [&](const Face& face) { here.push_back(&face); });
+  return levels_of(here, p);
+}
+
+std::vector<GroundPoint> Ground::levels_of(const std::vector<const Face*>& here, Vec2 p) const {
   std::vector<GroundPoint> all;
-  visit_faces_at(p, [&](const Face& face) {
-    if (face.walkable) all.push_back({height_of(face, p), face.normal, face.surface});
-  });
+  for (const Face* face : here)
+    if (face->walkable) all.push_back({height_of(*face, p), face->normal, face->surface});
   std::sort(all.begin(), all.end(),
             [](const GroundPoint& a, const GroundPoint& b) { return a.z < b.z; });
   std::vector<GroundPoint> levels;
@@ -173,13 +192,14 @@ std::vector<GroundPoint> Ground::levels_at(Vec2 p) const {
 }
 
 std::vector<GroundPoint> Ground::standable_at(Vec2 p, double headroom) const {
-  std::vector<GroundPoint> levels = levels_at(p);
+  thread_local std::vector<const Face*> here;
+  here.clear();
+  visit_faces_at(p, [&](const Face& face) { here.push_back(&face); });
+  std::vector<GroundPoint> levels = levels_of(here, p);
   const auto covered = [&](const GroundPoint& level) {
-    bool any = false;
-    visit_faces_at(p, [&](const Face& face) {
-      any = any || covers(face, p, level.z + kSameLevel, level.z + headroom);
+    return std::any_of(here.begin(), here.end(), [&](const Face* face) {
+      return covers(*face, p, level.z + kSameLevel, level.z + headroom);
     });
-    return any;
   };
   levels.erase(std::remove_if(levels.begin(), levels.end(), covered), levels.end());
   return levels;
@@ -196,10 +216,34 @@ std::optional<GroundPoint> Ground::level_near(Vec2 p, double z, double reach) co
 }
 
 double Ground::support(const Sole& sole, double tolerance, double min_normal_z) const {
+  return static_cast<double>(soles_samples_held(sole, tolerance, min_normal_z, kSoleSamples)) /
+         kSoleSamples;
+}
+
+bool Ground::holds(const Sole& sole, double tolerance, double min_normal_z, double share) const {
+  const int may_miss = static_cast<int>(std::floor((1.0 - share) * kSoleSamples + 1e-9));
+  return soles_samples_held(sole, tolerance, min_normal_z, may_miss) >= kSoleSamples - may_miss;
+}
+
+int Ground::soles_samples_held(const Sole& sole, double tolerance, double min_normal_z,
+                               int may_miss) const {
+  // Most soles stand well inside one floor or tread: the whole sole is held
+  // if a flat top at its height holds the circle round it.
+  const double reach = 0.5 * std::hypot(sole.length, sole.width);
+  bool inside_a_top = false;
+  if (sole.normal.x == 0.0 && sole.normal.y == 0.0) {
+    visit_faces_at(ground(sole.centre), [&](const Face& face) {
+      inside_a_top = inside_a_top ||
+                     (face.triangle < 0 && std::fabs(face.d - sole.centre.z) <= tolerance &&
+                      distance_to_outline(surfaces_[face.surface].polygon, ground(sole.centre)) >=
+                          reach);
+    });
+  }
+  if (inside_a_top) return kSoleSamples;
   const Vec2 along = unit(sole.heading), across = perp(along);
-  int held = 0;
-  for (int i = 0; i < kSoleRows; ++i) {
-    for (int j = 0; j < kSoleColumns; ++j) {
+  int held = 0, missed = 0;
+  for (int i = 0; i < kSoleRows && missed <= may_miss; ++i) {
+    for (int j = 0; j < kSoleColumns && missed <= may_miss; ++j) {
       const Vec2 offset = ((i + 0.5) / kSoleRows - 0.5) * sole.length * along +
                           ((j + 0.5) / kSoleColumns - 0.5) * sole.width * across;
       const Vec2 p = ground(sole.centre) + offset;
@@ -212,9 +256,10 @@ double Ground::support(const Sole& sole, double tolerance, double min_normal_z) 
                                   std::fabs(height_of(face, p) - plane) <= tolerance);
       });
       held += supported ? 1 : 0;
+      missed += supported ? 0 : 1;
     }
   }
-  return static_cast<double>(held) / (kSoleRows * kSoleColumns);
+  return held;
 }
 
 }  // namespace footfall

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "footfall/crowd/scenario.hpp"
+#include "footfall/io/plan_file.hpp"
+#include "footfall/io/scenario_file.hpp"
 #include "footfall/terrain/ground.hpp"
 #include "footfall/scenes/scenes.hpp"
 
@@ -69,6 +71,103 @@ TEST(Footholds, OneClimbsAFlightATreadAStepAndOneComesDown) {
         });
     EXPECT_TRUE(trod) << "tread " << k;
   }
+}
+
+TEST(Footholds, APlanOnGroundReadsBackWithItsHeightsCostsAndGround) {
+  const Scenario scenario = stairs_scenario(1, 0);
+  const Plan plan = plan_scenario(scenario);
+  const std::string text = plan_to_json(plan);
+  const Plan back = parse_plan(text);
+  EXPECT_EQ(plan_to_json(back), text);
+  ASSERT_EQ(back.ground.size(), scenario.ground.size());
+  const std::vector<Footstep>& steps = back.agents[0].footsteps;
+  ASSERT_EQ(steps.size(), plan.agents[0].footsteps.size());
+  double climbed = 0.0;
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    EXPECT_EQ(steps[k].foot_height, plan.agents[0].footsteps[k].foot_height);
+    EXPECT_EQ(steps[k].cost.terrain, plan.agents[0].footsteps[k].cost.terrain);
+    climbed = std::max(climbed, steps[k].foot_height);
+  }
+  EXPECT_DOUBLE_EQ(climbed, kRiser * kStairsTreads);
+  // Up the flight costs some 4.5 times the potential energy of its rise
+  // (the step onto the first tread, longer, as a gradient).
+  double terrain = 0.0;
+  for (const Footstep& step : steps) terrain += step.cost.terrain;
+  const double potential = plan.character.mass * 9.81 * kRiser * kStairsTreads;
+  EXPECT_GT(terrain, 3.5 * potential);
+  EXPECT_LT(terrain, 5.0 * potential);
+  // A flat plan's file names no ground, heights or ground costs.
+  const std::string flat = plan_to_json(plan_scenario(two_way_hall_scenario(4, 1)));
+  for (const char* absent : {"\"ground\"", "foot_height", "\"terrain\"", "max_step_up"})
+    EXPECT_EQ(flat.find(absent), std::string::npos) << absent;
+}
+
+/// A scenario of `ground` and one agent, as JSON text.
+std::string one_on(const std::string& ground, const std::string& position,
+                   const std::string& goal) {
+  return R"({"format": "footfall-scenario", "version": 1, "ground": )" + ground +
+         R"(, "agents": [{"name": "ann", "position": )" + position + R"(, "goals": [)" + goal +
+         "]}]}";
+}
+
+std::string refusal(const std::string& text) {
+  try {
+    plan_scenario(parse_scenario(text));
+  } catch (const std::invalid_argument& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(Footholds, AgentsAndGoalsOffTheGroundOrItsHeightAreRefused) {
+  const std::string floor = R"([{"polygon": [[-5, -5], [5, -5], [5, 5], [-5, 5]], "height": 0.5}])";
+  EXPECT_EQ(refusal(one_on(floor, "[0, 0]", "[8, 0]")),
+            "<string>: agents[0].goals[0]: over no ground to stand on");
+  EXPECT_EQ(refusal(one_on(floor, "[9, 0]", "[2, 0]")),
+            "<string>: agents[0].position: over no ground to stand on");
+  EXPECT_EQ(refusal(one_on(floor, "[0, 0, 2]", "[2, 0]")),
+            "<string>: agents[0].position: no ground to stand on within 0.50 m of its height "
+            "2.00 m (the ground there is at 0.50 m)");
+  EXPECT_EQ(refusal(R"({"format": "footfall-scenario", "version": 1, "agents": [{"name": "b",
+            "position": [0, 0, 0.8], "goals": [[3, 0]]}]})"),
+            "<string>: agents[0].position: at a height of 0.80 m, but the scenario has no "
+            "ground: its floor is z = 0");
+  // Half its foot over the floor's edge.
+  EXPECT_EQ(refusal(one_on(floor, "[4.95, 0]", "[2, 0]"))
+                .rfind("<string>: agents[0].position: the standing agent's left foot is not on "
+                       "the ground (",
+                       0),
+            0u);
+  const std::string bridge = R"([{"polygon": [[-5, -5], [5, -5], [5, 5], [-5, 5]], "height": 0},
+      {"polygon": [[-1, -5], [1, -5], [1, 5], [-1, 5]], "height": 4.5, "base": 4.3}])";
+  EXPECT_EQ(refusal(one_on(bridge, "[-3, 0]", "[3, 0]")).rfind("<string>: ground: two levels over (", 0),
+            0u);
+  EXPECT_EQ(refusal(one_on(R"([{"polygon": [[0, 0], [1, 0], [1, 1], [0, 1]]}])", "[0.5, 0.5]",
+                           "[0.5, 0.5]")),
+            "<string>: ground[0].height: missing");
+}
+
+TEST(Footholds, APlatformTooHighToStepUpIsReachedByTheRampBesideIt) {
+  Scenario scenario;
+  const auto rectangle = [](double x0, double y0, double x1, double y1) {
+    return std::vector<Vec2>{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+  };
+  scenario.ground.push_back(ground_prism(rectangle(-6, -4, 4, 4), 0.0));
+  scenario.ground.push_back(ground_prism(rectangle(4, -4, 10, 4), 0.6));  // 0.6 m up
+  GroundSurface ramp;  // x 0-4 rising 0.6 m (8.5 degrees), y 2-4
+  ramp.mesh.vertices = {{0, 2, 0}, {4, 2, 0.6}, {4, 4, 0.6}, {0, 4, 0}};
+  ramp.mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  scenario.ground.push_back(ramp);
+  scenario.agents.push_back({"walker", {-3, -2}, 0.0, {{7, -2}}});
+  const Plan plan = plan_scenario(scenario);
+  const AgentPlan& walker = plan.agents[0];
+  ASSERT_EQ(walker.status, AgentStatus::kReached) << walker.reason;
+  expect_on_ground(plan, Ground(scenario.ground));
+  // Up by the ramp: it crossed y = 2 before reaching the platform.
+  const auto up = std::find_if(walker.footsteps.begin(), walker.footsteps.end(),
+                               [](const Footstep& s) { return s.foot_height > 0.59; });
+  ASSERT_NE(up, walker.footsteps.end());
+  EXPECT_GT(up->foot_position.y, 1.9);
 }
 
 }  // namespace

@@ -54,7 +54,15 @@ struct AgentSpec {
   /// from scaled() of the scenario's; its plan keeps it, AgentPlan::scale).
   /// [kLeastScale, kMostScale]
   double scale = 1;
+  /// The height it stands at, where its position gives one ([x, y, z]): it
+  /// stands on the ground within kHeightReach of it. [m]
+  std::optional<double> height{};
+  /// Per goal, the height given with it, or none; empty: none given. [m]
+  std::vector<std::optional<double>> goal_heights{};
 };
+
+/// How near the ground an agent's or goal's given height must be. [m]
+constexpr double kHeightReach = 0.5;
 
 /// What is wrong with an agent's facings at its goals: the field
 /// ("end_facing", "goal_facings" or "goal_facings[k]") and the problem; none.

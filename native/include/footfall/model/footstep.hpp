@@ -133,8 +133,10 @@ struct StepCost {
   double fixed_rate = 0;    ///< dE1 = R T. [J]
   double speed_change = 0;  ///< dE2 = m/2 |v_desired^2 - (v0 cos 2 theta)^2|. [J]
   double curvature = 0;     ///< dE3 = w m alpha length. [J]
-  /// Sum of the three terms (equation 2). [J]
-  double total() const { return fixed_rate + speed_change + curvature; }
+  /// On ground: walking up or down it (terrain_cost). [J]
+  double terrain = 0;
+  /// Sum of the terms (equation 2, and the ground's). [J]
+  double total() const { return fixed_rate + speed_change + curvature + terrain; }
 };
 
 /// One planned footstep with everything needed to evaluate it analytically.
@@ -145,6 +147,8 @@ struct Footstep {
   double start_time = 0;                     ///< [s]
   double end_time = 0;                       ///< [s]
   Vec2 foot_position;                        ///< Where the foot is planted. [m]
+  /// The ground's height under the planted foot; 0 on flat ground. [m]
+  double foot_height = 0;
   OrientationInterval orientation_interval;  ///< Valid orientations of the planted foot.
   double foot_orientation = 0;  ///< Chosen orientation (post-process, section 4). [rad]
   Vec2 com_start;               ///< [m]
@@ -245,6 +249,14 @@ std::array<Circle, 3> torso_circles(Vec2 com, double facing, const CharacterPara
 inline Behavior torso_width_of(const Footstep& step) {
   return step.kind == StepKind::kStop ? Behavior::kArmsIn : step.behavior;
 }
+
+/// The energy of walking `run` metres while the body rises `rise` metres
+/// (negative: falls), over level walking's: Minetti et al. 2002's metabolic
+/// cost per kilogram and metre of a gradient (a polynomial fitted for -45 %
+/// to +45 %, cheapest near -10 %) less its level cost, times `mass` and
+/// `run`; steeper down is held at -45 %, steeper up (stairs) costs 4.5
+/// times the potential energy of the rise, if that is more. [J]
+double terrain_cost(double mass, double run, double rise);
 
 /// The state at the end of `step` taken from `state`: the COM where the step
 /// leaves it, its foot planted, the torso facing the step's phi.

@@ -101,6 +101,8 @@ class Ground {
   /// within `tolerance` of the sole's plane, on a slope whose normal has at
   /// least `min_normal_z` (the cosine of the steepest walkable slope). [0, 1]
   double support(const Sole& sole, double tolerance, double min_normal_z) const;
+  /// True if support() is at least `share`; stops sampling once it cannot be.
+  bool holds(const Sole& sole, double tolerance, double min_normal_z, double share) const;
 
  private:
   /// A prism's top, or a mesh triangle that is not on edge: walkable if it
@@ -112,8 +114,8 @@ class Ground {
     double d = 0;       ///< The face's plane: dot(normal, x) = d.
     bool walkable = false;
   };
-  /// Faces whose boxes span at most a few cells of a level's size are kept
-  /// in that level's cells; the levels' cells grow by kLevelRatio.
+  /// Each face is kept in the cells of the first level on which its box
+  /// spans at most 16; the levels' cells grow by four from 0.5 m.
   struct IndexLevel {
     double cell = 0;  ///< [m]
     std::unordered_map<std::uint64_t, std::vector<int>> cells;
@@ -125,6 +127,12 @@ class Ground {
   /// their heights, and the unit normal pointing out of the face.
   template <class Visit>
   void visit_walkable_edges(Visit&& visit) const;
+  /// The samples of support()'s grid held, counting until `may_miss` are
+  /// not (then fewer than all that are held may be counted).
+  int soles_samples_held(const Sole& sole, double tolerance, double min_normal_z,
+                         int may_miss) const;
+  /// The levels of the walkable faces among `here`, which hold `p`.
+  std::vector<GroundPoint> levels_of(const std::vector<const Face*>& here, Vec2 p) const;
   bool contains(const Face& face, Vec2 p) const;
   double height_of(const Face& face, Vec2 p) const;
   /// True if `face` holds solid ground within (z, top] over `p`.
