@@ -339,7 +339,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
   SearchOptions short_search = options;
   short_search.horizon = kBlockedHorizon;
   // Standing where it must make room, with nowhere to go but aside.
-  bool boxed_in = false;
+  bool boxed_in = false, steps_aside = false;
   if (!moves && w.state.standing() && must_make_room(walkers, i, now, planner)) {
     // In a face-off (two blocks of a counterflow, a knot among boxes) no one
     // gains on its own way, and waiting only stands in the way: it makes
@@ -348,13 +348,15 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
     if (auto aside = step_aside(w.state, keep_out, others, planner, mesh, short_search)) {
       result = std::move(*aside);
       boxed_in = false;
+      steps_aside = true;
     }
   }
   Attempt a;
   a.from = w.state;
   a.steps = result.footsteps;
   a.end = result.footsteps.empty() ? w.state : result.end_state;
-  a.reached = result.status == Status::kSuccess && target.is_goal;
+  // Aside, it reached the place it makes room at, not its goal.
+  a.reached = result.status == Status::kSuccess && target.is_goal && !steps_aside;
   if (w.plan.footsteps.empty() && dot(unit(w.state.facing), target.point - w.state.com) < 0.0)
     turn_first(w.state, a);
   if (!leaves_now(w, a.reached)) cut_to_rest(planner, w.state, others, options, a);
