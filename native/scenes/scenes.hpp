@@ -59,8 +59,9 @@ Scenario city_scenario(int agents, double size, std::uint64_t seed);
 /// A flight of kStairsTreads treads kTreadDepth deep rising kRiser each,
 /// kStairsWidth wide, from a floor at 0 (x from -8 to 0) to a landing (8 m
 /// long) at its top; nothing beside them. `up` agents start on the floor
-/// and climb to the landing, `down` start on the landing and go down, in
-/// rows abreast. [m]
+/// and climb to the landing, `down` start on the landing and go down, each
+/// way two abreast on its right half, in rows 1 m apart, each to its own
+/// goal 4-6 m past the flight (the first rows the furthest). [m]
 constexpr int kStairsTreads = 6;
 constexpr double kTreadDepth = 0.3, kRiser = 0.17, kStairsWidth = 3.0;
 Scenario stairs_scenario(int up, int down);

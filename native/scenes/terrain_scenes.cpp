@@ -24,15 +24,16 @@ Scenario stairs_scenario(int up, int down) {
   const double top = kTreadDepth * kStairsTreads;
   scenario.ground.push_back(
       ground_prism(rectangle(top, -kStairsWidth / 2, top + 8, kStairsWidth / 2), kRiser * kStairsTreads));
-  // Abreast, 0.8 m apart across the flight, rows 1 m apart.
-  const int across = static_cast<int>(std::floor((kStairsWidth - 0.8) / 0.8)) + 1;
+  // Each way on its own right half of the flight, two abreast 0.7 m apart,
+  // rows 1 m apart.
   for (int i = 0; i < up + down; ++i) {
     const bool going_up = i < up;
     const int n = going_up ? i : i - up;
-    const double y = -0.4 * (across - 1) + 0.8 * (n % across);
-    const double back = 1.0 * (n / across);
-    const Vec2 start = going_up ? Vec2{-2.0 - back, y} : Vec2{top + 2.0 + back, -y};
-    const Vec2 goal = going_up ? Vec2{top + 6.0, y} : Vec2{-6.0, -y};
+    const double lane = 0.4 + 0.7 * (n % 2);  // from the middle of the flight
+    const double back = 1.0 * (n / 2);
+    const Vec2 start = going_up ? Vec2{-2.0 - back, -lane} : Vec2{top + 2.0 + back, lane};
+    // The first rows go furthest: none has to pass one standing at its goal.
+    const Vec2 goal = going_up ? Vec2{top + 6.0 - back, -lane} : Vec2{-6.0 + back, lane};
     scenario.agents.push_back({(going_up ? "up" : "down") + std::to_string(n), start,
                                going_up ? 0.0 : kPi, {goal}});
   }

@@ -276,6 +276,11 @@ CrowdGltfSummary write_crowd_gltf(const Plan& plan, const Rig& rig, const std::s
                                   const CrowdGltfOptions& options) {
   if (!(options.fps >= 1 && options.fps <= 240))
     throw std::invalid_argument("fps: expected a number from 1 to 240");
+  // Until the animation puts feet on treads (issue 51), not at z = 0 instead.
+  if (!plan.ground.empty())
+    throw std::invalid_argument(
+        "ground: the plan walks on ground (stairs, ramps, levels); animating it is not "
+        "supported yet (its feet would be put at z = 0)");
   const RigData& data = rig.data();
   for (const AgentPlan& agent : plan.agents) check_size(plan, agent, data);
   double end = 0;

@@ -10,6 +10,7 @@
 #include "footfall/crowd/scenario.hpp"
 #include "footfall/io/plan_file.hpp"
 #include "footfall/io/scenario_file.hpp"
+#include "footfall/plan/metrics.hpp"
 #include "footfall/terrain/ground.hpp"
 #include "footfall/scenes/scenes.hpp"
 
@@ -71,6 +72,18 @@ TEST(Footholds, OneClimbsAFlightATreadAStepAndOneComesDown) {
         });
     EXPECT_TRUE(trod) << "tread " << k;
   }
+}
+
+TEST(Footholds, ACrowdGoesUpAndDownAFlightEachOnItsTreadsAndClearOfTheOthers) {
+  const Scenario scenario = stairs_scenario(6, 6);
+  RunControl control;
+  control.threads = 2;
+  const Plan plan = plan_scenario(scenario, control);
+  for (const AgentPlan& agent : plan.agents)
+    EXPECT_EQ(agent.status, AgentStatus::kReached) << agent.name << ": " << agent.reason;
+  const std::vector<double> highest = expect_on_ground(plan, Ground(scenario.ground));
+  for (std::size_t i = 0; i < 6; ++i) EXPECT_DOUBLE_EQ(highest[i], kRiser * kStairsTreads);
+  EXPECT_EQ(measure_plan(plan).overlaps, 0);
 }
 
 TEST(Footholds, APlanOnGroundReadsBackWithItsHeightsCostsAndGround) {

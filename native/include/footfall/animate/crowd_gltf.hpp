@@ -34,7 +34,8 @@ struct CrowdGltfSummary {
 /// holding a copy of the rig's nodes, a skin of its own over the rig's shared
 /// meshes, and one animation named after it; an agent that leaves is scaled
 /// to nothing after it has left. std::invalid_argument names the agent when
-/// the rig is not the size it was planned with, or the fps is out of range.
+/// the rig is not the size it was planned with, or the fps is out of range,
+/// and refuses a plan on ground (its "ground"), which it cannot animate yet.
 CrowdGltfSummary write_crowd_gltf(const Plan& plan, const Rig& rig, const std::string& path,
                                   const CrowdGltfOptions& options = {});
 
