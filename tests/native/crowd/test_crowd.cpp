@@ -54,6 +54,11 @@ Plan plan_clear_of_each_other(const Scenario& scenario, int threads = 1) {
   for (std::size_t i = 0; i < plan.agents.size(); ++i) {
     EXPECT_EQ(plan.agents[i].status, AgentStatus::kReached)
         << plan.agents[i].name << ": " << plan.agents[i].reason;
+    // Reached, it stands (or left) at its last goal, come to rest past it.
+    const Vec2 end = plan.agents[i].footsteps.empty() ? plan.agents[i].start.com
+                                                      : plan.agents[i].footsteps.back().com_end;
+    EXPECT_LT(distance(end, scenario.agents[i].goals.back()), scenario.planner.goal_tolerance + 0.5)
+        << plan.agents[i].name;
     EXPECT_EQ(metrics.agents[i].collision_episodes, 0) << plan.agents[i].name;
     expect_smooth_motion(plan.agents[i], scenario.character);
   }
