@@ -27,6 +27,7 @@
 #include "footfall/io/scenario_file.hpp"
 #include "footfall/io/steersuite.hpp"
 #include "footfall/navmesh/navmesh.hpp"
+#include "footfall/plan/ground_check.hpp"
 #include "footfall/plan/metrics.hpp"
 #include "footfall/plan/plan.hpp"
 #include "footfall/scenes/scenes.hpp"
@@ -116,7 +117,7 @@ void print_table(const footfall::Plan& plan, std::ostream& out) {
 }
 
 void print_metrics(const footfall::PlanMetrics& metrics, const footfall::BodyCheck& body,
-                   std::ostream& out) {
+                   const footfall::GroundCheck& ground, std::ostream& out) {
   const int name_width =
       column_width(metrics.agents, 14, [](const footfall::AgentMetrics& m) { return m.name; });
   out << std::left << std::setw(name_width) << "agent" << std::setw(9) << "reached" << std::right
@@ -139,6 +140,10 @@ void print_metrics(const footfall::PlanMetrics& metrics, const footfall::BodyChe
       << std::setprecision(2)
       << "SteerBench (" << metrics.rate << " Hz): composite01 " << metrics.composite01
       << ", composite02 " << metrics.composite02 << "\n";
+  if (ground.footholds > 0)
+    out << "ground: " << ground.footholds << " footholds; off the ground " << ground.off_ground
+        << ", soles unsupported " << ground.unsupported << ", rises over the limit "
+        << ground.over_rise << ", swing feet through the ground " << ground.swing << "\n";
 }
 
 // The options after the verb: "-o PATH", "--threads N", plan's "--fixed
@@ -410,7 +415,8 @@ int run(int argc, char** argv) {
         options.animate_given || !options.fixed.empty() || !options.agents.empty())
       throw UsageError("metrics takes one plan file");
     const footfall::Plan plan = footfall::load_plan(positional[0]);
-    print_metrics(footfall::measure_plan(plan), footfall::check_body(plan), std::cout);
+    print_metrics(footfall::measure_plan(plan), footfall::check_body(plan),
+                  footfall::check_ground(plan), std::cout);
     return 0;
   }
   if (verb == "animate") {

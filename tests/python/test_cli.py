@@ -305,46 +305,37 @@ def test_an_agent_that_cannot_reach_its_goal_is_named_with_the_narrowest_place(c
     assert wide["narrowest"]["behavior"] == "side_step"
 
 
-def stairs_json(agents):
-    """A floor at 0 (x -6 to 0), four treads 0.3 m deep rising 0.17 m each,
-    and a landing at 0.68 m (x 1.2 to 6), all 3 m wide."""
-    def rectangle(x0, x1):
-        return [[x0, -1.5], [x1, -1.5], [x1, 1.5], [x0, 1.5]]
-
-    ground = [{"polygon": rectangle(-6, 0), "height": 0}]
-    ground += [{"polygon": rectangle(0.3 * k, 0.3 * (k + 1)), "height": 0.17 * (k + 1)} for k in range(4)]
-    ground += [{"polygon": rectangle(1.2, 6), "height": 0.68}]
-    return scenario_json(ground=ground, agents=agents)
+STAIRS = pathlib.Path(__file__).resolve().parents[1] / "data" / "stairs.json"
 
 
 def test_a_scenario_on_ground_plans_every_foot_at_the_height_of_its_tread(cli, tmp_path):
-    scenario = tmp_path / "stairs.json"
-    scenario.write_text(stairs_json([{"name": "up", "position": [-3, 0], "goals": [[4, 0, 0.68]]}]))
+    """tests/data/stairs.json: six treads 0.3 m deep rising 0.17 m each from
+    a floor at 0 (x < 0) to a landing at 1.02 m (x > 1.8); six agents go up
+    and six down."""
     out = tmp_path / "plan.json"
-    result = run(cli, "plan", str(scenario), "-o", str(out))
+    result = run(cli, "plan", str(STAIRS), "-o", str(out))
     assert result.returncode == 0, result.stderr
     plan = json.loads(out.read_text())
-    assert len(plan["ground"]) == 6 and "max_step_up" in plan["character"]
-    steps = plan["agents"][0]["footsteps"]
-    assert plan["agents"][0]["status"] == "reached"
-    heights = steps["foot_height"]
-    for (x, _), z in zip(steps["foot_position"], heights):
-        tread = min(max(math.floor(x / 0.3) + 1, 0), 4) if x < 1.2 else 4
-        assert z == pytest.approx(0.17 * tread, abs=1e-9), (x, z)
-    # A tread a step: no rise over one riser.
-    assert max(b - a for a, b in zip(heights, heights[1:])) == pytest.approx(0.17)
+    assert len(plan["ground"]) == 8 and "max_step_up" in plan["character"]
+    for agent in plan["agents"]:
+        assert agent["status"] == "reached", agent["name"]
+        steps = agent["footsteps"]
+        heights = steps["foot_height"]
+        for (x, _), z in zip(steps["foot_position"], heights):
+            tread = 0 if x < 0 else 6 if x >= 1.8 else math.floor(x / 0.3) + 1
+            assert z == pytest.approx(0.17 * tread, abs=1e-9), (agent["name"], x, z)
+        # A tread a step: no rise or drop over one riser.
+        assert max(abs(b - a) for a, b in zip(heights, heights[1:])) == pytest.approx(0.17)
 
 
 def test_a_plan_on_ground_is_not_animated_and_nothing_is_written(cli, tmp_path):
-    scenario = tmp_path / "stairs.json"
-    scenario.write_text(stairs_json([{"name": "up", "position": [-3, 0], "goals": [[4, 0]]}]))
     plan, glb = tmp_path / "plan.json", tmp_path / "crowd.glb"
     rig = pathlib.Path(__file__).resolve().parents[2] / "rigs" / "footfall_humanoid.glb"
-    result = run(cli, "plan", str(scenario), "-o", str(plan), "--glb", str(glb), "--rig", str(rig))
+    result = run(cli, "plan", str(STAIRS), "-o", str(plan), "--glb", str(glb), "--rig", str(rig))
     assert result.returncode == 2
     assert "not supported yet (its feet would be put at z = 0)" in result.stderr
     assert not plan.exists() and not glb.exists()
-    assert run(cli, "plan", str(scenario), "-o", str(plan)).returncode == 0
+    assert run(cli, "plan", str(STAIRS), "-o", str(plan)).returncode == 0
     result = run(cli, "animate", str(plan), "-o", str(glb), "--rig", str(rig))
     assert result.returncode != 0 and "its feet would be put at z = 0" in result.stderr
     assert not glb.exists()

@@ -8,6 +8,7 @@
 
 #include "footfall/fullbody/step_body_test.hpp"
 #include "footfall/plan/section_lookup.hpp"
+#include "footfall/terrain/foothold.hpp"
 #include "footfall/terrain/ground.hpp"
 #include "model/contact.hpp"
 #include "planner/validity_impl.hpp"
@@ -186,8 +187,7 @@ ValidityChecker::Impl::Impl(const CharacterParams& character, const PlannerParam
     : character_(character),
       params_(planner),
       obstacles_(obstacles),
-      ground_(ground != nullptr && !ground->empty() ? ground : nullptr),
-      min_normal_z_(std::cos(character.max_slope)) {
+      ground_(ground != nullptr && !ground->empty() ? ground : nullptr) {
   validate(character_);
   validate(params_);
   std::vector<Gait> gaits = params_.gaits;
@@ -258,59 +258,17 @@ bool ValidityChecker::Impl::hits_obstacles(const Footstep& step, bool shoulders_
   return false;
 }
 
-namespace {
-
-constexpr double kSoleTolerance = 0.02;  // [m] the sole's plane to the ground it rests on
-constexpr double kSwingSpacing = 0.05;   // [m] between samples of a swinging foot's line
-// [m] ground this far above the higher foothold is an overhang (the body's
-// test), not ground the foot goes through
-constexpr double kSwingReach = 0.5;
-
-}  // namespace
 
 ValidityChecker::Impl::Foothold ValidityChecker::Impl::foothold(const Footstep& step,
                                                                const FootstepState& before) const {
   if (ground_ == nullptr) return Foothold::kOnGround;
-  const double headroom = character_.body_height;
-  const auto standing_height = [&](Vec2 p) -> std::optional<GroundPoint> {
-    const std::vector<GroundPoint> levels = ground_->standable_at(p, headroom);
-    if (levels.empty()) return std::nullopt;
-    return levels.front();
-  };
-  const std::optional<GroundPoint> here = standing_height(step.foot_position);
-  if (!here || here->normal.z < min_normal_z_) return Foothold::kOff;
   const int planted = static_cast<int>(step.foot);
-  const std::optional<GroundPoint> other = standing_height(before.feet[1 - planted]);
-  if (other) {
-    const double rise = here->z - other->z;
-    if (rise > character_.max_step_up || -rise > character_.max_step_down) return Foothold::kOff;
+  switch (foothold_fault(*ground_, character_, step.foot_position, step.orientation_interval,
+                         before.feet[1 - planted], before.feet[planted])) {
+    case FootholdFault::kNone: return Foothold::kOnGround;
+    case FootholdFault::kUnsupported: return Foothold::kUnsupported;
+    default: return Foothold::kOff;
   }
-  // Held at both ends of its orientations and between: the plan chooses
-  // among them later.
-  const OrientationInterval& turns = step.orientation_interval;
-  const double middle = turns.inner + 0.5 * wrap_angle(turns.outer - turns.inner);
-  for (const double orientation : {turns.inner, turns.outer, middle}) {
-    if (orientation != turns.inner && turns.outer == turns.inner) break;
-    const Sole sole{{step.foot_position.x, step.foot_position.y, here->z}, here->normal,
-                    orientation, character_.sole_length, character_.sole_width};
-    if (!ground_->holds(sole, kSoleTolerance, min_normal_z_, character_.sole_support))
-      return Foothold::kUnsupported;
-  }
-  // The swinging foot, from where it stood.
-  const Vec2 from = before.feet[planted];
-  const std::optional<GroundPoint> lifted = standing_height(from);
-  if (!lifted || from == step.foot_position) return Foothold::kOnGround;
-  // It lifts over what lies between as high as the higher foothold (a
-  // tread's nosing, a kerb), not over a hump above both.
-  const double top = std::max(lifted->z, here->z);
-  const int samples =
-      static_cast<int>(std::ceil(distance(from, step.foot_position) / kSwingSpacing));
-  for (int i = 1; i < samples; ++i) {
-    const double t = static_cast<double>(i) / samples;
-    for (const GroundPoint& level : ground_->levels_at(from + t * (step.foot_position - from)))
-      if (level.z > top + kSoleTolerance && level.z <= top + kSwingReach) return Foothold::kOff;
-  }
-  return Foothold::kOnGround;
 }
 
 double ValidityChecker::Impl::ground_height(Vec2 p) const {

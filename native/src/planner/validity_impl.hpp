@@ -110,7 +110,6 @@ struct ValidityChecker::Impl {
   PlannerParams params_;
   const ObstacleMap& obstacles_;
   const Ground* ground_;  // null: the plane z = 0
-  double min_normal_z_ = 0;  // cos(max_slope)
   double torso_extent_ = 0;  // how far the torso circles reach from the COM [m]
   std::vector<TabledAction> actions_;
 };

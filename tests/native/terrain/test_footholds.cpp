@@ -10,6 +10,7 @@
 #include "footfall/crowd/scenario.hpp"
 #include "footfall/io/plan_file.hpp"
 #include "footfall/io/scenario_file.hpp"
+#include "footfall/plan/ground_check.hpp"
 #include "footfall/plan/metrics.hpp"
 #include "footfall/terrain/ground.hpp"
 #include "footfall/scenes/scenes.hpp"
@@ -84,6 +85,29 @@ TEST(Footholds, ACrowdGoesUpAndDownAFlightEachOnItsTreadsAndClearOfTheOthers) {
   const std::vector<double> highest = expect_on_ground(plan, Ground(scenario.ground));
   for (std::size_t i = 0; i < 6; ++i) EXPECT_DOUBLE_EQ(highest[i], kRiser * kStairsTreads);
   EXPECT_EQ(measure_plan(plan).overlaps, 0);
+  const GroundCheck check = check_ground(plan);
+  EXPECT_GT(check.footholds, 200);
+  EXPECT_EQ(check.off_ground + check.unsupported + check.over_rise + check.swing, 0);
+}
+
+TEST(Footholds, TheGroundCheckFindsAFootOnANosingOrAStepTooHigh) {
+  Plan plan = plan_scenario(stairs_scenario(1, 0));
+  std::vector<Footstep>& steps = plan.agents[0].footsteps;
+  const auto on_flight = std::find_if(steps.begin(), steps.end(), [](const Footstep& s) {
+    return s.foot_position.x > kTreadDepth && s.foot_position.x < 2 * kTreadDepth;
+  });
+  ASSERT_NE(on_flight, steps.end());
+  const Footstep kept = *on_flight;
+  // Onto the nosing of the tread above.
+  on_flight->foot_position.x = 2 * kTreadDepth - 0.02;
+  EXPECT_EQ(check_ground(plan).unsupported, 1);
+  // Two treads up from the other foot.
+  on_flight->foot_position.x = 3.5 * kTreadDepth;
+  EXPECT_GE(check_ground(plan).over_rise, 1);
+  // Beside the flight.
+  *on_flight = kept;
+  on_flight->foot_position.y = kStairsWidth;
+  EXPECT_EQ(check_ground(plan).off_ground, 1);
 }
 
 TEST(Footholds, APlanOnGroundReadsBackWithItsHeightsCostsAndGround) {

@@ -1,0 +1,31 @@
+// Footfall — whether a foot may be planted on the ground: the judgement the
+// footstep planner applies to its steps and `footfall metrics` to a plan's.
+#pragma once
+
+#include "footfall/model/footstep.hpp"
+#include "footfall/model/params.hpp"
+#include "footfall/terrain/ground.hpp"
+
+namespace footfall {
+
+/// What is wrong with a foothold, if anything.
+enum class FootholdFault {
+  kNone,
+  kOffGround,    ///< No standable level under the foot, or one steeper than max_slope.
+  kUnsupported,  ///< Less than sole_support of the sole held (a nosing, an edge).
+  kRise,         ///< Over max_step_up above the other foot, or max_step_down below it.
+  kSwing,        ///< The swinging foot passes over ground above the higher foothold.
+};
+
+/// A foot planted at `foot`, turned anywhere in `turns` (its ends and its
+/// middle are tested; inner == outer: one orientation), while the other foot
+/// stands at `other`, having swung from `from`, on ground of one level at
+/// every point: the sole of `character` (sole_length by sole_width) held for
+/// at least sole_support within 2 cm of its plane on a slope within
+/// max_slope, the rise within the step limits, and the swing over nothing
+/// more than 2 cm above the higher of its two footholds (a tread's nosing, a
+/// kerb; ground over 0.5 m above is an overhang, the body's business).
+FootholdFault foothold_fault(const Ground& ground, const CharacterParams& character, Vec2 foot,
+                             const OrientationInterval& turns, Vec2 other, Vec2 from);
+
+}  // namespace footfall
