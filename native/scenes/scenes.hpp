@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "footfall/crowd/scenario.hpp"
+#include "footfall/terrain/ground.hpp"
 
 namespace footfall {
 
@@ -65,5 +66,20 @@ Scenario city_scenario(int agents, double size, std::uint64_t seed);
 constexpr int kStairsTreads = 6;
 constexpr double kTreadDepth = 0.3, kRiser = 0.17, kStairsWidth = 3.0;
 Scenario stairs_scenario(int up, int down);
+
+/// A platform kPlatformHeight up (x from 4 to 10), too high to step onto,
+/// beside a floor at 0 (x from -6 to 4), 8 m wide; a ramp 4 m long and 2 m
+/// wide leads up to it along its edge (y 2-4). One walker crosses from the
+/// floor to the platform. [m]
+constexpr double kPlatformHeight = 0.6;
+Scenario ramp_scenario();
+
+/// A height field of cells x cells squares of side `cell`, centred on the
+/// origin, raised as a round hill `height` high whose slope spreads over
+/// `spread` (a Gaussian of that deviation). [m]
+GroundSurface hill_field(int cells, double cell, double height, double spread);
+/// Two walkers crossing a hill 3 m high (hill_field(100, 0.3, 3, 5): 30 m
+/// square, 20,000 triangles, slopes up to 20 degrees), 24 m each. [m]
+Scenario hill_scenario();
 
 }  // namespace footfall

@@ -40,4 +40,41 @@ Scenario stairs_scenario(int up, int down) {
   return scenario;
 }
 
+Scenario ramp_scenario() {
+  Scenario scenario;
+  scenario.ground.push_back(ground_prism(rectangle(-6, -4, 4, 4), 0.0));
+  scenario.ground.push_back(ground_prism(rectangle(4, -4, 10, 4), kPlatformHeight));
+  GroundSurface ramp;  // x 0-4 up to the platform, y 2-4
+  ramp.mesh.vertices = {{0, 2, 0}, {4, 2, kPlatformHeight}, {4, 4, kPlatformHeight}, {0, 4, 0}};
+  ramp.mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  scenario.ground.push_back(ramp);
+  scenario.agents.push_back({"walker", {-3, -2}, 0.0, {{7, -2}}});
+  return scenario;
+}
+
+GroundSurface hill_field(int cells, double cell, double height, double spread) {
+  GroundSurface field;
+  const double half = 0.5 * cells * cell;
+  for (int i = 0; i <= cells; ++i)
+    for (int j = 0; j <= cells; ++j) {
+      const double x = i * cell - half, y = j * cell - half;
+      field.mesh.vertices.push_back({x, y, height * std::exp(-(x * x + y * y) / (2 * spread * spread))});
+    }
+  for (int i = 0; i < cells; ++i)
+    for (int j = 0; j < cells; ++j) {
+      const int a = i * (cells + 1) + j, b = a + cells + 1;
+      field.mesh.triangles.push_back({a, b, b + 1});  // anticlockwise from above
+      field.mesh.triangles.push_back({a, b + 1, a + 1});
+    }
+  return field;
+}
+
+Scenario hill_scenario() {
+  Scenario scenario;
+  scenario.ground.push_back(hill_field(100, 0.3, 3.0, 5.0));
+  scenario.agents.push_back({"over", {-12, -1}, 0.0, {{12, 1}}});
+  scenario.agents.push_back({"across", {-12, 3}, 0.0, {{12, -3}}});
+  return scenario;
+}
+
 }  // namespace footfall

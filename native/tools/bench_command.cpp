@@ -15,6 +15,7 @@
 #include "footfall/plan/plan.hpp"
 #include "footfall/planner/planner.hpp"
 #include "footfall/scenes/scenes.hpp"
+#include "footfall/terrain/ground.hpp"
 #include "util/seeded_random.hpp"
 
 namespace footfall::tools {
@@ -30,6 +31,7 @@ struct Workload {
   std::string name;
   std::vector<Obstacle> obstacles;
   std::vector<Query> queries;
+  std::vector<GroundSurface> ground{};  ///< None: the plane z = 0.
 };
 
 Query standing_query(Vec2 from, Vec2 to) {
@@ -62,6 +64,12 @@ std::vector<Workload> workloads() {
   all.push_back({"around a box", {box_obstacle({4, 0}, {1, 1})}, {standing_query({0, 0}, {8, 0})}});
   all.push_back({"0.7 m door", wall_with_door(4.0, 0.7), {standing_query({0, 0}, {8, 0})}});
   all.push_back(box_field_workload());
+  // On ground, each beside the same walk on the flat.
+  all.push_back({"8 m up six stairs", {}, {standing_query({-3, 0}, {5, 0})},
+                 stairs_scenario(0, 0).ground});
+  all.push_back({"8 m on the flat", {}, {standing_query({-3, 0}, {5, 0})}});
+  all.push_back({"10 m over a hill", {}, {standing_query({-5, 0.5}, {5, 0.5})},
+                 hill_scenario().ground});
   return all;
 }
 
@@ -81,7 +89,8 @@ void run_bench(int repeat, std::ostream& out) {
       << "\n";
   for (const Workload& workload : workloads()) {
     const ObstacleMap map(workload.obstacles);
-    const FootstepPlanner planner(CharacterParams{}, PlannerParams{}, map);
+    const Ground ground(workload.ground);
+    const FootstepPlanner planner(CharacterParams{}, PlannerParams{}, map, nullptr, &ground);
     std::vector<double> milliseconds;
     double steps = 0, generated = 0, expanded = 0;
     int reached = 0;

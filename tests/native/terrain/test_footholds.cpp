@@ -185,26 +185,28 @@ TEST(Footholds, AgentsAndGoalsOffTheGroundOrItsHeightAreRefused) {
 }
 
 TEST(Footholds, APlatformTooHighToStepUpIsReachedByTheRampBesideIt) {
-  Scenario scenario;
-  const auto rectangle = [](double x0, double y0, double x1, double y1) {
-    return std::vector<Vec2>{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-  };
-  scenario.ground.push_back(ground_prism(rectangle(-6, -4, 4, 4), 0.0));
-  scenario.ground.push_back(ground_prism(rectangle(4, -4, 10, 4), 0.6));  // 0.6 m up
-  GroundSurface ramp;  // x 0-4 rising 0.6 m (8.5 degrees), y 2-4
-  ramp.mesh.vertices = {{0, 2, 0}, {4, 2, 0.6}, {4, 4, 0.6}, {0, 4, 0}};
-  ramp.mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-  scenario.ground.push_back(ramp);
-  scenario.agents.push_back({"walker", {-3, -2}, 0.0, {{7, -2}}});
+  const Scenario scenario = ramp_scenario();
   const Plan plan = plan_scenario(scenario);
   const AgentPlan& walker = plan.agents[0];
   ASSERT_EQ(walker.status, AgentStatus::kReached) << walker.reason;
   expect_on_ground(plan, Ground(scenario.ground));
   // Up by the ramp: it crossed y = 2 before reaching the platform.
   const auto up = std::find_if(walker.footsteps.begin(), walker.footsteps.end(),
-                               [](const Footstep& s) { return s.foot_height > 0.59; });
+                               [](const Footstep& s) { return s.foot_height > kPlatformHeight - 0.01; });
   ASSERT_NE(up, walker.footsteps.end());
   EXPECT_GT(up->foot_position.y, 1.9);
+}
+
+TEST(Footholds, WalkersCrossAHillWithEveryFootOnItsSlope) {
+  const Scenario scenario = hill_scenario();
+  const Plan plan = plan_scenario(scenario);
+  for (const AgentPlan& agent : plan.agents)
+    EXPECT_EQ(agent.status, AgentStatus::kReached) << agent.name << ": " << agent.reason;
+  const std::vector<double> highest = expect_on_ground(plan, Ground(scenario.ground));
+  EXPECT_GT(highest[0], 2.0) << "over the hill, not round it";
+  const GroundCheck check = check_ground(plan);
+  EXPECT_GT(check.footholds, 60);
+  EXPECT_EQ(check.off_ground + check.unsupported + check.over_rise + check.swing, 0);
 }
 
 }  // namespace
