@@ -53,6 +53,19 @@ double distance_to_outline(const std::vector<Vec2>& polygon, Vec2 p) {
   return nearest;
 }
 
+// True if every turn along the polygon goes the same way (no vertex reflex).
+bool is_convex(const std::vector<Vec2>& polygon) {
+  bool left = false, right = false;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec2 a = polygon[i], b = polygon[(i + 1) % polygon.size()],
+               c = polygon[(i + 2) % polygon.size()];
+    const double turn = cross(b - a, c - b);
+    left = left || turn > 0.0;
+    right = right || turn < 0.0;
+  }
+  return !(left && right);
+}
+
 // Even-odd rule, as obstacles' footprints.
 bool inside_polygon(const std::vector<Vec2>& polygon, Vec2 p) {
   bool inside = false;
@@ -84,10 +97,12 @@ Ground::Ground(std::vector<GroundSurface> surfaces) : surfaces_(std::move(surfac
   if (triangles > kMaxTriangles)
     refuse("ground", std::to_string(triangles) + " triangles in all meshes, at most " +
                          std::to_string(kMaxTriangles));
+  convex_.resize(surfaces_.size(), false);
   for (std::size_t i = 0; i < surfaces_.size(); ++i) {
     const GroundSurface& surface = surfaces_[i];
     const int index = static_cast<int>(i);
     if (!surface.is_mesh()) {
+      convex_[i] = is_convex(surface.polygon);
       Vec2 low = surface.polygon[0], high = low;
       for (const Vec2 p : surface.polygon) {
         low = {std::min(low.x, p.x), std::min(low.y, p.y)};
@@ -227,26 +242,34 @@ bool Ground::holds(const Sole& sole, double tolerance, double min_normal_z, doub
 
 int Ground::soles_samples_held(const Sole& sole, double tolerance, double min_normal_z,
                                int may_miss) const {
-  // Most soles stand well inside one floor or tread: the whole sole is held
-  // if a flat top at its height holds the circle round it.
+  // Most soles stand inside one floor or tread: the whole sole is held if a
+  // flat top at its height holds the circle round it, or (a convex top) its
+  // four corners.
+  const Vec2 along = unit(sole.heading), across = perp(along);
+  const Vec2 centre = ground(sole.centre);
   const double reach = 0.5 * std::hypot(sole.length, sole.width);
+  const Vec2 half_along = 0.5 * sole.length * along, half_across = 0.5 * sole.width * across;
   bool inside_a_top = false;
   if (sole.normal.x == 0.0 && sole.normal.y == 0.0) {
-    visit_faces_at(ground(sole.centre), [&](const Face& face) {
-      inside_a_top = inside_a_top ||
-                     (face.triangle < 0 && std::fabs(face.d - sole.centre.z) <= tolerance &&
-                      distance_to_outline(surfaces_[face.surface].polygon, ground(sole.centre)) >=
-                          reach);
+    visit_faces_at(centre, [&](const Face& face) {
+      if (inside_a_top || face.triangle >= 0 || std::fabs(face.d - sole.centre.z) > tolerance)
+        return;
+      const std::vector<Vec2>& top = surfaces_[face.surface].polygon;
+      inside_a_top = distance_to_outline(top, centre) >= reach ||
+                     (convex_[face.surface] &&
+                      inside_polygon(top, centre + half_along + half_across) &&
+                      inside_polygon(top, centre + half_along - half_across) &&
+                      inside_polygon(top, centre - half_along + half_across) &&
+                      inside_polygon(top, centre - half_along - half_across));
     });
   }
   if (inside_a_top) return kSoleSamples;
-  const Vec2 along = unit(sole.heading), across = perp(along);
   int held = 0, missed = 0;
   for (int i = 0; i < kSoleRows && missed <= may_miss; ++i) {
     for (int j = 0; j < kSoleColumns && missed <= may_miss; ++j) {
       const Vec2 offset = ((i + 0.5) / kSoleRows - 0.5) * sole.length * along +
                           ((j + 0.5) / kSoleColumns - 0.5) * sole.width * across;
-      const Vec2 p = ground(sole.centre) + offset;
+      const Vec2 p = centre + offset;
       // The sole's plane over p.
       const double plane =
           sole.centre.z - (sole.normal.x * offset.x + sole.normal.y * offset.y) / sole.normal.z;

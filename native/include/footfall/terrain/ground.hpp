@@ -141,6 +141,7 @@ class Ground {
   void visit_faces_at(Vec2 p, Visit&& visit) const;
 
   std::vector<GroundSurface> surfaces_;
+  std::vector<bool> convex_;  ///< Per surface: a prism whose top is convex.
   std::vector<Face> faces_;
   std::size_t walkable_faces_ = 0;
   std::vector<IndexLevel> index_;
