@@ -146,7 +146,7 @@ Contact CollisionScene::test(const BodyPose& pose, const GroundPlacement& placem
   const Vec2 along = unit(placement.heading);
   const auto place = [&](Vec3 p) {
     return Vec3{placement.position.x + along.x * p.x - along.y * p.y,
-                placement.position.y + along.y * p.x + along.x * p.y, p.z};
+                placement.position.y + along.y * p.x + along.x * p.y, p.z + placement.height};
   };
   for (int limb = 0; limb < kLimbCount; ++limb) {
     if (near.near_[limb].empty()) continue;

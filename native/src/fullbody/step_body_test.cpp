@@ -33,6 +33,7 @@ void pose_during(const BodyModel& body, const Footstep& step, double t, BodyPose
   }
   placement.position = com_at(step, t).position;
   placement.heading = step.behavior == Behavior::kSideStep ? step.phi - 0.5 * kPi : step.phi;
+  placement.height = step.foot_height;  // on the stance foot's ground
 }
 
 StepBodyTest::StepBodyTest(const CollisionScene& scene, const BodyModel& body, double pose_rate)
@@ -83,8 +84,8 @@ bool StepBodyTest::hits(const Footstep& step) const {
   }
   std::array<FrameBox, kLimbCount> swept = limb_boxes_[static_cast<int>(step.behavior)];
   for (FrameBox& box : swept) {
-    box.min = box.min + Vec3{x0, y0, 0.0};
-    box.max = box.max + Vec3{x1, y1, 0.0};
+    box.min = box.min + Vec3{x0, y0, step.foot_height};
+    box.max = box.max + Vec3{x1, y1, step.foot_height};
   }
   thread_local LimbSurfaces near;
   scene_.near_limbs(step.com_start, heading, swept, near);

@@ -431,6 +431,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
           land_on_ground(search, current, goal);
         continue;
       }
+      checks.place_on_ground(step);
       // The ground's cost is found for the steps taken off the open list
       // only: one that changes is put back at its true cost.
       if (!search.nodes[current].costed) {

@@ -541,6 +541,7 @@ StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double f
       state, {StepKind::kStop, other(state.last_foot), facing, 0.0, duration}, character_);
   if (!stop.valid()) return stop;
   stop.step.cost.terrain = ground_cost(stop.step, state);
+  place_on_ground(stop.step);
   if (whole != nullptr) whole->label(stop.step);  // a stop goes anywhere
   if (step_touches_agents(stop.step, state, others) ||
       blocked(stop.step, state, whole != nullptr && whole->shoulders_in_3d()) ||
@@ -567,6 +568,7 @@ bool ValidityChecker::Impl::free_to_set_off(const FootstepState& rested,
   if (in_3d ? collides(rested, whole) : !room_to_turn(rested.com)) return false;
   const auto clear = [&](StepResult step, double, const detail::StepShape&) {
     if (!step.valid() || (whole != nullptr && !whole->label(step.step))) return false;
+    place_on_ground(step.step);
     return !blocked(step.step, rested, in_3d) &&
            (whole == nullptr || whole->passes(step.step, rested));
   };

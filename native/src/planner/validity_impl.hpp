@@ -69,6 +69,10 @@ struct ValidityChecker::Impl {
   double climb_cost(Vec2 from, Vec2 to) const;
   // The standable ground's height under `p`; 0 where there is none.
   double ground_height(Vec2 p) const;
+  // With ground, sets `step`'s foot_height, where its body is posed.
+  void place_on_ground(Footstep& step) const {
+    if (ground_ != nullptr) step.foot_height = ground_height(step.foot_position);
+  }
   // hits_obstacles or off_ground: what no step may do, whoever is about.
   bool blocked(const Footstep& step, const FootstepState& before, bool shoulders_in_3d) const {
     return hits_obstacles(step, shoulders_in_3d) || off_ground(step, before);

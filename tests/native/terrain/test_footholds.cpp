@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "footfall/crowd/scenario.hpp"
+#include "footfall/fullbody/body_check.hpp"
 #include "footfall/io/plan_file.hpp"
 #include "footfall/io/scenario_file.hpp"
 #include "footfall/plan/ground_check.hpp"
@@ -195,6 +196,22 @@ TEST(Footholds, APlatformTooHighToStepUpIsReachedByTheRampBesideIt) {
                                [](const Footstep& s) { return s.foot_height > kPlatformHeight - 0.01; });
   ASSERT_NE(up, walker.footsteps.end());
   EXPECT_GT(up->foot_position.y, 1.9);
+}
+
+TEST(Footholds, ABodyOnTheLandingIsTestedAtItsHeightUnderABeam) {
+  // A beam 2.2 m up over the landing (1.02 m): 1.18 m of headroom there,
+  // where the body on the floor would have passed under it with room.
+  Scenario scenario = stairs_scenario(1, 0);
+  const double top = kTreadDepth * kStairsTreads;
+  scenario.obstacles.push_back(
+      prism({{top + 2, -kStairsWidth / 2}, {top + 2.3, -kStairsWidth / 2},
+             {top + 2.3, kStairsWidth / 2}, {top + 2, kStairsWidth / 2}},
+            2.4, 2.2));
+  scenario.agents[0].time_limit = 30;
+  const Plan plan = plan_scenario(scenario);
+  EXPECT_EQ(plan.agents[0].status, AgentStatus::kPartial);
+  EXPECT_EQ(check_body(plan).penetrations, 0);
+  for (const Footstep& step : plan.agents[0].footsteps) EXPECT_LT(step.foot_position.x, top + 2.3);
 }
 
 TEST(Footholds, WalkersCrossAHillWithEveryFootOnItsSlope) {

@@ -37,15 +37,16 @@ struct Capsule {
   double radius = 0;  ///< [m] [> 0]
 };
 
-/// A rigid placement in the ground plane: turn by `heading` about Z, then
-/// move to `position` (the root of a body pose).
+/// A rigid placement on the ground: turn by `heading` about Z, then move to
+/// `position`, raised to the ground's `height` there (the root of a body pose).
 struct GroundPlacement {
   Vec2 position;       ///< [m]
   double heading = 0;  ///< [rad]
+  double height = 0;   ///< [m]
 
   Vec3 apply(Vec3 p) const {
     const double c = std::cos(heading), s = std::sin(heading);
-    return {position.x + c * p.x - s * p.y, position.y + s * p.x + c * p.y, p.z};
+    return {position.x + c * p.x - s * p.y, position.y + s * p.x + c * p.y, p.z + height};
   }
   Capsule apply(const Capsule& capsule) const {
     return {apply(capsule.a), apply(capsule.b), capsule.radius};
