@@ -21,12 +21,18 @@ PlannerParams scaled_to(const CharacterParams& character, const Scenario& scenar
   return params;
 }
 
+const Ground& ground_or_none(const Ground* ground) {
+  static const Ground none;
+  return ground != nullptr ? *ground : none;
+}
+
 }  // namespace
 
 CharacterPlanners::Entry::Entry(const CharacterParams& character, const Scenario& scenario,
                                 const CollisionScene* scene, const Ground* ground)
     : params(scaled_to(character, scenario)),
-      obstacles(scenario.obstacles, character.body_height),
+      obstacles(scenario.obstacles,
+                cut_heights(ground_or_none(ground), scenario.obstacles, character.body_height)),
       body(character),
       body_test(scene ? std::optional<StepBodyTest>(std::in_place, *scene, body,
                                                      scenario.planner.pose_rate)

@@ -301,15 +301,18 @@ NavMesh navmesh_of(const Scenario& scenario, double margin) {
     hi = any ? Vec2{std::max(hi.x, p.x), std::max(hi.y, p.y)} : p;
     any = true;
   };
+  const Ground ground(scenario.ground);
+  const std::vector<double> cuts =
+      cut_heights(ground, scenario.obstacles, scenario.character.body_height);
   std::vector<std::vector<Vec2>> footprints;
-  for (const Obstacle& o : scenario.obstacles) {
-    footprints.push_back(footprint(o, scenario.character.body_height));
+  for (std::size_t i = 0; i < scenario.obstacles.size(); ++i) {
+    footprints.push_back(footprint(scenario.obstacles[i], cuts[i]));
     for (Vec2 p : footprints.back()) grow(p);
   }
   // The ground's walls: its edges no one steps across (by the scenario's
   // character: the lower of its step limits), as thin obstacles after them.
   const double step = std::min(scenario.character.max_step_up, scenario.character.max_step_down);
-  for (const GroundWall& wall : Ground(scenario.ground).walls(step, scenario.character.body_height)) {
+  for (const GroundWall& wall : ground.walls(step, scenario.character.body_height)) {
     const Vec2 side = (0.5 * kGroundWallWidth / distance(wall.a, wall.b)) * perp(wall.b - wall.a);
     footprints.push_back({wall.a - side, wall.b - side, wall.b + side, wall.a + side});
     for (Vec2 p : footprints.back()) grow(p);

@@ -104,11 +104,20 @@ std::vector<Vec2> footprint(const Obstacle& obstacle, double cut_height) {
 
 ObstacleMap::ObstacleMap(std::vector<Obstacle> obstacles, double cut_height)
     : obstacles_(std::move(obstacles)) {
+  index_footprints(std::vector<double>(obstacles_.size(), cut_height));
+}
+
+ObstacleMap::ObstacleMap(std::vector<Obstacle> obstacles, const std::vector<double>& cut_heights)
+    : obstacles_(std::move(obstacles)) {
+  index_footprints(cut_heights);
+}
+
+void ObstacleMap::index_footprints(const std::vector<double>& cut_heights) {
   boxes_.reserve(obstacles_.size());
   footprints_.reserve(obstacles_.size());
   for (size_t i = 0; i < obstacles_.size(); ++i) {
     validate(obstacles_[i], "obstacles[" + std::to_string(i) + "]");
-    footprints_.push_back(footprint(obstacles_[i], cut_height));
+    footprints_.push_back(footprint(obstacles_[i], cut_heights.at(i)));
     const std::vector<Vec2>& polygon = footprints_.back();
     // An obstacle above the cut gets an empty box (min > max): nothing meets it.
     Box box{{1, 1}, {-1, -1}};

@@ -285,4 +285,27 @@ int Ground::soles_samples_held(const Sole& sole, double tolerance, double min_no
   return held;
 }
 
+std::vector<double> cut_heights(const Ground& ground, const std::vector<Obstacle>& obstacles,
+                                double headroom) {
+  std::vector<double> cuts;
+  cuts.reserve(obstacles.size());
+  for (const Obstacle& obstacle : obstacles) {
+    std::vector<Vec2> outline = obstacle.polygon;
+    for (const Vec3 v : obstacle.mesh.vertices) outline.push_back(footfall::ground(v));
+    double under = 0.0;
+    if (!ground.empty() && !outline.empty()) {
+      Vec2 middle{0, 0};
+      for (const Vec2 p : outline) middle = middle + (1.0 / static_cast<double>(outline.size())) * p;
+      outline.push_back(middle);
+      under = -std::numeric_limits<double>::infinity();
+      for (const Vec2 p : outline)
+        for (const GroundPoint& level : ground.standable_at(p, headroom))
+          under = std::max(under, level.z);
+      if (!std::isfinite(under)) under = 0.0;
+    }
+    cuts.push_back(under + headroom);
+  }
+  return cuts;
+}
+
 }  // namespace footfall

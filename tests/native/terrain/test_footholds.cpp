@@ -198,9 +198,9 @@ TEST(Footholds, APlatformTooHighToStepUpIsReachedByTheRampBesideIt) {
   EXPECT_GT(up->foot_position.y, 1.9);
 }
 
-TEST(Footholds, ABodyOnTheLandingIsTestedAtItsHeightUnderABeam) {
+TEST(Footholds, AnObstacleBlocksByItsHeightAboveTheGroundUnderIt) {
   // A beam 2.2 m up over the landing (1.02 m): 1.18 m of headroom there,
-  // where the body on the floor would have passed under it with room.
+  // blocking as a wall would; the body is posed at its height there.
   Scenario scenario = stairs_scenario(1, 0);
   const double top = kTreadDepth * kStairsTreads;
   scenario.obstacles.push_back(
@@ -212,6 +212,12 @@ TEST(Footholds, ABodyOnTheLandingIsTestedAtItsHeightUnderABeam) {
   EXPECT_EQ(plan.agents[0].status, AgentStatus::kPartial);
   EXPECT_EQ(check_body(plan).penetrations, 0);
   for (const Footstep& step : plan.agents[0].footsteps) EXPECT_LT(step.foot_position.x, top + 2.3);
+  // The same beam over the floor leaves room to walk under it.
+  Scenario floor = ramp_scenario();
+  floor.obstacles.push_back(prism({{-1, -4}, {-0.7, -4}, {-0.7, 0}, {-1, 0}}, 2.4, 2.2));
+  const Plan under = plan_scenario(floor);
+  EXPECT_EQ(under.agents[0].status, AgentStatus::kReached) << under.agents[0].reason;
+  EXPECT_EQ(check_body(under).penetrations, 0);
 }
 
 TEST(Footholds, WalkersCrossAHillWithEveryFootOnItsSlope) {

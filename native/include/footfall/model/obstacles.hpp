@@ -60,6 +60,9 @@ class ObstacleMap {
   /// base out of range, or a bad mesh.
   explicit ObstacleMap(std::vector<Obstacle> obstacles = {},
                        double cut_height = std::numeric_limits<double>::infinity());
+  /// The same with a cut per obstacle (on ground, the body's height above
+  /// the ground under each: cut_heights() in terrain/ground.hpp).
+  ObstacleMap(std::vector<Obstacle> obstacles, const std::vector<double>& cut_heights);
 
   /// Index of an obstacle that the circle touches or overlaps, or -1.
   int first_overlap(const Circle& circle) const;
@@ -78,6 +81,8 @@ class ObstacleMap {
   const std::vector<Vec2>& footprint_of(int index) const { return footprints_.at(index); }
 
  private:
+  /// Checks the obstacles and indexes their footprints below the cuts.
+  void index_footprints(const std::vector<double>& cut_heights);
   bool circle_overlaps(int index, const Circle& circle) const;
   // Calls visit(index) once for each obstacle whose box meets the circle's box,
   // until visit returns true; returns that index, or -1.

@@ -147,4 +147,10 @@ class Ground {
   std::vector<IndexLevel> index_;
 };
 
+/// Per obstacle, the height below which it blocks footsteps: `headroom`
+/// above the highest standable ground under it (at its outline's points and
+/// their middle), or above 0 where there is none or no ground at all.
+std::vector<double> cut_heights(const Ground& ground, const std::vector<Obstacle>& obstacles,
+                                double headroom);
+
 }  // namespace footfall
