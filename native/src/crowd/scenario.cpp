@@ -17,6 +17,7 @@
 #include "footfall/fullbody/step_body_test.hpp"
 #include "footfall/model/footstep.hpp"
 #include "footfall/planner/planner.hpp"
+#include "footfall/terrain/foothold.hpp"
 #include "footfall/terrain/ground.hpp"
 #include "navmesh/outline_union.hpp"
 #include "util/field_path.hpp"
@@ -133,20 +134,20 @@ void check_on_ground(const Scenario& scenario, const Ground& ground,
     const std::string path = item("agents", i);
     const CharacterParams& character = planners.character(agent);
     const FootstepState standing = standing_state(agent.position, agent.facing, character);
+    // Each foot as a foothold of its own, beside the other, swung from nowhere.
     for (const Foot foot : {Foot::kLeft, Foot::kRight}) {
-      const Vec2 at = standing.feet[static_cast<int>(foot)];
-      const std::vector<GroundPoint> levels = ground.standable_at(at, character.body_height);
-      const double held =
-          levels.empty() ? 0.0
-                         : ground.support({{at.x, at.y, levels[0].z}, levels[0].normal,
-                                           standing.foot_orientation[static_cast<int>(foot)].inner,
-                                           character.sole_length, character.sole_width},
-                                          0.02, std::cos(character.max_slope));
-      if (held < character.sole_support)
+      const int f = static_cast<int>(foot);
+      const FootholdFault fault =
+          foothold_fault(ground, character, standing.feet[f], standing.foot_orientation[f],
+                         standing.feet[1 - f], standing.feet[f]);
+      if (fault != FootholdFault::kNone)
         fail(child(path, "position"),
-             std::string("the standing agent's ") + to_string(foot) + " foot is not on the ground (" +
-                 std::to_string(static_cast<int>(std::lround(100 * held))) +
-                 " % of its sole on ground it can stand on)");
+             std::string("the standing agent's ") + to_string(foot) +
+                 " foot is not on the ground (" +
+                 (fault == FootholdFault::kUnsupported ? "too little of its sole is held"
+                  : fault == FootholdFault::kRise      ? "a step above or below the other foot"
+                                                       : "no ground it can stand on under it") +
+                 ")");
     }
   }
 }

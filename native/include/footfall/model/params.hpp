@@ -116,8 +116,9 @@ struct ParamTable<CharacterParams> {
             "How far the next foot may turn outward past the previous foot's inner bound (the "
             "pi/2 of the orientation rule, section 3.2)."),
       param("body_height", &S::body_height, "m", closed(0.5, 3),
-            "Standing height. Obstacles whose underside is at or above it are left out of the "
-            "navigation mesh and the footsteps' collision model."),
+            "Standing height. Obstacles whose underside is at or above it (on ground, above the "
+            "ground under them) are left out of the navigation mesh and the footsteps' "
+            "collision model."),
       param("shoulder_width", &S::shoulder_width, "m", above_up_to(0, 1.5),
             "Across the outside of the shoulders and the upper arms hanging at rest."),
       param("chest_depth", &S::chest_depth, "m", above_up_to(0, 1), "Front to back at the chest."),
