@@ -123,11 +123,11 @@ using KeySet = util::OpenHashMap<std::uint64_t, util::NoValue, KeyHash, 2048, Hu
 
 }  // namespace planner::detail
 
-// A search node: the state reached and the action that reached it; the step
-// itself is rebuilt (bit for bit) when needed.
 // [m] how much nearer or further land_on_ground tries to plant a foot, in turn
 constexpr double kLandingShifts[] = {0.03, 0.06, 0.09, 0.12};
 
+// A search node: the state reached and the action that reached it; the step
+// itself is rebuilt (bit for bit) when needed.
 struct FootstepPlanner::Node {
   FootstepState state;
   double g = 0;

@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <optional>
 
 #include "footfall/fullbody/step_body_test.hpp"
 #include "footfall/plan/section_lookup.hpp"
@@ -257,7 +256,6 @@ bool ValidityChecker::Impl::hits_obstacles(const Footstep& step, bool shoulders_
   }
   return false;
 }
-
 
 ValidityChecker::Impl::Foothold ValidityChecker::Impl::foothold(const Footstep& step,
                                                                const FootstepState& before) const {

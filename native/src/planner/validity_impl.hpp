@@ -64,8 +64,9 @@ struct ValidityChecker::Impl {
   // With ground, `step`'s terrain_cost from `before`: the body rises as the
   // stance moves from the other foot's ground to this foot's. 0 without.
   double ground_cost(const Footstep& step, const FootstepState& before) const;
-  // With ground, the least the climb from `from` up to `to` costs (stairs'
-  // terrain_cost of the rise, 0 going down). 0 without.
+  // With ground, the climb from `from` up to `to` at stairs' cost (4.5 times
+  // its potential energy; more than a gentle slope's); 0 going down or
+  // without ground. The search's heuristic adds it.
   double climb_cost(Vec2 from, Vec2 to) const;
   // The standable ground's height under `p`; 0 where there is none.
   double ground_height(Vec2 p) const;
