@@ -588,6 +588,15 @@ def test_errors_leave_the_scene_as_it_was():
     check("good.json: agents[0].name: an object named 'alice' exists already" in message, message)
     check(inventory() == before, "loading twice changed the scene")
 
+    stairs = str(ROOT / "tests" / "data" / "stairs.json")  # ground, not yet held by a scene
+    message = operator_error(bpy.ops.footfall.load_scenario, filepath=stairs)
+    check("stairs.json: ground: a scenario on ground (stairs, ramps, levels) cannot be loaded" in message, message)
+    check(inventory() == before, "a scenario on ground changed the scene")
+    heights = write("heights.json", {"format": "footfall-scenario", "version": 1, "agents": [
+        {"name": "dora", "position": [0, 8, 0.1], "goals": [[3, 8, 0]]}]})
+    check(bpy.ops.footfall.load_scenario(filepath=heights) == {"FINISHED"}, "heights on the floor refused")
+    check(tuple(bpy.data.objects["dora"].location) == (0, 8, 0), "dora is not on the floor")
+
     # A failure in the middle of building removes what was built: collections too.
     fresh_scene()
     before = inventory()

@@ -53,7 +53,8 @@ def build(scene, document: dict, source: str = "<scenario>") -> dict:
     agents and overrides to the scene; returns it with the core's defaults
     (agent names, facings, heights) filled in. `source` names it in errors."""
     complete = _complete(parse(document, source), document)
-    _check(complete, source)
+    _check(complete, document, source)
+    _on_the_floor(complete)
     given = {key: complete[key] for key in OVERRIDE_KEYS if key in complete}
     stored = overrides(scene) if given else {}
     before = datablocks.snapshot()
@@ -91,8 +92,12 @@ def _complete(scenario, document: dict) -> dict:
     return complete
 
 
-def _check(document: dict, source: str) -> None:
-    """Refuses what the core accepts but a scene cannot hold."""
+def _check(document: dict, given: dict, source: str) -> None:
+    """Refuses what the core accepts (in `document`, as `given`) but a scene
+    cannot hold."""
+    if given.get("ground"):
+        raise ScenarioError(f"{source}: ground: a scenario on ground (stairs, ramps, levels) cannot be "
+                            "loaded into Blender yet")
     for i, agent in enumerate(document["agents"]):
         name = agent["name"]
         if len(name.encode("utf-8")) > NAME_BYTES:
@@ -100,6 +105,14 @@ def _check(document: dict, source: str) -> None:
         if name in bpy.data.objects:
             raise ScenarioError(f"{source}: agents[{i}].name: an object named '{name}' exists already "
                                 "(an agent is the object of its name; rename one of them)")
+
+
+def _on_the_floor(document: dict) -> None:
+    """Points given with a height, [x, y, z], as [x, y]: without ground the
+    core has checked that z is within 0.5 m of the floor, z = 0."""
+    for agent in document["agents"]:
+        agent["position"] = list(agent["position"][:2])
+        agent["goals"] = [list(goal[:2]) for goal in agent["goals"]]
 
 
 def _collection(scene, name: str, linked: list):
