@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 #include "model/footstep_shape.hpp"
 #include "planner/validity_impl.hpp"
@@ -125,6 +126,8 @@ using KeySet = util::OpenHashMap<std::uint64_t, util::NoValue, KeyHash, 2048, Hu
 
 // [m] how much nearer or further land_on_ground tries to plant a foot, in turn
 constexpr double kLandingShifts[] = {0.03, 0.06, 0.09, 0.12};
+// Climbs kept for one goal before they are found anew (some 4 MB).
+constexpr std::size_t kMostClimbs = 100000;
 
 // A search node: the state reached and the action that reached it; the step
 // itself is rebuilt (bit for bit) when needed.
@@ -207,9 +210,30 @@ FootstepPlanner::~FootstepPlanner() = default;
 
 double FootstepPlanner::heuristic(const FootstepState& state, Vec2 goal) const {
   const double remaining = std::max(0.0, distance(state.com, goal) - params().goal_tolerance);
-  // On ground, and the climb to the goal.
-  return expected_step_cost_ * remaining / expected_step_length_ +
-         validity_.impl().climb_cost(state.com, goal);
+  // On ground, and the climbs on the way there.
+  return expected_step_cost_ * remaining / expected_step_length_ + climb_to(state.com, goal);
+}
+
+double FootstepPlanner::climb_to(Vec2 from, Vec2 goal) const {
+  const ValidityChecker::Impl& checks = validity_.impl();
+  if (!checks.on_ground()) return 0.0;
+  // Found once for each 0.1 m cell of `from`, from its middle (the same value
+  // whatever found it first, on any thread).
+  constexpr double kCell = 0.1;  // [m]
+  thread_local std::unordered_map<std::uint64_t, double> climbs;
+  thread_local Vec2 climbs_to{std::numeric_limits<double>::quiet_NaN(), 0.0};
+  if (!(climbs_to == goal) || climbs.size() > kMostClimbs) {
+    climbs.clear();
+    climbs_to = goal;
+  }
+  const auto ix = static_cast<std::int64_t>(std::floor(from.x / kCell));
+  const auto iy = static_cast<std::int64_t>(std::floor(from.y / kCell));
+  const std::uint64_t key = static_cast<std::uint64_t>(static_cast<std::uint32_t>(ix)) << 32 |
+                            static_cast<std::uint32_t>(iy);
+  const auto found = climbs.find(key);
+  if (found != climbs.end()) return found->second;
+  const Vec2 middle{(static_cast<double>(ix) + 0.5) * kCell, (static_cast<double>(iy) + 0.5) * kCell};
+  return climbs.emplace(key, checks.climb_cost(middle, goal)).first->second;
 }
 
 void FootstepPlanner::land_on_ground(Search& search, int index, Vec2 goal) const {

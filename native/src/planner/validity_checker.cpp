@@ -283,7 +283,15 @@ double ValidityChecker::Impl::ground_cost(const Footstep& step, const FootstepSt
 
 double ValidityChecker::Impl::climb_cost(Vec2 from, Vec2 to) const {
   if (ground_ == nullptr) return 0.0;
-  return std::max(0.0, terrain_cost(character_.mass, 0.0, ground_height(to) - ground_height(from)));
+  constexpr double kSpacing = 0.5;  // [m]
+  const int pieces = std::max(1, static_cast<int>(std::ceil(distance(from, to) / kSpacing)));
+  double ascent = 0.0, before = ground_height(from);
+  for (int k = 1; k <= pieces; ++k) {
+    const double here = ground_height(from + (static_cast<double>(k) / pieces) * (to - from));
+    ascent += std::max(0.0, here - before);
+    before = here;
+  }
+  return terrain_cost(character_.mass, 0.0, ascent);
 }
 
 bool ValidityChecker::Impl::touches_agents(const Footstep& step, detail::SampledAgents& others,

@@ -64,10 +64,12 @@ struct ValidityChecker::Impl {
   // With ground, `step`'s terrain_cost from `before`: the body rises as the
   // stance moves from the other foot's ground to this foot's. 0 without.
   double ground_cost(const Footstep& step, const FootstepState& before) const;
-  // With ground, the climb from `from` up to `to` at stairs' cost (4.5 times
-  // its potential energy; more than a gentle slope's); 0 going down or
-  // without ground. The search's heuristic adds it.
+  // With ground, the climbs along the straight line from `from` to `to`
+  // (sampled every 0.5 m; descents count nothing) at stairs' cost, 4.5 times
+  // their potential energy (more than a gentle slope's: the search leans on
+  // it). 0 without ground. The search's heuristic adds it.
   double climb_cost(Vec2 from, Vec2 to) const;
+  bool on_ground() const { return ground_ != nullptr; }
   // The standable ground's height under `p`; 0 where there is none.
   double ground_height(Vec2 p) const;
   // With ground, sets `step`'s foot_height, where its body is posed.

@@ -106,7 +106,8 @@ class FootstepPlanner {
                     const SearchOptions& options = {}) const;
 
   /// Heuristic of equation 6: the cost of one normal step times the number of
-  /// normal steps to the goal (the distance less the goal tolerance). [J]
+  /// normal steps to the goal (the distance less the goal tolerance); on
+  /// ground, and the climbs on the straight way there. [J]
   double heuristic(const FootstepState& state, Vec2 goal) const;
   /// Cost of one normal step: straight, at the preferred speed and duration. [J]
   double expected_step_cost() const { return expected_step_cost_; }
@@ -137,6 +138,9 @@ class FootstepPlanner {
   /// riser too high) is taken again landing a little nearer or further,
   /// where the ground holds it: a stair's tread is barely longer than a sole.
   void land_on_ground(Search& search, int index, Vec2 goal) const;
+  /// On ground, the cost of the climbs on the straight way from `from` to
+  /// `goal` (ValidityChecker's climb_cost, kept per 0.1 m cell); 0 without.
+  double climb_to(Vec2 from, Vec2 goal) const;
 
   ValidityChecker validity_;
   const StepBodyTest* body_ = nullptr;
