@@ -89,6 +89,7 @@ TEST(Footholds, ACrowdGoesUpAndDownAFlightEachOnItsTreadsAndClearOfTheOthers) {
   const GroundCheck check = check_ground(plan);
   EXPECT_GT(check.footholds, 200);
   EXPECT_EQ(check.off_ground + check.unsupported + check.over_rise + check.swing, 0);
+  EXPECT_EQ(plan_to_json(plan_scenario(scenario)), plan_to_json(plan)) << "one thread or two";
 }
 
 TEST(Footholds, TheGroundCheckFindsAFootOnANosingOrAStepTooHigh) {
