@@ -159,16 +159,7 @@ void ObstacleMap::index_footprints(const std::vector<double>& cut_heights) {
 
 bool ObstacleMap::contains(int index, Vec2 point) const {
   const std::vector<Vec2>& polygon = footprints_.at(index);
-  bool inside = false;
-  if (polygon.empty()) return false;
-  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const Vec2 a = polygon[i], b = polygon[j];
-    if ((a.y > point.y) != (b.y > point.y) &&
-        point.x < (b.x - a.x) * (point.y - a.y) / (b.y - a.y) + a.x) {
-      inside = !inside;
-    }
-  }
-  return inside;
+  return !polygon.empty() && inside_even_odd(polygon, point);
 }
 
 bool ObstacleMap::circle_overlaps(int index, const Circle& circle) const {

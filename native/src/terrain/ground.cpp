@@ -53,28 +53,20 @@ double distance_to_outline(const std::vector<Vec2>& polygon, Vec2 p) {
   return nearest;
 }
 
-// True if every turn along the polygon goes the same way (no vertex reflex).
+// True if every turn along the polygon goes the same way and they add up to
+// one full turn (a pentagram turns one way too, twice round).
 bool is_convex(const std::vector<Vec2>& polygon) {
   bool left = false, right = false;
+  double turning = 0.0;
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const Vec2 a = polygon[i], b = polygon[(i + 1) % polygon.size()],
                c = polygon[(i + 2) % polygon.size()];
     const double turn = cross(b - a, c - b);
     left = left || turn > 0.0;
     right = right || turn < 0.0;
+    turning += std::atan2(turn, dot(b - a, c - b));
   }
-  return !(left && right);
-}
-
-// Even-odd rule, as obstacles' footprints.
-bool inside_polygon(const std::vector<Vec2>& polygon, Vec2 p) {
-  bool inside = false;
-  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const Vec2 a = polygon[i], b = polygon[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x))
-      inside = !inside;
-  }
-  return inside;
+  return !(left && right) && std::fabs(std::fabs(turning) - 2.0 * kPi) < 1e-6;
 }
 
 }  // namespace
@@ -152,7 +144,7 @@ void Ground::add_face(Face face, Vec2 low, Vec2 high) {
 
 bool Ground::contains(const Face& face, Vec2 p) const {
   const GroundSurface& surface = surfaces_[face.surface];
-  if (face.triangle < 0) return inside_polygon(surface.polygon, p);
+  if (face.triangle < 0) return inside_even_odd(surface.polygon, p);
   const auto& [i0, i1, i2] = surface.mesh.triangles[face.triangle];
   const Vec2 a = ground(surface.mesh.vertices[i0]), b = ground(surface.mesh.vertices[i1]),
              c = ground(surface.mesh.vertices[i2]);
@@ -257,10 +249,10 @@ int Ground::soles_samples_held(const Sole& sole, double tolerance, double min_no
       const std::vector<Vec2>& top = surfaces_[face.surface].polygon;
       inside_a_top = distance_to_outline(top, centre) >= reach ||
                      (convex_[face.surface] &&
-                      inside_polygon(top, centre + half_along + half_across) &&
-                      inside_polygon(top, centre + half_along - half_across) &&
-                      inside_polygon(top, centre - half_along + half_across) &&
-                      inside_polygon(top, centre - half_along - half_across));
+                      inside_even_odd(top, centre + half_along + half_across) &&
+                      inside_even_odd(top, centre + half_along - half_across) &&
+                      inside_even_odd(top, centre - half_along + half_across) &&
+                      inside_even_odd(top, centre - half_along - half_across));
     });
   }
   if (inside_a_top) return kSoleSamples;

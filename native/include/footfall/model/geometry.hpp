@@ -86,6 +86,18 @@ inline bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
          ((a_side > 0 && b_side < 0) || (a_side < 0 && b_side > 0));
 }
 
+/// True if `p` lies inside `polygon` by the even-odd rule (either winding;
+/// a self-crossing polygon's overlaps count as outside).
+inline bool inside_even_odd(const std::vector<Vec2>& polygon, Vec2 p) {
+  bool inside = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const Vec2 a = polygon[i], b = polygon[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x)
+      inside = !inside;
+  }
+  return inside;
+}
+
 /// An axis-aligned box in the ground plane.
 struct Box {
   Vec2 min, max;  ///< Its corners. [m]
