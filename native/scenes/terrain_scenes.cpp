@@ -22,8 +22,8 @@ Scenario stairs_scenario(int up, int down) {
         rectangle(kTreadDepth * k, -kStairsWidth / 2, kTreadDepth * (k + 1), kStairsWidth / 2),
         kRiser * (k + 1)));
   const double top = kTreadDepth * kStairsTreads;
-  scenario.ground.push_back(
-      ground_prism(rectangle(top, -kStairsWidth / 2, top + 8, kStairsWidth / 2), kRiser * kStairsTreads));
+  scenario.ground.push_back(ground_prism(
+      rectangle(top, -kStairsWidth / 2, top + 8, kStairsWidth / 2), kRiser * kStairsTreads));
   // Each way on its own right half of the flight, two abreast 0.7 m apart,
   // rows 1 m apart.
   for (int i = 0; i < up + down; ++i) {
@@ -58,7 +58,8 @@ GroundSurface hill_field(int cells, double cell, double height, double spread) {
   for (int i = 0; i <= cells; ++i)
     for (int j = 0; j <= cells; ++j) {
       const double x = i * cell - half, y = j * cell - half;
-      field.mesh.vertices.push_back({x, y, height * std::exp(-(x * x + y * y) / (2 * spread * spread))});
+      const double z = height * std::exp(-(x * x + y * y) / (2 * spread * spread));
+      field.mesh.vertices.push_back({x, y, z});
     }
   for (int i = 0; i < cells; ++i)
     for (int j = 0; j < cells; ++j) {

@@ -295,7 +295,8 @@ class FootstepColumns {
   FootstepColumns(const Json& json, std::string path) : json_(json), path_(std::move(path)) {
     expect_object(json, path_,
                   {"count", "foot", "kind", "behavior", "end_time", "foot_position", "com_end",
-                   "com_velocity_end", "foot_height", "terrain", "values", "phi", "foot_orientation", "orientation_interval",
+                   "com_velocity_end", "foot_height", "terrain", "values", "phi",
+                   "foot_orientation", "orientation_interval",
                    "speed", "alpha", "fixed_rate", "speed_change", "curvature", "starts"});
     const long long count = integer(require(json, path_, "count"), child(path_, "count"));
     if (count < 0) fail(child(path_, "count"), "must be at least 0, got " + std::to_string(count));

@@ -232,7 +232,8 @@ double FootstepPlanner::climb_to(Vec2 from, Vec2 goal) const {
                             static_cast<std::uint32_t>(iy);
   const auto found = climbs.find(key);
   if (found != climbs.end()) return found->second;
-  const Vec2 middle{(static_cast<double>(ix) + 0.5) * kCell, (static_cast<double>(iy) + 0.5) * kCell};
+  const Vec2 middle{(static_cast<double>(ix) + 0.5) * kCell,
+                    (static_cast<double>(iy) + 0.5) * kCell};
   return climbs.emplace(key, checks.climb_cost(middle, goal)).first->second;
 }
 

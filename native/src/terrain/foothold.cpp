@@ -25,7 +25,8 @@ FootholdFault foothold_fault(const Ground& ground, const CharacterParams& charac
   if (!here || here->normal.z < min_normal_z) return FootholdFault::kOffGround;
   if (const std::optional<GroundPoint> beside = standing(other)) {
     const double rise = here->z - beside->z;
-    if (rise > character.max_step_up || -rise > character.max_step_down) return FootholdFault::kRise;
+    if (rise > character.max_step_up || -rise > character.max_step_down)
+      return FootholdFault::kRise;
   }
   const double middle = turns.inner + 0.5 * wrap_angle(turns.outer - turns.inner);
   for (const double orientation : {turns.inner, turns.outer, middle}) {

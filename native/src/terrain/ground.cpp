@@ -29,7 +29,8 @@ std::string number_text(double value) {
 
 void validate_prism(const GroundSurface& prism, const std::string& name) {
   if (prism.polygon.size() < 3)
-    refuse(name + ".polygon", "needs at least 3 points, got " + std::to_string(prism.polygon.size()));
+    refuse(name + ".polygon",
+           "needs at least 3 points, got " + std::to_string(prism.polygon.size()));
   for (std::size_t k = 0; k < prism.polygon.size(); ++k)
     if (!in_world(prism.polygon[k]))
       refuse(name + ".polygon[" + std::to_string(k) + "]",
@@ -124,7 +125,9 @@ void Ground::add_face(Face face, Vec2 low, Vec2 high) {
   // The first level on whose cells the box spans at most kMostCells (a
   // tread 3 m wide lies on 0.5 m cells, few to a cell).
   const auto spanned = [&](double cell) {
-    const auto count = [&](double lo, double hi) { return std::floor(hi / cell) - std::floor(lo / cell) + 1; };
+    const auto count = [&](double lo, double hi) {
+      return std::floor(hi / cell) - std::floor(lo / cell) + 1;
+    };
     return count(low.x, high.x) * count(low.y, high.y);
   };
   std::size_t level = 0;
@@ -171,8 +174,9 @@ double Ground::height_of(const Face& face, Vec2 p) const {
 template <class Visit>
 void Ground::visit_faces_at(Vec2 p, Visit&& visit) const {
   for (const IndexLevel& level : index_) {
-    const auto cell = level.cells.find(cell_key(static_cast<std::int64_t>(std::floor(p.x / level.cell)),
-                                                static_cast<std::int64_t>(std::floor(p.y / level.cell))));
+    const auto cell =
+        level.cells.find(cell_key(static_cast<std::int64_t>(std::floor(p.x / level.cell)),
+                                  static_cast<std::int64_t>(std::floor(p.y / level.cell))));
     if (cell == level.cells.end()) continue;
     for (const int id : cell->second)
       if (contains(faces_[id], p)) visit(faces_[id]);
@@ -216,7 +220,8 @@ std::optional<GroundPoint> Ground::level_near(Vec2 p, double z, double reach) co
   std::optional<GroundPoint> nearest;
   visit_faces_at(p, [&](const Face& face) {
     const double h = height_of(face, p);
-    if (face.walkable && std::fabs(h - z) <= reach && (!nearest || std::fabs(h - z) < std::fabs(nearest->z - z)))
+    if (face.walkable && std::fabs(h - z) <= reach &&
+        (!nearest || std::fabs(h - z) < std::fabs(nearest->z - z)))
       nearest = GroundPoint{h, face.normal, face.surface};
   });
   return nearest;
@@ -287,7 +292,8 @@ std::vector<double> cut_heights(const Ground& ground, const std::vector<Obstacle
     double under = 0.0;
     if (!ground.empty() && !outline.empty()) {
       Vec2 middle{0, 0};
-      for (const Vec2 p : outline) middle = middle + (1.0 / static_cast<double>(outline.size())) * p;
+      const double share = 1.0 / static_cast<double>(outline.size());
+      for (const Vec2 p : outline) middle = middle + share * p;
       outline.push_back(middle);
       under = -std::numeric_limits<double>::infinity();
       for (const Vec2 p : outline)

@@ -179,8 +179,9 @@ TEST(Footholds, AgentsAndGoalsOffTheGroundOrItsHeightAreRefused) {
             0u);
   const std::string bridge = R"([{"polygon": [[-5, -5], [5, -5], [5, 5], [-5, 5]], "height": 0},
       {"polygon": [[-1, -5], [1, -5], [1, 5], [-1, 5]], "height": 4.5, "base": 4.3}])";
-  EXPECT_EQ(refusal(one_on(bridge, "[-3, 0]", "[3, 0]")).rfind("<string>: ground: two levels over (", 0),
-            0u);
+  EXPECT_EQ(
+      refusal(one_on(bridge, "[-3, 0]", "[3, 0]")).rfind("<string>: ground: two levels over (", 0),
+      0u);
   EXPECT_EQ(refusal(one_on(R"([{"polygon": [[0, 0], [1, 0], [1, 1], [0, 1]]}])", "[0.5, 0.5]",
                            "[0.5, 0.5]")),
             "<string>: ground[0].height: missing");
@@ -194,7 +195,9 @@ TEST(Footholds, APlatformTooHighToStepUpIsReachedByTheRampBesideIt) {
   expect_on_ground(plan, Ground(scenario.ground));
   // Up by the ramp: it crossed y = 2 before reaching the platform.
   const auto up = std::find_if(walker.footsteps.begin(), walker.footsteps.end(),
-                               [](const Footstep& s) { return s.foot_height > kPlatformHeight - 0.01; });
+                               [](const Footstep& s) {
+                                 return s.foot_height > kPlatformHeight - 0.01;
+                               });
   ASSERT_NE(up, walker.footsteps.end());
   EXPECT_GT(up->foot_position.y, 1.9);
 }

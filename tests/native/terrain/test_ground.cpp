@@ -178,8 +178,10 @@ TEST(Ground, APlatformTooHighToStepIsReachedByTheRampBesideIt) {
       wall_length(walls, [](Vec2 m) { return std::fabs(std::fabs(m.y) - 1) < 0.01 && m.x < 4; });
   EXPECT_NEAR(sides, 2 * (4 - 1.25), 0.1);
   // Across the ramp's two ends, none.
-  EXPECT_EQ(wall_length(walls, [](Vec2 m) { return std::fabs(m.y) < 0.99 && m.x > -4.99 && m.x < 9.99; }),
-            0.0);
+  const auto across_the_ramp = [](Vec2 m) {
+    return std::fabs(m.y) < 0.99 && m.x > -4.99 && m.x < 9.99;
+  };
+  EXPECT_EQ(wall_length(walls, across_the_ramp), 0.0);
 }
 
 TEST(Ground, LevelsAboveOneAnotherAreFoundWhereABodyFitsBetweenThem) {
