@@ -120,6 +120,7 @@ Ground::Ground(std::vector<GroundSurface> surfaces) : surfaces_(std::move(surfac
 
 void Ground::add_face(Face face, Vec2 low, Vec2 high) {
   const int id = static_cast<int>(faces_.size());
+  face.box = {low, high};
   faces_.push_back(face);
   walkable_faces_ += face.walkable ? 1 : 0;
   // The first level on whose cells the box spans at most kMostCells (a
@@ -179,7 +180,7 @@ void Ground::visit_faces_at(Vec2 p, Visit&& visit) const {
                                   static_cast<std::int64_t>(std::floor(p.y / level.cell))));
     if (cell == level.cells.end()) continue;
     for (const int id : cell->second)
-      if (contains(faces_[id], p)) visit(faces_[id]);
+      if (in_box(faces_[id], p) && contains(faces_[id], p)) visit(faces_[id]);
   }
 }
 
@@ -261,6 +262,26 @@ int Ground::soles_samples_held(const Sole& sole, double tolerance, double min_no
     });
   }
   if (inside_a_top) return kSoleSamples;
+  // The faces that may hold a sample, gathered once from the cells under the
+  // sole's circle.
+  thread_local std::vector<const Face*> near;
+  near.clear();
+  for (const IndexLevel& level : index_) {
+    const auto first = [&](double v) {
+      return static_cast<std::int64_t>(std::floor(v / level.cell));
+    };
+    for (std::int64_t ix = first(centre.x - reach); ix <= first(centre.x + reach); ++ix)
+      for (std::int64_t iy = first(centre.y - reach); iy <= first(centre.y + reach); ++iy) {
+        const auto cell = level.cells.find(cell_key(ix, iy));
+        if (cell == level.cells.end()) continue;
+        for (const int id : cell->second) {
+          const Face* face = &faces_[id];
+          if (face->walkable && face->normal.z >= min_normal_z &&
+              std::find(near.begin(), near.end(), face) == near.end())
+            near.push_back(face);
+        }
+      }
+  }
   int held = 0, missed = 0;
   for (int i = 0; i < kSoleRows && missed <= may_miss; ++i) {
     for (int j = 0; j < kSoleColumns && missed <= may_miss; ++j) {
@@ -270,10 +291,9 @@ int Ground::soles_samples_held(const Sole& sole, double tolerance, double min_no
       // The sole's plane over p.
       const double plane =
           sole.centre.z - (sole.normal.x * offset.x + sole.normal.y * offset.y) / sole.normal.z;
-      bool supported = false;
-      visit_faces_at(p, [&](const Face& face) {
-        supported = supported || (face.walkable && face.normal.z >= min_normal_z &&
-                                  std::fabs(height_of(face, p) - plane) <= tolerance);
+      const bool supported = std::any_of(near.begin(), near.end(), [&](const Face* face) {
+        return in_box(*face, p) && contains(*face, p) &&
+               std::fabs(height_of(*face, p) - plane) <= tolerance;
       });
       held += supported ? 1 : 0;
       missed += supported ? 0 : 1;

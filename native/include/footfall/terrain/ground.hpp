@@ -113,6 +113,7 @@ class Ground {
     Vec3 normal;        ///< Unit.
     double d = 0;       ///< The face's plane: dot(normal, x) = d.
     bool walkable = false;
+    Box box{};          ///< Its extent in plan: most points outside it are told by it alone.
   };
   /// Each face is kept in the cells of the first level on which its box
   /// spans at most 16; the levels' cells grow by four from 0.5 m.
@@ -133,6 +134,10 @@ class Ground {
                          int may_miss) const;
   /// The levels of the walkable faces among `here`, which hold `p`.
   std::vector<GroundPoint> levels_of(const std::vector<const Face*>& here, Vec2 p) const;
+  static bool in_box(const Face& face, Vec2 p) {
+    return p.x >= face.box.min.x && p.x <= face.box.max.x && p.y >= face.box.min.y &&
+           p.y <= face.box.max.y;
+  }
   bool contains(const Face& face, Vec2 p) const;
   double height_of(const Face& face, Vec2 p) const;
   /// True if `face` holds solid ground within (z, top] over `p`.
