@@ -242,11 +242,10 @@ TriangleMesh read_mesh(const Json& json, const std::string& path) {
 
 namespace {
 
-// Prisms and meshes, as obstacles and ground give them; a prism without a
-// "base" gets base_of(height), and a ground's prism must give its height.
-template <class BaseOf>
-std::vector<Obstacle> read_shapes(const Json& json, const std::string& name, bool ground,
-                                  BaseOf base_of) {
+// Prisms and meshes, as obstacles and ground (`ground`) give them: a
+// ground's prism must give its height, and its base defaults to min(0,
+// height) where an obstacle's is 0.
+std::vector<Obstacle> read_shapes(const Json& json, const std::string& name, bool ground) {
   std::vector<Obstacle> result;
   const Json& shapes = array(json, name);
   for (size_t i = 0; i < shapes.size(); ++i) {
@@ -268,7 +267,8 @@ std::vector<Obstacle> read_shapes(const Json& json, const std::string& name, boo
     if (shapes[i].contains("height") || ground)
       shape.height = number(require(shapes[i], path, "height"), child(path, "height"));
     shape.base = shapes[i].contains("base") ? number(shapes[i]["base"], child(path, "base"))
-                                            : base_of(shape.height);
+                 : ground                   ? std::min(0.0, shape.height)
+                                            : 0.0;
     result.push_back(std::move(shape));
   }
   return result;
@@ -277,11 +277,11 @@ std::vector<Obstacle> read_shapes(const Json& json, const std::string& name, boo
 }  // namespace
 
 std::vector<Obstacle> read_obstacles(const Json& json) {
-  return read_shapes(json, "obstacles", false, [](double) { return 0.0; });
+  return read_shapes(json, "obstacles", false);
 }
 
 std::vector<Obstacle> read_ground(const Json& json) {
-  return read_shapes(json, "ground", true, [](double height) { return std::min(0.0, height); });
+  return read_shapes(json, "ground", true);
 }
 
 Json obstacle_to_json(const Obstacle& obstacle) {

@@ -451,8 +451,8 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
       Footstep& step = search.nodes[current].step;
       const FootstepState& before = search.nodes[search.nodes[current].parent].state;
       if (const auto foothold = checks.foothold(step, before);
-          foothold != ValidityChecker::Impl::Foothold::kOnGround) {
-        if (foothold == ValidityChecker::Impl::Foothold::kUnsupported)
+          foothold != FootholdFault::kNone) {
+        if (foothold == FootholdFault::kUnsupported)
           land_on_ground(search, current, goal);
         continue;
       }

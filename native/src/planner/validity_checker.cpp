@@ -7,7 +7,6 @@
 
 #include "footfall/fullbody/step_body_test.hpp"
 #include "footfall/plan/section_lookup.hpp"
-#include "footfall/terrain/foothold.hpp"
 #include "footfall/terrain/ground.hpp"
 #include "model/contact.hpp"
 #include "planner/validity_impl.hpp"
@@ -257,21 +256,17 @@ bool ValidityChecker::Impl::hits_obstacles(const Footstep& step, bool shoulders_
   return false;
 }
 
-ValidityChecker::Impl::Foothold ValidityChecker::Impl::foothold(const Footstep& step,
-                                                               const FootstepState& before) const {
-  if (ground_ == nullptr) return Foothold::kOnGround;
+FootholdFault ValidityChecker::Impl::foothold(const Footstep& step,
+                                              const FootstepState& before) const {
+  if (ground_ == nullptr) return FootholdFault::kNone;
   const int planted = static_cast<int>(step.foot);
-  switch (foothold_fault(*ground_, character_, step.foot_position, step.orientation_interval,
-                         before.feet[1 - planted], before.feet[planted])) {
-    case FootholdFault::kNone: return Foothold::kOnGround;
-    case FootholdFault::kUnsupported: return Foothold::kUnsupported;
-    default: return Foothold::kOff;
-  }
+  return foothold_fault(*ground_, character_, step.foot_position, step.orientation_interval,
+                        before.feet[1 - planted], before.feet[planted]);
 }
 
 double ValidityChecker::Impl::ground_height(Vec2 p) const {
-  const std::vector<GroundPoint> levels = ground_->standable_at(p, character_.body_height);
-  return levels.empty() ? 0.0 : levels.front().z;
+  const std::optional<GroundPoint> under = ground_->standing_on(p, character_.body_height);
+  return under ? under->z : 0.0;
 }
 
 double ValidityChecker::Impl::ground_cost(const Footstep& step, const FootstepState& before) const {

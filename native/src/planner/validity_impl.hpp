@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "footfall/planner/validity_checker.hpp"
+#include "footfall/terrain/foothold.hpp"
 #include "model/footstep_shape.hpp"
 #include "planner/sampled_agents.hpp"
 
@@ -53,13 +54,11 @@ struct ValidityChecker::Impl {
   // which sees the shoulders and arms exactly: against obstacles the torso is
   // then only its centre circle.
   bool hits_obstacles(const Footstep& step, bool shoulders_in_3d = false) const;
-  // Where off_ground's step plants its foot: on the ground, on it but with
-  // too little of the sole held (a nosing: a little nearer or further may
-  // do), or off it.
-  enum class Foothold { kOnGround, kUnsupported, kOff };
-  Foothold foothold(const Footstep& step, const FootstepState& before) const;
+  // What is wrong with where off_ground's step plants its foot, if anything
+  // (kUnsupported: a nosing, where a little nearer or further may do).
+  FootholdFault foothold(const Footstep& step, const FootstepState& before) const;
   bool off_ground(const Footstep& step, const FootstepState& before) const {
-    return foothold(step, before) != Foothold::kOnGround;
+    return foothold(step, before) != FootholdFault::kNone;
   }
   // With ground, `step`'s terrain_cost from `before`: the body rises as the
   // stance moves from the other foot's ground to this foot's. 0 without.

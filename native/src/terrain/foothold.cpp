@@ -16,11 +16,7 @@ constexpr double kSwingReach = 0.5;      // [m] above the higher foothold: an ov
 FootholdFault foothold_fault(const Ground& ground, const CharacterParams& character, Vec2 foot,
                              const OrientationInterval& turns, Vec2 other, Vec2 from) {
   const double min_normal_z = std::cos(character.max_slope);
-  const auto standing = [&](Vec2 p) -> std::optional<GroundPoint> {
-    const std::vector<GroundPoint> levels = ground.standable_at(p, character.body_height);
-    if (levels.empty()) return std::nullopt;
-    return levels.front();
-  };
+  const auto standing = [&](Vec2 p) { return ground.standing_on(p, character.body_height); };
   const std::optional<GroundPoint> here = standing(foot);
   if (!here || here->normal.z < min_normal_z) return FootholdFault::kOffGround;
   if (const std::optional<GroundPoint> beside = standing(other)) {

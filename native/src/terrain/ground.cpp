@@ -217,6 +217,12 @@ std::vector<GroundPoint> Ground::standable_at(Vec2 p, double headroom) const {
   return levels;
 }
 
+std::optional<GroundPoint> Ground::standing_on(Vec2 p, double headroom) const {
+  const std::vector<GroundPoint> levels = standable_at(p, headroom);
+  if (levels.empty()) return std::nullopt;
+  return levels.front();
+}
+
 std::optional<GroundPoint> Ground::level_near(Vec2 p, double z, double reach) const {
   std::optional<GroundPoint> nearest;
   visit_faces_at(p, [&](const Face& face) {

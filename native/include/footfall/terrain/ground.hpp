@@ -84,6 +84,9 @@ class Ground {
   /// a platform's prism, or under a deck too low to walk beneath, is
   /// covered), lowest first.
   std::vector<GroundPoint> standable_at(Vec2 p, double headroom) const;
+  /// The lowest of standable_at(p, headroom), if any: on ground of one level
+  /// at every point, the ground under a foot.
+  std::optional<GroundPoint> standing_on(Vec2 p, double headroom) const;
   /// The edges of standable ground (standable_at) a body `headroom` tall
   /// cannot step across: where, 2 cm across, no standable level lies within
   /// `max_step` of the edge's height (a flight's sides, a platform's edge,
