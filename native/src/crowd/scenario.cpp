@@ -152,16 +152,71 @@ void check_on_ground(const Scenario& scenario, const Ground& ground,
   }
 }
 
-}  // namespace
+// navmesh_of(), on the scenario's ground built once by its caller.
+NavMesh navmesh_on(const Scenario& scenario, const Ground& ground, double margin) {
+  if (!(margin > 0)) throw std::invalid_argument("navmesh_of: margin must be > 0");
+  Vec2 lo{0, 0}, hi{0, 0};
+  bool any = false;
+  auto grow = [&](Vec2 p) {
+    lo = any ? Vec2{std::min(lo.x, p.x), std::min(lo.y, p.y)} : p;
+    hi = any ? Vec2{std::max(hi.x, p.x), std::max(hi.y, p.y)} : p;
+    any = true;
+  };
+  const std::vector<double> cuts =
+      cut_heights(ground, scenario.obstacles, scenario.character.body_height);
+  std::vector<std::vector<Vec2>> footprints;
+  for (std::size_t i = 0; i < scenario.obstacles.size(); ++i) {
+    footprints.push_back(footprint(scenario.obstacles[i], cuts[i]));
+    for (Vec2 p : footprints.back()) grow(p);
+  }
+  // The ground's walls: its edges no one steps across (by the scenario's
+  // character: the lower of its step limits), as thin obstacles after them.
+  const double step = std::min(scenario.character.max_step_up, scenario.character.max_step_down);
+  for (const GroundWall& wall : ground.walls(step, scenario.character.body_height)) {
+    const Vec2 side = (0.5 * kGroundWallWidth / distance(wall.a, wall.b)) * perp(wall.b - wall.a);
+    footprints.push_back({wall.a - side, wall.b - side, wall.b + side, wall.a + side});
+    for (Vec2 p : footprints.back()) grow(p);
+  }
+  for (const AgentSpec& a : scenario.agents) {
+    grow(a.position);
+    for (Vec2 g : a.goals) grow(g);
+  }
+  // The margin stops at the world's edge: everything lies within it already.
+  const auto inside = [](double v) { return std::clamp(v, -kMaxCoordinate, kMaxCoordinate); };
+  NavMesh mesh({inside(lo.x - margin), inside(lo.y - margin)},
+               {inside(hi.x + margin), inside(hi.y + margin)});
+  // Obstacle i gets id i; one wholly above the head (no footprint) blocks
+  // nothing. Overlapping ones enter as their union, under the first one's id.
+  std::vector<int> merged_into(footprints.size(), -1);
+  std::map<int, Region> regions;
+  for (OverlapGroup& group : overlapping_groups(footprints)) {
+    for (int i : group.members) merged_into[i] = group.members.front();
+    regions[group.members.front()] = std::move(group.region);
+  }
+  for (std::size_t i = 0; i < footprints.size(); ++i) {
+    const std::string name =
+        i < scenario.obstacles.size()
+            ? "obstacles[" + std::to_string(i) + "]"
+            : "ground wall " + std::to_string(i - scenario.obstacles.size());
+    const int first = merged_into[i];
+    if (footprints[i].empty() || (first >= 0 && first != static_cast<int>(i)))
+      mesh.add_empty();
+    else if (first >= 0)
+      mesh.add_region(regions[first].outlines, regions[first].holes, name);
+    else
+      mesh.add_polygon(footprints[i], name);
+  }
+  return mesh;
+}
 
-void validate(const Scenario& scenario) {
+// validate(), on the scenario's ground built once by its caller.
+void validate_on(const Scenario& scenario, const Ground& ground) {
   validate(scenario.character, "character");
   validate(scenario.planner, "planner");
   for (size_t i = 0; i < scenario.agents.size(); ++i) {
     if (scenario.agents[i].character)
       validate(*scenario.agents[i].character, child(item("agents", i), "character"));
   }
-  const Ground ground(scenario.ground);
   // Their motions and clearances are checked as they are made.
   const detail::CharacterPlanners planners(scenario, nullptr, &ground);
   std::set<std::string> names;
@@ -213,17 +268,15 @@ void validate(const Scenario& scenario) {
   check_on_ground(scenario, ground, planners);
 }
 
-namespace {
-
 /// plan_scenario, with the agents that `fixed` (empty, or one per agent)
 /// gives a plan keeping it.
 Plan plan_among(const Scenario& scenario, const RunControl& control,
                 const std::vector<const AgentPlan*>& fixed) {
-  validate(scenario);
-  const CollisionScene scene(scenario.obstacles);
   const Ground ground(scenario.ground);
+  validate_on(scenario, ground);
+  const CollisionScene scene(scenario.obstacles);
   const detail::CharacterPlanners planners(scenario, &scene, &ground);
-  const NavMesh mesh = navmesh_of(scenario);
+  const NavMesh mesh = navmesh_on(scenario, ground, kNavMeshMargin);
   Plan plan;
   plan.character = scenario.character;
   plan.obstacles = scenario.obstacles;
@@ -242,9 +295,9 @@ Plan plan_among(const Scenario& scenario, const RunControl& control,
   if (!ground.empty())
     for (std::size_t i = 0; i < agents.size(); ++i)
       for (Footstep& step : plan.agents[i].footsteps) {
-        const auto levels =
-            ground.standable_at(step.foot_position, planners.character(agents[i]).body_height);
-        if (!levels.empty()) step.foot_height = levels.front().z;
+        const auto under =
+            ground.standing_on(step.foot_position, planners.character(agents[i]).body_height);
+        if (under) step.foot_height = under->z;
       }
   // One that stops short stands at its last goal: none of the scenario's.
   for (std::size_t i = 0; i < agents.size(); ++i) {
@@ -261,6 +314,8 @@ Plan plan_among(const Scenario& scenario, const RunControl& control,
 }
 
 }  // namespace
+
+void validate(const Scenario& scenario) { validate_on(scenario, Ground(scenario.ground)); }
 
 Plan plan_scenario(const Scenario& scenario, const RunControl& control) {
   return plan_among(scenario, control, {});
@@ -294,60 +349,7 @@ Plan replan_agents(const Scenario& scenario, const Plan& fixed,
 }
 
 NavMesh navmesh_of(const Scenario& scenario, double margin) {
-  if (!(margin > 0)) throw std::invalid_argument("navmesh_of: margin must be > 0");
-  Vec2 lo{0, 0}, hi{0, 0};
-  bool any = false;
-  auto grow = [&](Vec2 p) {
-    lo = any ? Vec2{std::min(lo.x, p.x), std::min(lo.y, p.y)} : p;
-    hi = any ? Vec2{std::max(hi.x, p.x), std::max(hi.y, p.y)} : p;
-    any = true;
-  };
-  const Ground ground(scenario.ground);
-  const std::vector<double> cuts =
-      cut_heights(ground, scenario.obstacles, scenario.character.body_height);
-  std::vector<std::vector<Vec2>> footprints;
-  for (std::size_t i = 0; i < scenario.obstacles.size(); ++i) {
-    footprints.push_back(footprint(scenario.obstacles[i], cuts[i]));
-    for (Vec2 p : footprints.back()) grow(p);
-  }
-  // The ground's walls: its edges no one steps across (by the scenario's
-  // character: the lower of its step limits), as thin obstacles after them.
-  const double step = std::min(scenario.character.max_step_up, scenario.character.max_step_down);
-  for (const GroundWall& wall : ground.walls(step, scenario.character.body_height)) {
-    const Vec2 side = (0.5 * kGroundWallWidth / distance(wall.a, wall.b)) * perp(wall.b - wall.a);
-    footprints.push_back({wall.a - side, wall.b - side, wall.b + side, wall.a + side});
-    for (Vec2 p : footprints.back()) grow(p);
-  }
-  for (const AgentSpec& a : scenario.agents) {
-    grow(a.position);
-    for (Vec2 g : a.goals) grow(g);
-  }
-  // The margin stops at the world's edge: everything lies within it already.
-  const auto inside = [](double v) { return std::clamp(v, -kMaxCoordinate, kMaxCoordinate); };
-  NavMesh mesh({inside(lo.x - margin), inside(lo.y - margin)},
-               {inside(hi.x + margin), inside(hi.y + margin)});
-  // Obstacle i gets id i; one wholly above the head (no footprint) blocks
-  // nothing. Overlapping ones enter as their union, under the first one's id.
-  std::vector<int> merged_into(footprints.size(), -1);
-  std::map<int, Region> regions;
-  for (OverlapGroup& group : overlapping_groups(footprints)) {
-    for (int i : group.members) merged_into[i] = group.members.front();
-    regions[group.members.front()] = std::move(group.region);
-  }
-  for (std::size_t i = 0; i < footprints.size(); ++i) {
-    const std::string name =
-        i < scenario.obstacles.size()
-            ? "obstacles[" + std::to_string(i) + "]"
-            : "ground wall " + std::to_string(i - scenario.obstacles.size());
-    const int first = merged_into[i];
-    if (footprints[i].empty() || (first >= 0 && first != static_cast<int>(i)))
-      mesh.add_empty();
-    else if (first >= 0)
-      mesh.add_region(regions[first].outlines, regions[first].holes, name);
-    else
-      mesh.add_polygon(footprints[i], name);
-  }
-  return mesh;
+  return navmesh_on(scenario, Ground(scenario.ground), margin);
 }
 
 }  // namespace footfall

@@ -48,7 +48,9 @@ Plan replan_agents(const Scenario& scenario, const Plan& fixed,
 /// /// to kMaxCoordinate); obstacle i gets id i. Obstacles whose footprints
 /// overlap (simple polygons whose areas share more than a boundary) enter as
 /// one region, their union, under the id of the first of them; the ids of
-/// the others block nothing. [m] [margin > 0]
-NavMesh navmesh_of(const Scenario& scenario, double margin = 5.0);
+/// the others block nothing. The ground's walls follow the obstacles. [m]
+/// [margin > 0]
+constexpr double kNavMeshMargin = 5.0;
+NavMesh navmesh_of(const Scenario& scenario, double margin = kNavMeshMargin);
 
 }  // namespace footfall
