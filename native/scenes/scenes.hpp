@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "footfall/crowd/scenario.hpp"
-#include "footfall/terrain/ground.hpp"
+#include "footfall/ground/ground.hpp"
 
 namespace footfall {
 

@@ -2,7 +2,7 @@
 // platform with a ramp beside its edge, a hill.
 #include <cmath>
 
-#include "footfall/terrain/ground.hpp"
+#include "footfall/ground/ground.hpp"
 #include "footfall/scenes/scenes.hpp"
 
 namespace footfall {

@@ -15,7 +15,7 @@
 #include "footfall/plan/plan.hpp"
 #include "footfall/planner/planner.hpp"
 #include "footfall/scenes/scenes.hpp"
-#include "footfall/terrain/ground.hpp"
+#include "footfall/ground/ground.hpp"
 #include "util/seeded_random.hpp"
 
 namespace footfall::tools {

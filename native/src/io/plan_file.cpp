@@ -10,7 +10,7 @@
 #include <string_view>
 #include <unordered_map>
 
-#include "footfall/terrain/ground.hpp"
+#include "footfall/ground/ground.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json_reader.hpp"
 #include "io/json_writer.hpp"

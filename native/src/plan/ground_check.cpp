@@ -1,6 +1,6 @@
 #include "footfall/plan/ground_check.hpp"
 
-#include "footfall/terrain/foothold.hpp"
+#include "footfall/ground/foothold.hpp"
 
 namespace footfall {
 

@@ -7,7 +7,7 @@
 
 #include "footfall/fullbody/step_body_test.hpp"
 #include "footfall/plan/section_lookup.hpp"
-#include "footfall/terrain/ground.hpp"
+#include "footfall/ground/ground.hpp"
 #include "model/contact.hpp"
 #include "planner/validity_impl.hpp"
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "footfall/planner/validity_checker.hpp"
-#include "footfall/terrain/foothold.hpp"
+#include "footfall/ground/foothold.hpp"
 #include "model/footstep_shape.hpp"
 #include "planner/sampled_agents.hpp"
 

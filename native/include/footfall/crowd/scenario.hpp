@@ -16,7 +16,7 @@ namespace footfall {
 /// Everything needed to plan a scene: plain data.
 struct Scenario {
   std::vector<Obstacle> obstacles;  ///< Static obstacles.
-  /// The walkable ground (terrain/ground.hpp's surfaces); empty: the plane
+  /// The walkable ground (ground/ground.hpp's surfaces); empty: the plane
   /// z = 0 everywhere.
   std::vector<Obstacle> ground;
   std::vector<AgentSpec> agents;    ///< Agents, each planned on its own.

@@ -61,7 +61,7 @@ class ObstacleMap {
   explicit ObstacleMap(std::vector<Obstacle> obstacles = {},
                        double cut_height = std::numeric_limits<double>::infinity());
   /// The same with a cut per obstacle (on ground, the body's height above
-  /// the ground under each: cut_heights() in terrain/ground.hpp).
+  /// the ground under each: cut_heights() in ground/ground.hpp).
   ObstacleMap(std::vector<Obstacle> obstacles, const std::vector<double>& cut_heights);
 
   /// Index of an obstacle that the circle touches or overlaps, or -1.

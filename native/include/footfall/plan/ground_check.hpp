@@ -6,7 +6,7 @@
 
 namespace footfall {
 
-/// A plan's footholds by foothold_fault (terrain/foothold.hpp), each at its
+/// A plan's footholds by foothold_fault (ground/foothold.hpp), each at its
 /// chosen orientation.
 struct GroundCheck {
   long footholds = 0;    ///< Every footstep of every agent; 0 without ground.

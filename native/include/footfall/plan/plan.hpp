@@ -113,7 +113,7 @@ struct Plan {
   std::vector<AgentPlan> agents;     ///< One per scenario agent, in the same order.
   CharacterParams character;         ///< The character the plan was made for.
   std::vector<Obstacle> obstacles;   ///< The scenario's static obstacles, for measuring the plan.
-  /// The scenario's ground (terrain/ground.hpp's surfaces); empty: the plane
+  /// The scenario's ground (ground/ground.hpp's surfaces); empty: the plane
   /// z = 0.
   std::vector<Obstacle> ground;
   Status status = Status::kSuccess;  ///< kCancelled if the run was stopped.

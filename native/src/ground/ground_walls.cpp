@@ -6,7 +6,7 @@
 #include <map>
 #include <utility>
 
-#include "footfall/terrain/ground.hpp"
+#include "footfall/ground/ground.hpp"
 
 namespace footfall {
 namespace {

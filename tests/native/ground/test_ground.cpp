@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "footfall/terrain/ground.hpp"
+#include "footfall/ground/ground.hpp"
 
 namespace footfall {
 namespace {

@@ -1,4 +1,4 @@
-#include "footfall/terrain/foothold.hpp"
+#include "footfall/ground/foothold.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -13,7 +13,7 @@
 #include "footfall/io/scenario_file.hpp"
 #include "footfall/plan/ground_check.hpp"
 #include "footfall/plan/metrics.hpp"
-#include "footfall/terrain/ground.hpp"
+#include "footfall/ground/ground.hpp"
 #include "footfall/scenes/scenes.hpp"
 
 namespace footfall {

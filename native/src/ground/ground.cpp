@@ -1,4 +1,4 @@
-#include "footfall/terrain/ground.hpp"
+#include "footfall/ground/ground.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 
 #include "footfall/model/footstep.hpp"
 #include "footfall/model/params.hpp"
-#include "footfall/terrain/ground.hpp"
+#include "footfall/ground/ground.hpp"
 
 namespace footfall {
 
