@@ -16,6 +16,7 @@ constexpr double kMaxHeight = 1000.0;  // [m] as obstacles' heights
 constexpr double kMinNormalZ = 1e-9;   // a face steeper than this stands on edge: no footprint
 constexpr int kSoleRows = 7, kSoleColumns = 4;  // the sole's sample grid
 constexpr int kSoleSamples = kSoleRows * kSoleColumns;
+constexpr double kInstep = 0.1;  // [m] above the sole: ground there is ground the foot is in
 
 [[noreturn]] void refuse(const std::string& field, const std::string& what) {
   throw std::invalid_argument(field + ": " + what);
@@ -246,47 +247,44 @@ bool Ground::holds(const Sole& sole, double tolerance, double min_normal_z, doub
 
 int Ground::soles_samples_held(const Sole& sole, double tolerance, double min_normal_z,
                                int may_miss) const {
-  // Most soles stand inside one floor or tread: the whole sole is held if a
-  // flat top at its height holds the circle round it, or (a convex top) its
-  // four corners.
   const Vec2 along = unit(sole.heading), across = perp(along);
   const Vec2 centre = ground(sole.centre);
   const double reach = 0.5 * std::hypot(sole.length, sole.width);
-  const Vec2 half_along = 0.5 * sole.length * along, half_across = 0.5 * sole.width * across;
-  bool inside_a_top = false;
-  if (sole.normal.x == 0.0 && sole.normal.y == 0.0) {
-    visit_faces_at(centre, [&](const Face& face) {
-      if (inside_a_top || face.triangle >= 0 || std::fabs(face.d - sole.centre.z) > tolerance)
-        return;
-      const std::vector<Vec2>& top = surfaces_[face.surface].polygon;
-      inside_a_top = distance_to_outline(top, centre) >= reach ||
-                     (convex_[face.surface] &&
-                      inside_even_odd(top, centre + half_along + half_across) &&
-                      inside_even_odd(top, centre + half_along - half_across) &&
-                      inside_even_odd(top, centre - half_along + half_across) &&
-                      inside_even_odd(top, centre - half_along - half_across));
-    });
-  }
-  if (inside_a_top) return kSoleSamples;
-  // The faces that may hold a sample, gathered once from the cells under the
-  // sole's circle.
+  // The faces near the sole, gathered once from the cells under its circle.
   thread_local std::vector<const Face*> near;
   near.clear();
+  const Box circle{{centre.x - reach, centre.y - reach}, {centre.x + reach, centre.y + reach}};
   for (const IndexLevel& level : index_) {
     const auto first = [&](double v) {
       return static_cast<std::int64_t>(std::floor(v / level.cell));
     };
-    for (std::int64_t ix = first(centre.x - reach); ix <= first(centre.x + reach); ++ix)
-      for (std::int64_t iy = first(centre.y - reach); iy <= first(centre.y + reach); ++iy) {
+    for (std::int64_t ix = first(circle.min.x); ix <= first(circle.max.x); ++ix)
+      for (std::int64_t iy = first(circle.min.y); iy <= first(circle.max.y); ++iy) {
         const auto cell = level.cells.find(cell_key(ix, iy));
         if (cell == level.cells.end()) continue;
         for (const int id : cell->second) {
           const Face* face = &faces_[id];
-          if (face->walkable && face->normal.z >= min_normal_z &&
+          if (face->box.min.x <= circle.max.x && face->box.max.x >= circle.min.x &&
+              face->box.min.y <= circle.max.y && face->box.max.y >= circle.min.y &&
               std::find(near.begin(), near.end(), face) == near.end())
             near.push_back(face);
         }
       }
+  }
+  // Most soles stand inside one floor or tread with nothing else near: the
+  // whole sole is held if a flat top at its height holds the circle round
+  // it, or (a convex top) its four corners.
+  if (near.size() == 1 && near.front()->triangle < 0 && sole.normal.x == 0.0 &&
+      sole.normal.y == 0.0 && std::fabs(near.front()->d - sole.centre.z) <= tolerance) {
+    const int surface = near.front()->surface;
+    const std::vector<Vec2>& top = surfaces_[surface].polygon;
+    const Vec2 half_along = 0.5 * sole.length * along, half_across = 0.5 * sole.width * across;
+    if (distance_to_outline(top, centre) >= reach ||
+        (convex_[surface] && inside_even_odd(top, centre + half_along + half_across) &&
+         inside_even_odd(top, centre + half_along - half_across) &&
+         inside_even_odd(top, centre - half_along + half_across) &&
+         inside_even_odd(top, centre - half_along - half_across)))
+      return kSoleSamples;
   }
   int held = 0, missed = 0;
   for (int i = 0; i < kSoleRows && missed <= may_miss; ++i) {
@@ -297,10 +295,14 @@ int Ground::soles_samples_held(const Sole& sole, double tolerance, double min_no
       // The sole's plane over p.
       const double plane =
           sole.centre.z - (sole.normal.x * offset.x + sole.normal.y * offset.y) / sole.normal.z;
-      const bool supported = std::any_of(near.begin(), near.end(), [&](const Face* face) {
-        return in_box(*face, p) && contains(*face, p) &&
-               std::fabs(height_of(*face, p) - plane) <= tolerance;
-      });
+      bool supported = false;
+      for (const Face* face : near) {
+        if (!in_box(*face, p) || !contains(*face, p)) continue;
+        // Ground above the sole, below the instep: the foot would be in it (a riser).
+        if (covers(*face, p, plane + tolerance, plane + kInstep)) return 0;
+        supported = supported || (face->walkable && face->normal.z >= min_normal_z &&
+                                  std::fabs(height_of(*face, p) - plane) <= tolerance);
+      }
       held += supported ? 1 : 0;
       missed += supported ? 0 : 1;
     }

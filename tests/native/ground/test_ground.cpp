@@ -110,6 +110,20 @@ TEST(Ground, ASoleIsHeldWholeOnATreadAndInPartOverItsNosing) {
   EXPECT_DOUBLE_EQ(ground.support(sole_at({0.45, 0, 0.30}), 0.02, 0.8), 0.0);
 }
 
+TEST(Ground, ASoleWhoseToeRunsIntoTheNextRiserIsHeldNowhere) {
+  const Ground ground(flight(3));
+  // On the second tread (x 0.3-0.6 at 0.34 m), the toe 3 cm into the third
+  // tread's riser: six of its seven rows lie on the tread, the toe's in the step.
+  EXPECT_DOUBLE_EQ(ground.support(sole_at({0.5, 0, 0.34}), 0.02, 0.8), 0.0);
+  // 3 cm short of the riser it is held whole.
+  EXPECT_DOUBLE_EQ(ground.support(sole_at({0.44, 0, 0.34}), 0.02, 0.8), 1.0);
+  // A floor with a platform on it: beside the platform held whole, against it held nowhere.
+  const Ground floor_and_platform(
+      {ground_prism(rectangle(-5, -5, 5, 5), 0.0), ground_prism(rectangle(1, -1, 2, 1), 0.4)});
+  EXPECT_DOUBLE_EQ(floor_and_platform.support(sole_at({0.8, 0, 0}), 0.02, 0.8), 1.0);
+  EXPECT_DOUBLE_EQ(floor_and_platform.support(sole_at({0.9, 0, 0}), 0.02, 0.8), 0.0);
+}
+
 TEST(Ground, OnARampASoleAlongTheSlopeIsHeldAndAFlatOneOrATooSteepSlopeIsNot) {
   const Ground ground({ramp()});
   const GroundPoint under = ground.levels_at({2, 0})[0];

@@ -102,7 +102,9 @@ class Ground {
   std::optional<GroundPoint> level_near(Vec2 p, double z, double reach) const;
   /// The share of `sole` (sampled on a 7 x 4 grid) over a walkable face
   /// within `tolerance` of the sole's plane, on a slope whose normal has at
-  /// least `min_normal_z` (the cosine of the steepest walkable slope). [0, 1]
+  /// least `min_normal_z` (the cosine of the steepest walkable slope); 0
+  /// where any sample has ground over the sole's plane, above `tolerance`
+  /// and up to the instep (0.1 m): a toe in a riser is no foothold. [0, 1]
   double support(const Sole& sole, double tolerance, double min_normal_z) const;
   /// True if support() is at least `share`; stops sampling once it cannot be.
   bool holds(const Sole& sole, double tolerance, double min_normal_z, double share) const;
