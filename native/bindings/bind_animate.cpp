@@ -7,6 +7,7 @@
 #include "footfall/animate/crowd_gltf.hpp"
 #include "footfall/animate/foot_roll.hpp"
 #include "footfall/animate/gait_cycle.hpp"
+#include "footfall/animate/ground_follow.hpp"
 #include "footfall/animate/key_thinning.hpp"
 #include "footfall/animate/upper_body.hpp"
 
@@ -33,6 +34,7 @@ void bind_animate(py::module_& m) {
   amplitudes["heel_strike"] = animate::kHeelStrike;
   amplitudes["toe_off"] = animate::kToeOff;
   amplitudes["heel_share"] = animate::kHeelShare;
+  amplitudes["stair_rise"] = animate::kStairRise;
   m.attr("FOOT_ROLL") = amplitudes;
   m.def(
       "detect_bones",
@@ -111,6 +113,54 @@ void bind_animate(py::module_& m) {
       "the body's facing [rad], the share of the walking clip's amplitude, the look angle [rad] the "
       "chest and head turn by (LOOK_SHARES of it each, the head on top of the chest), and the chest's "
       "twist [rad] to the heading the planner tested (on top of its look).");
+  py::class_<Ground>(m, "Ground", "A plan's ground, indexed (ground/ground.hpp): build it once a plan.")
+      .def(py::init<std::vector<GroundSurface>>(), py::arg("surfaces"))
+      .def("empty", &Ground::empty, "True without ground: the plane z = 0 is the floor.");
+  m.def(
+      "ground_motion",
+      [](const AgentPlan& agent, const CharacterParams& character, const Ground& ground,
+         const py::array_t<double, py::array::c_style | py::array::forcecast>& times,
+         double heel_back, double toe_ahead, double width) {
+        const animate::GroundFollower follower(agent, character, ground, {heel_back, toe_ahead, width});
+        const py::ssize_t count = times.size();
+        py::array_t<double> soles({count, py::ssize_t{2}, py::ssize_t{3}});
+        py::array_t<double> headings({count, py::ssize_t{2}});
+        py::array_t<double> normals({count, py::ssize_t{2}, py::ssize_t{3}});
+        py::array_t<double> body(count), lean(count);
+        auto s = soles.mutable_unchecked<3>();
+        auto h = headings.mutable_unchecked<2>();
+        auto n = normals.mutable_unchecked<3>();
+        auto b = body.mutable_unchecked<1>();
+        auto l = lean.mutable_unchecked<1>();
+        const double* t = times.data();
+        {
+          py::gil_scoped_release release;
+          for (py::ssize_t i = 0; i < count; ++i) {
+            const std::array<FootPose, 2> feet = feet_at(agent, t[i]);
+            for (py::ssize_t side = 0; side < 2; ++side) {
+              const animate::FootOnGround foot = follower.foot(feet[static_cast<std::size_t>(side)]);
+              const std::array<double, 3> sole{foot.sole.x, foot.sole.y, foot.sole.z};
+              const std::array<double, 3> normal{foot.normal.x, foot.normal.y, foot.normal.z};
+              for (py::ssize_t k = 0; k < 3; ++k) {
+                s(i, side, k) = sole[static_cast<std::size_t>(k)];
+                n(i, side, k) = normal[static_cast<std::size_t>(k)];
+              }
+              h(i, side) = foot.heading;
+            }
+            b(i) = follower.body_height(feet);
+            l(i) = follower.lean(t[i]);
+          }
+        }
+        return py::make_tuple(soles, headings, normals, body, lean);
+      },
+      py::arg("agent"), py::arg("character"), py::arg("ground"), py::arg("times"), py::arg("heel_back"),
+      py::arg("toe_ahead"), py::arg("width"),
+      "How the agent's motion follows the ground at `times` [s] (animate/ground_follow.hpp), for a foot "
+      "`heel_back` behind and `toe_ahead` of the point under its ankle and `width` wide [m]: (soles "
+      "(n, 2, 3): each foot's point under the ankle, lifted clear of the ground while it swings; "
+      "headings (n, 2) [rad]; normals (n, 2, 3) of the soles' planes; body (n,): the ground's height "
+      "the body rides over [m]; lean (n,): the upper body's lean into a climb [rad, forward "
+      "positive]), feet [left, right].");
   m.def(
       "keys_to_keep",
       [](const py::array_t<double, py::array::c_style | py::array::forcecast>& times,

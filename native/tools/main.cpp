@@ -204,11 +204,6 @@ footfall::Plan replan(const footfall::Scenario& scenario, const footfall::Plan& 
 int plan_and_write(const footfall::Scenario& scenario, const Options& options) {
   const std::string& output = options.output;
   const int threads = options.threads;
-  // Refused before planning: the plan is not written without its .glb.
-  if (!options.glb.empty() && !scenario.ground.empty())
-    throw std::invalid_argument(
-        "--glb: the scenario has ground (stairs, ramps, levels); animating a plan on it is not "
-        "supported yet (its feet would be put at z = 0)");
   footfall::RunControl control;
   control.threads = threads;
   const bool terminal = isatty(STDERR_FILENO) == 1;

@@ -185,6 +185,84 @@ def test_agents_of_other_sizes_are_the_rig_scaled_with_their_feet_on_the_plan(ff
     assert checked > 50 and contact < CONTACT_TOLERANCE and hips < HIPS_TOLERANCE
 
 
+STAIRS = ROOT / "tests" / "data" / "stairs.json"
+GROUND_TOLERANCE = 0.01  # [m] a foot's vertex below the ground under it
+
+
+def ground_heights(prisms, points):
+    """The highest prism top over each of `points` (n, 2), -inf where none: even-odd per polygon."""
+    highest = numpy.full(len(points), -numpy.inf)
+    x, y = points[:, 0], points[:, 1]
+    for prism in prisms:
+        polygon = numpy.asarray(prism["polygon"], dtype=float)
+        inside = numpy.zeros(len(points), dtype=bool)
+        for (ax, ay), (bx, by) in zip(polygon, numpy.roll(polygon, -1, axis=0)):
+            crosses = (ay > y) != (by > y)
+            with numpy.errstate(divide="ignore", invalid="ignore"):
+                at = ax + (y - ay) * (bx - ax) / (by - ay)
+            inside ^= crosses & (x < at)
+        highest = numpy.where(inside, numpy.maximum(highest, prism["height"]), highest)
+    return highest
+
+
+def foot_vertices(crowd, agent, times, bones):
+    """(len(times), n, 3) world points, Z up, of the agent's skinned vertices
+    whose strongest joint is one of `bones` (names)."""
+    document = crowd.document
+    skin = document["skins"][0]
+    rig_names = [document["nodes"][j].get("name") for j in skin["joints"]]
+    below = crowd.subtree(crowd.agent_root(agent))
+    joints_here = [below[name] for name in rig_names]
+    world = crowd.world_matrices(agent, times, joints_here)
+    binds = crowd.accessor(skin["inverseBindMatrices"])
+    skinning = numpy.stack([world[j] @ m for j, m in zip(joints_here, binds)], axis=1)  # (t, joints, 4, 4)
+    wanted = {rig_names.index(name) for name in bones}
+    mesh_node = next(n for n in document["nodes"] if "skin" in n and "mesh" in n)
+    points = []
+    for primitive in document["meshes"][mesh_node["mesh"]]["primitives"]:
+        attributes = primitive["attributes"]
+        positions = crowd.accessor(attributes["POSITION"])
+        joints = crowd.accessor(attributes["JOINTS_0"]).astype(int)
+        weights = crowd.accessor(attributes["WEIGHTS_0"])
+        keep = numpy.array([j[numpy.argmax(w)] in wanted for j, w in zip(joints, weights)])
+        p = numpy.append(positions[keep], numpy.ones((keep.sum(), 1)), axis=1)
+        skinned = sum(weights[keep, k][None, :, None] * numpy.einsum("tvij,vj->tvi", skinning[:, joints[keep, k]], p)
+                      for k in range(4))
+        points.append(skinned[..., :3])
+    return z_up(numpy.concatenate(points, axis=1))
+
+
+def test_a_stair_crowd_keeps_every_foot_on_its_tread_and_out_of_the_risers(ff, cli, tmp_path):
+    """Up and down a flight: from the skinned mesh at every frame, no vertex
+    of a foot more than 1 cm below the ground under it (a toe in a riser, a
+    sole through a tread), and the hips risen to the landing."""
+    plan_path, crowd_path = tmp_path / "plan.json", tmp_path / "crowd.glb"
+    run = subprocess.run([cli, "plan", str(STAIRS), "-o", str(plan_path), "--glb", str(crowd_path),
+                          "--rig", str(RIG)], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    errors, report = validator_errors(crowd_path)
+    assert errors == 0, report[:2000]
+    plan = ff.load_plan(str(plan_path))
+    prisms = json.loads(plan_path.read_text())["ground"]
+    crowd = CrowdGlb(crowd_path)
+    bones = json.loads(PROFILE.read_text())["bones"]
+    feet = [bones[side][part] for side in ("left", "right") for part in ("foot", "toe")]
+    deepest, frames = 0.0, 0
+    for agent in plan.agents:
+        times = crowd.animation_times(agent.name)
+        points = foot_vertices(crowd, agent.name, times, feet)
+        under = ground_heights(prisms, points.reshape(-1, 3)[:, :2]).reshape(points.shape[:2])
+        depth = numpy.max(under - points[..., 2], axis=1)
+        deepest = max(deepest, float(depth.max()))
+        frames += len(times)
+        hips = crowd.world_positions(agent.name, times[-1:], [bones["hips"]], crowd.agent_root(agent.name))
+        landing = agent.name.startswith("up")
+        assert z_up(hips[bones["hips"]])[0, 2] > (1.5 if landing else 0.5), agent.name
+    print(f"stairs: deepest foot vertex {1000 * deepest:.1f} mm below the ground, {frames} frames")
+    assert frames > 2000
+    assert deepest < GROUND_TOLERANCE
+
+
 def rewritten(source, target, change):
     """A copy of the .glb `source` at `target`, its JSON changed by `change(document)`."""
     data = source.read_bytes()

@@ -12,7 +12,9 @@ strips, one per section of the path (clip_timing).
 
 Every planned foot position is the point on the ground under the ankle with
 the foot flat; the foot rolls heel to toe about it (core/foot_roll.py), and
-the toe bends as the heel rises.
+the toe bends as the heel rises. On a plan's ground the core says where each
+sole goes (on its tread, along its slope, lifted over nosings), how high the
+body rides and how far it leans (footfall._native.ground_motion).
 """
 
 import functools
@@ -68,6 +70,7 @@ class Leg:
     knee: Vector
     length: float  # hip to knee to ankle
     shape: foot_roll.FootShape  # the foot seen from the side, for its roll
+    foot_length: float  # heel to toe tip along the ground
 
 
 @dataclass
@@ -169,6 +172,7 @@ def rig_rest(data, profile, feet=None) -> RigRest:
             length=(shin.head_local - thigh.head_local).length + (foot.head_local - shin.head_local).length,
             shape=foot_roll.foot_shape(foot.head_local, toe.head_local, forward, profile.dimensions["foot_length"],
                                        (feet or {}).get(side, ())),
+            foot_length=profile.dimensions["foot_length"],
         )
     return rest
 
@@ -231,6 +235,25 @@ def _turns(rest: Matrix, axis, angles):
     local = numpy.array(rest.to_3x3()).T @ numpy.asarray(axis, dtype=float)
     half = 0.5 * angles
     return numpy.column_stack((numpy.cos(half), numpy.outer(numpy.sin(half), local)))
+
+
+def _tilts(rest: Matrix, normals):
+    """Pose quaternions of an unparented bone turning it by the shortest turn
+    from the up direction to each of `normals` (n, 3): a sole laid along the
+    ground's slope."""
+    axes = numpy.cross([0.0, 0.0, 1.0], normals)
+    sines = numpy.linalg.norm(axes, axis=1)
+    units = axes / numpy.where(sines > 0.0, sines, 1.0)[:, None]
+    half = 0.5 * numpy.arctan2(sines, normals[:, 2])
+    local = units @ numpy.array(rest.to_3x3())  # rows: R^T axis
+    return numpy.column_stack((numpy.cos(half), numpy.sin(half)[:, None] * local))
+
+
+def _tilted(quaternions, vectors):
+    """`vectors` (n, 3) turned by the unit `quaternions` (n, 4; w, x, y, z)."""
+    w, axes = quaternions[:, :1], quaternions[:, 1:]
+    twice = 2.0 * numpy.cross(axes, vectors)
+    return vectors + w * twice + numpy.cross(axes, twice)
 
 
 def _pose_arrays(rest: Matrix, positions, yaws=None):
@@ -344,46 +367,82 @@ def _step_arrays(ff, steps) -> foot_roll.Steps:
     start = numpy.array([s.start_time for s in steps])
     end = numpy.array([s.end_time for s in steps])
     chord = numpy.array([math.dist(s.com_start, s.com_end) for s in steps])
+    heights = numpy.array([s.foot_height for s in steps])
+    stair = numpy.zeros(len(steps), dtype=bool)
+    stair[1:] = numpy.abs(numpy.diff(heights)) > foot_roll.STAIR_RISE
     return foot_roll.Steps(start, end, numpy.array([0 if s.foot == ff.Foot.LEFT else 1 for s in steps]),
-                           numpy.array([s.kind != ff.StepKind.SIDE_STEP for s in steps], dtype=bool),
+                           numpy.array([s.kind != ff.StepKind.SIDE_STEP for s in steps], dtype=bool) & ~stair,
                            chord / numpy.maximum(end - start, 1e-9))
 
 
-def motion_of(ff, agent, rest: RigRest, frames, fps: float, speed: float):
+class Terrain(NamedTuple):
+    """A plan's ground, for its agents' motion: the core's index of it, and
+    the character the plan was made for (an agent's own wins)."""
+
+    ground: object  # footfall._native.Ground
+    character: object  # footfall._native.CharacterParams
+
+
+def terrain_of(ff, plan) -> Optional[Terrain]:
+    """The plan's Terrain, or None on the flat (its feet and body as planned)."""
+    return Terrain(ff.Ground(plan.ground), plan.character) if plan.ground else None
+
+
+def motion_of(ff, agent, rest: RigRest, frames, fps: float, speed: float, terrain: Optional[Terrain] = None):
     """The agent's motion at `frames` (the first is the plan's time 0; after
-    its plan the agent holds its last pose), for an agent walking at `speed`:
-    the locomotion's channels (bone -> Keyed), and the walking clips' swing,
-    the look-ahead and the chest's twist (ff.upper_body)."""
+    its plan the agent holds its last pose), for an agent walking at `speed`
+    (on `terrain`, its plan's ground): the locomotion's channels (bone ->
+    Keyed), and the walking clips' swing, the look-ahead, the chest's twist
+    (ff.upper_body) and the upper body's lean into a climb."""
     times = numpy.minimum((frames - frames[0]) / fps, agent.end_time())
     facing, swing, look, twist = ff.upper_body(agent, times, speed)
-    return _locomotion(ff, agent, rest, times, facing, speed), swing, look, twist
+    on_ground = None
+    if terrain is not None:
+        leg = rest.legs["left"]  # the rig's left foot for both, as the core's writer
+        on_ground = ff.ground_motion(agent, agent.character or terrain.character, terrain.ground, times,
+                                     agent.scale * leg.shape.heel_back,
+                                     agent.scale * (leg.foot_length - leg.shape.heel_back),
+                                     (agent.character or terrain.character).sole_width)
+    lean = numpy.zeros(len(times)) if on_ground is None else on_ground[4]
+    return _locomotion(ff, agent, rest, times, facing, speed, on_ground), swing, look, twist, lean
 
 
-def _locomotion(ff, agent, rest: RigRest, times, facing, full_speed: float):
+def _locomotion(ff, agent, rest: RigRest, times, facing, full_speed: float, on_ground=None):
     """Channels of the hips on the COM path, the foot targets on the feet
     (rolling heel to toe: foot_roll, the toes bending as the heels rise) and
     the poles ahead of the knees, at `times` (clamped to the plan's end: after
     its plan the agent holds its last pose; one that leaves is hidden then,
-    _key_leaving); `facing` is the body's there (ff.upper_body)."""
+    _key_leaving); `facing` is the body's there (ff.upper_body); `on_ground`:
+    ff.ground_motion's arrays on a plan's ground, else None."""
     count = len(times)
     com, feet_xy, feet_yaw, lift, planted = ff.sample_motion(agent, times)
+    body = numpy.zeros(count)
+    if on_ground is not None:
+        soles, feet_yaw, normals, body, _ = on_ground
     # In the rig's own size: the instance object scales it to the plan's (agent.scale).
-    com, feet_xy, lift = com / agent.scale, feet_xy / agent.scale, lift / agent.scale
+    com, feet_xy, lift, body = com / agent.scale, feet_xy / agent.scale, lift / agent.scale, body / agent.scale
     step_arrays = _step_arrays(ff, agent.footsteps)
     lateral = numpy.cross([math.cos(rest.forward_yaw), math.sin(rest.forward_yaw), 0.0], [0.0, 0.0, 1.0])
     body_yaw = numpy.unwrap(facing) - rest.forward_yaw
     hips_head = numpy.array(rest.hips_rest.to_translation())
     cos, sin = numpy.cos(body_yaw), numpy.sin(body_yaw)
-    # The hips as high as at rest, but low enough for both legs to reach.
-    height = numpy.full(count, hips_head[2])
+    # The hips as high as at rest over the ground, but low enough for both legs to reach.
+    height = hips_head[2] + body
     channels = {}
     for side, (name, suffix) in enumerate(SIDES):
         leg = rest.legs[name]
-        flat = numpy.column_stack((feet_xy[:, side], leg.ankle.z + lift[:, side]))
         pitch, forward, up = foot_roll.roll(times, planted[:, side], side, step_arrays, leg.shape, full_speed,
                                             agent.leaves)
-        ankles = flat + numpy.column_stack((forward * numpy.cos(feet_yaw[:, side]),
-                                            forward * numpy.sin(feet_yaw[:, side]), up))
+        offsets = numpy.column_stack((forward * numpy.cos(feet_yaw[:, side]),
+                                      forward * numpy.sin(feet_yaw[:, side]), up))
+        if on_ground is None:
+            flat = numpy.column_stack((feet_xy[:, side], leg.ankle.z + lift[:, side]))
+            ankles = flat + offsets
+        else:
+            # The ankle over the sole, and rolled, along the sole's slope.
+            tilts = _tilts(Matrix.Identity(4), normals[:, side])
+            flat = soles[:, side] / agent.scale + _tilted(tilts, numpy.tile([0.0, 0.0, leg.ankle.z], (count, 1)))
+            ankles = flat + _tilted(tilts, offsets)
         offset = numpy.array(leg.thigh_head) - hips_head
         hip_xy = com + numpy.column_stack((cos * offset[0] - sin * offset[1], sin * offset[0] + cos * offset[1]))
         horizontal = numpy.linalg.norm(hip_xy - ankles[:, :2], axis=1)
@@ -391,10 +450,12 @@ def _locomotion(ff, agent, rest: RigRest, times, facing, full_speed: float):
         height = numpy.minimum(height, ankles[:, 2] + rise - offset[2])
         foot_yaw = numpy.unwrap(feet_yaw[:, side]) - rest.forward_yaw
         locations, yawed = _pose_arrays(leg.foot_rest, ankles, foot_yaw)
-        # Pitched about the rest's side axis first, then turned to the foot's yaw.
+        # Pitched about the rest's side axis first, then turned to the foot's yaw (and tilted along the ground).
         swinging = numpy.where(planted[:, side], 1.0, SWING_LOOSENESS)
-        channels[IK_FOOT.format(suffix)] = Keyed(locations, _quaternion_product(
-            yawed, _turns(leg.foot_rest, lateral, pitch)), looseness=swinging)
+        turned = _quaternion_product(yawed, _turns(leg.foot_rest, lateral, pitch))
+        if on_ground is not None:
+            turned = _quaternion_product(_tilts(leg.foot_rest, normals[:, side]), turned)
+        channels[IK_FOOT.format(suffix)] = Keyed(locations, turned, looseness=swinging)
         channels[leg.toe] = Keyed(None, _turns(leg.toe_rest, lateral, -numpy.minimum(pitch, 0.0)),
                                   looseness=swinging)
         ahead = numpy.array(leg.pole_rest.to_translation() - leg.ankle)  # the pole, seen from the ankle
@@ -533,12 +594,14 @@ def _key_influence(strip, frames, influence) -> None:
     curve.update()
 
 
-def _look_ahead(ff, armature, agent_name: str, rest: RigRest, frames, look, twist) -> None:
+def _look_ahead(ff, armature, agent_name: str, rest: RigRest, frames, look, twist, lean) -> None:
     """A top NLA track that turns the chest and head by shares of the `look`
     angle at the frames (ff.upper_body), the chest also by its `twist`,
-    about the world's up, combined with (turning on top of) the clips below.
+    about the world's up, and leans the chest forward by `lean` (on ground,
+    into a climb), combined with (turning on top of) the clips below.
     Bones not turned by quaternion are left as the clips pose them."""
     turns = {"chest": ff.LOOK_SHARES["chest"] * look + twist, "head": ff.LOOK_SHARES["head"] * look}
+    lateral = (math.sin(rest.forward_yaw), -math.cos(rest.forward_yaw), 0.0)  # the rig's right at rest
     action = bpy.data.actions.new(f"{agent_name} look ahead")
     action[LOCOMOTION_OF] = armature.name
     channels = {}
@@ -546,7 +609,10 @@ def _look_ahead(ff, armature, agent_name: str, rest: RigRest, frames, look, twis
         if armature.pose.bones[bone].rotation_mode != "QUATERNION":
             continue
         matrix = armature.data.bones[bone].matrix_local
-        channels[bone] = Keyed(None, _turns(matrix, (0.0, 0.0, 1.0), turns[role]), tolerance=LOOK_TOLERANCE)
+        turned = _turns(matrix, (0.0, 0.0, 1.0), turns[role])
+        if role == "chest" and numpy.any(lean != 0.0):
+            turned = _quaternion_product(turned, _turns(matrix, lateral, -lean))
+        channels[bone] = Keyed(None, turned, tolerance=LOOK_TOLERANCE)
     if not channels:
         bpy.data.actions.remove(action)
         return
@@ -627,6 +693,7 @@ def applying(ff, plan, rigs: Dict[str, bpy.types.Object], scene, only: Optional[
         if rig.name not in characters:
             characters[rig.name] = _character(rig)
     agents = [agent for agent in plan.agents if only is None or agent.name in only]
+    terrain = terrain_of(ff, plan)
     cast = [characters[rigs[agent.name].name] for agent in agents]
     armatures = [_instance(agent.name, c.template, c.rig, collection) for agent, c in zip(agents, cast)]
     for agent, armature in zip(agents, armatures):
@@ -635,14 +702,14 @@ def applying(ff, plan, rigs: Dict[str, bpy.types.Object], scene, only: Optional[
     for i, (agent, armature, character) in enumerate(zip(agents, armatures, cast)):
         _add_controls(armature, character.rest)
         speed = (agent.character or plan.character).preferred_speed
-        channels, swing, look, twist = motion_of(ff, agent, character.rest, frames, fps, speed)
+        channels, swing, look, twist, lean = motion_of(ff, agent, character.rest, frames, fps, speed, terrain)
         if drive is None:
             _write_action(armature, f"{agent.name} locomotion", frames, channels)
         else:
             armature.animation_data_create()
             drive(armature, agent.name, character.rest, frames, fps, speed, channels)
         _upper_body(armature, agent, character.clips, fps, frame_offset, frames, swing)
-        _look_ahead(ff, armature, agent.name, character.rest, frames, look, twist)
+        _look_ahead(ff, armature, agent.name, character.rest, frames, look, twist, lean)
         _key_leaving(armature, agent, frame_offset, fps)
         yield (i + 1) / len(agents)
     for character in characters.values():

@@ -77,9 +77,6 @@ class ApplyJob:
         plan = _plan(ff, plan_filepath)
         if not plan.agents:
             raise ApplyError("The plan has no agents")
-        if plan.ground:
-            raise ApplyError("The plan walks on ground (stairs, ramps, levels): applying it is not "
-                             "supported yet (its feet would be put at z = 0)")
         # What the live crowd plays, packed now: a plan file may change before finish().
         self._live_plan = None
         if live:

@@ -100,7 +100,7 @@ class _Motion:
 
 _motions: Dict[str, _Motion] = {}  # by the "id" in an armature's LIVE property
 _failed = set()  # ids whose motion could not be made: said once, not at every frame
-_crowd_plan = (None, None)  # (the Text's revision, the core's reading of it)
+_crowd_plan = (None, None, None)  # (the Text's revision, the core's reading of it, its terrain)
 
 
 def drive(armature, agent: str, rest: animate.RigRest, frames, fps: float, speed: float, channels) -> None:
@@ -154,6 +154,7 @@ def tidy() -> None:
 
 
 def _plan():
+    """The crowd's plan and its terrain (animate.terrain_of), read once a revision of its Text."""
     global _crowd_plan
     block = bpy.data.texts.get(PLAN_TEXT)
     if block is None:
@@ -163,8 +164,8 @@ def _plan():
             plan = native.load().parse_plan(plan_store.unpack(block.as_string()), PLAN_TEXT)
         except ValueError as error:
             raise LiveMotionError(f"{error}: Apply again") from error
-        _crowd_plan = (block.get(REVISION), plan)
-    return _crowd_plan[1]
+        _crowd_plan = (block.get(REVISION), plan, animate.terrain_of(native.load(), plan))
+    return _crowd_plan[1], _crowd_plan[2]
 
 
 def _motion(armature, key: str) -> _Motion:
@@ -178,11 +179,12 @@ def _motion(armature, key: str) -> _Motion:
         rest = _rest_from_dict(json.loads(live["rest"]))
     except (KeyError, TypeError, ValueError) as error:
         raise LiveMotionError(f"its property '{LIVE}' is damaged ({error!r}): Apply again") from error
-    agent = next((a for a in _plan().agents if a.name == name), None)
+    plan, terrain = _plan()
+    agent = next((a for a in plan.agents if a.name == name), None)
     if agent is None:
         raise LiveMotionError(f"the crowd's plan has no agent '{name}': Apply again")
     frames = numpy.arange(first, first + count, dtype=float)
-    _motions[key] = _Motion(first, animate.motion_of(native.load(), agent, rest, frames, fps, speed)[0])
+    _motions[key] = _Motion(first, animate.motion_of(native.load(), agent, rest, frames, fps, speed, terrain)[0])
     return _motions[key]
 
 
@@ -213,7 +215,7 @@ def _on_load(*_) -> None:
     global _crowd_plan
     _motions.clear()
     _failed.clear()
-    _crowd_plan = (None, None)
+    _crowd_plan = (None, None, None)
 
 
 @persistent
@@ -241,7 +243,7 @@ def _rest_to_dict(rest: animate.RigRest) -> dict:
                    "foot_rest": _rows(leg.foot_rest), "pole_rest": _rows(leg.pole_rest),
                    "toe_rest": _rows(leg.toe_rest), "thigh_head": list(leg.thigh_head),
                    "ankle": list(leg.ankle), "knee": list(leg.knee), "length": leg.length,
-                   "shape": list(astuple(leg.shape))}
+                   "shape": list(astuple(leg.shape)), "foot_length": leg.foot_length}
             for side, leg in rest.legs.items()}
     return {"hips": rest.hips, "hips_rest": _rows(rest.hips_rest), "forward_yaw": rest.forward_yaw,
             "chest": rest.chest, "head": rest.head, "legs": legs}
@@ -255,7 +257,9 @@ def _rest_from_dict(data: dict) -> animate.RigRest:
             foot=leg["foot"], shin=leg["shin"], thigh=leg["thigh"], toe=leg["toe"],
             foot_rest=Matrix(leg["foot_rest"]), pole_rest=Matrix(leg["pole_rest"]),
             toe_rest=Matrix(leg["toe_rest"]), thigh_head=Vector(leg["thigh_head"]), ankle=Vector(leg["ankle"]),
-            knee=Vector(leg["knee"]), length=leg["length"], shape=foot_roll.FootShape(*leg["shape"]))
+            knee=Vector(leg["knee"]), length=leg["length"], shape=foot_roll.FootShape(*leg["shape"]),
+            # Applied before feet walked on ground: a foot as the core guesses one without a profile.
+            foot_length=leg.get("foot_length", leg["shape"][1] / foot_roll.HEEL_SHARE))
     return rest
 
 

@@ -24,6 +24,7 @@ _AMPLITUDES = native.load().FOOT_ROLL
 HEEL_STRIKE = _AMPLITUDES["heel_strike"]  # toes up at heel strike, at full speed [rad]
 TOE_OFF = _AMPLITUDES["toe_off"]  # heel up at toe-off, at full speed [rad]
 HEEL_SHARE = _AMPLITUDES["heel_share"]  # of the foot's length behind the ankle, for a foot without a mesh
+STAIR_RISE = _AMPLITUDES["stair_rise"]  # a step rising or dropping more is a stair's: set down flat [m]
 
 
 @dataclass(frozen=True)
@@ -54,7 +55,7 @@ def foot_shape(ankle, ball, forward, foot_length: float, points=()) -> FootShape
 class Steps:
     """A plan's footsteps as arrays: start and end times [s], the foot
     (0 left, 1 right), whether the body goes over the feet (a walk or a
-    stop; not a side step), and the COM's speed [m/s]."""
+    stop; not a side step, nor a stair's step), and the COM's speed [m/s]."""
 
     start: numpy.ndarray
     end: numpy.ndarray

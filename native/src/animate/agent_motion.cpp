@@ -5,6 +5,7 @@
 
 #include "animate/clips.hpp"
 #include "animate/section_timing.hpp"
+#include "footfall/animate/ground_follow.hpp"
 #include "footfall/animate/upper_body.hpp"
 #include "footfall/model/geometry.hpp"
 
@@ -30,6 +31,14 @@ Mat4 in_gltf(const Mat4& motion) {
 }
 
 Mat4 turn_about_z(double yaw) { return rotation(axis_angle({0, 0, 1}, yaw)); }
+
+// The shortest turn taking the up direction to `normal` (a sole's plane).
+Quat tilt_to(Vec3 normal) {
+  const Vec3 axis = cross({0, 0, 1}, normal);
+  const double sine = length(axis);
+  if (sine == 0.0) return {};
+  return axis_angle((1.0 / sine) * axis, std::atan2(sine, normal.z));
+}
 
 // The rotation taking the frame (a, b) to (c, d): each pair a direction and a
 // second one off it (the knee's plane), orthonormalised.
@@ -90,7 +99,7 @@ Trs rotated_rest(const Trs& rest, const Mat4& local) {
 }  // namespace
 
 AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const CharacterParams& character,
-                         const std::vector<double>& times, double fps) {
+                         const Ground& ground, const std::vector<double>& times, double fps) {
   AgentMotion motion;
   const std::size_t frames = times.size();
   const auto add = [&](int node) {
@@ -113,6 +122,12 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
   const Vec3 lateral = cross(forward, {0, 0, 1});  // the feet pitch about it
   const FootRoller roller(plan, character.preferred_speed);
   const UpperBodyFollower follower(plan, character.preferred_speed);
+  // The ground's: in the plan's metres, the rig's left foot for both.
+  const FootShape& foot_shape = rig.legs[0].shape;
+  const GroundFollower on_ground(plan, character, ground,
+                                 {plan.scale * foot_shape.heel_back,
+                                  plan.scale * (rig.legs[0].foot_length - foot_shape.heel_back),
+                                  character.sole_width});
   // A direction of the plan's world (Z up) as a node's rest frame sees it:
   // the toes bend about the side axis, the chest and head turn about the up.
   const auto at_rest = [&](int node, Vec3 direction) {
@@ -121,6 +136,7 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
   };
   const std::array<Vec3, 2> toe_axes{at_rest(rig.legs[0].toe, lateral), at_rest(rig.legs[1].toe, lateral)};
   const Vec3 chest_up = at_rest(rig.chest, {0, 0, 1}), head_up = at_rest(rig.head, {0, 0, 1});
+  const Vec3 chest_side = at_rest(rig.chest, lateral);
   const SectionTiming timing(plan, rig.clips, times.empty() ? 0.0 : times.back(), fps);
   double body_yaw = 0, previous_yaw = 0;
   std::array<double, 2> foot_yaw{0, 0}, previous_foot{0, 0};
@@ -129,10 +145,11 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
     const double t = std::min(times[f], plan.end_time());
     // In the rig's own size: the agent's node scales it to the plan's (AgentPlan::scale).
     const Vec2 com = (1.0 / plan.scale) * com_at(plan, t).position;
-    std::array<FootPose, 2> feet = feet_at(plan, t);
-    for (FootPose& foot : feet) {
-      foot.position = (1.0 / plan.scale) * foot.position;
-      foot.lift /= plan.scale;
+    const std::array<FootPose, 2> feet = feet_at(plan, t);
+    std::array<FootOnGround, 2> soles;
+    for (int side = 0; side < 2; ++side) {
+      soles[side] = on_ground.foot(feet[side]);
+      soles[side].sole = (1.0 / plan.scale) * soles[side].sole;
     }
     body_yaw = body_facing(plan, t) - rig.forward_yaw;
     if (f > 0) body_yaw = unwrapped(body_yaw, previous_yaw);
@@ -142,18 +159,24 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
     // enough for both legs to reach.
     std::array<Vec3, 2> ankles, flats;
     std::array<FootRoll, 2> rolls;
-    double height = hips_head.z;
+    std::array<Quat, 2> tilts;
+    double height = hips_head.z + on_ground.body_height(feet) / plan.scale;
     const Mat4 body_turn = turn_about_z(body_yaw);
     for (int side = 0; side < 2; ++side) {
       const Leg& leg = rig.legs[side];
       const FootPose& foot = feet[side];
-      foot_yaw[side] = foot.orientation - rig.forward_yaw;
+      const Vec3 sole = soles[side].sole;
+      foot_yaw[side] = soles[side].heading - rig.forward_yaw;
       if (f > 0) foot_yaw[side] = unwrapped(foot_yaw[side], previous_foot[side]);
       previous_foot[side] = foot_yaw[side];
       rolls[side] = roller.at(t, side, foot.planted, leg.shape);
-      flats[side] = {foot.position.x, foot.position.y, leg.ankle.z + foot.lift};
-      ankles[side] = flats[side] + Vec3{rolls[side].forward * std::cos(foot.orientation),
-                                        rolls[side].forward * std::sin(foot.orientation), rolls[side].up};
+      tilts[side] = tilt_to(soles[side].normal);
+      // The ankle over the sole, and rolled, along the sole's slope.
+      flats[side] = sole + rotate(tilts[side], {0, 0, leg.ankle.z});
+      const double heading = soles[side].heading;
+      ankles[side] = flats[side] + rotate(tilts[side], {rolls[side].forward * std::cos(heading),
+                                                         rolls[side].forward * std::sin(heading),
+                                                         rolls[side].up});
       const Vec3 offset = leg.hip - hips_head;
       const Vec3 hip = Vec3{com.x, com.y, 0} + transform_direction(body_turn, {offset.x, offset.y, 0});
       const double horizontal = std::hypot(hip.x - ankles[side].x, hip.y - ankles[side].y);
@@ -190,8 +213,8 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
       const Mat4 shin_turn = translation(knee) *
                              frame_turn(leg.ankle - leg.knee, pole_rest - leg.knee, ankle - knee, pole - knee) *
                              translation(-1.0 * leg.knee);
-      const Mat4 foot_motion = translation(ankle) * foot_turn * rotation(axis_angle(lateral, rolls[side].pitch)) *
-                               translation(-1.0 * leg.ankle);
+      const Mat4 foot_motion = translation(ankle) * rotation(tilts[side]) * foot_turn *
+                               rotation(axis_angle(lateral, rolls[side].pitch)) * translation(-1.0 * leg.ankle);
       const Mat4 thigh_world = in_gltf(thigh_turn) * rig.rest_world[leg.thigh];
       const Mat4 shin_world = in_gltf(shin_turn) * rig.rest_world[leg.shin];
       const Mat4 foot_world = in_gltf(foot_motion) * rig.rest_world[leg.foot];
@@ -207,6 +230,7 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
 
     std::vector<ClipLayer> layers = timing.at(times[f]);
     const double swing = follower.swing_at(t), look = follower.look_at(t), twist = follower.twist_at(t);
+    const double lean = on_ground.lean(t);
     for (ClipLayer& layer : layers)
       if (layer.walk) layer.influence *= swing;
     for (std::size_t i = 0; i < upper_slots.size(); ++i) {
@@ -214,7 +238,8 @@ AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const Charac
       Trs pose = layered(layers, node, rig.rest_trs[node]);
       // Turned on top of the clips, as the add-on's look-ahead track combines.
       if (node == rig.chest)
-        pose.rotation = normalized(pose.rotation * axis_angle(chest_up, kChestLook * look + twist));
+        pose.rotation = normalized(pose.rotation * axis_angle(chest_up, kChestLook * look + twist) *
+                                   axis_angle(chest_side, -lean));
       if (node == rig.head) pose.rotation = normalized(pose.rotation * axis_angle(head_up, kHeadLook * look));
       motion.frames[upper_slots[i]][f] = pose;
     }

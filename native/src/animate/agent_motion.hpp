@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "animate/rig_data.hpp"
+#include "footfall/ground/ground.hpp"
 #include "footfall/plan/plan.hpp"
 
 namespace footfall::animate {
@@ -18,8 +19,9 @@ struct AgentMotion {
 };
 
 /// The motion of `plan`'s agent at `times` [s] (frames at `fps`, from 0),
-/// with `character` (the agent's): after its last step it holds its last pose.
+/// with `character` (the agent's), on `ground` (the plan's): after its last
+/// step it holds its last pose.
 AgentMotion agent_motion(const RigData& rig, const AgentPlan& plan, const CharacterParams& character,
-                         const std::vector<double>& times, double fps);
+                         const Ground& ground, const std::vector<double>& times, double fps);
 
 }  // namespace footfall::animate

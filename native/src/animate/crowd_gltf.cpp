@@ -276,11 +276,7 @@ CrowdGltfSummary write_crowd_gltf(const Plan& plan, const Rig& rig, const std::s
                                   const CrowdGltfOptions& options) {
   if (!(options.fps >= 1 && options.fps <= 240))
     throw std::invalid_argument("fps: expected a number from 1 to 240");
-  // Until the animation puts feet on treads (issue 51), not at z = 0 instead.
-  if (!plan.ground.empty())
-    throw std::invalid_argument(
-        "ground: the plan walks on ground (stairs, ramps, levels); animating it is not "
-        "supported yet (its feet would be put at z = 0)");
+  const Ground ground(plan.ground);
   const RigData& data = rig.data();
   for (const AgentPlan& agent : plan.agents) check_size(plan, agent, data);
   double end = 0;
@@ -297,7 +293,7 @@ CrowdGltfSummary write_crowd_gltf(const Plan& plan, const Rig& rig, const std::s
   const int input = crowd.add_floats(key_times, 1);
   for (const AgentPlan& agent : plan.agents) {
     const std::vector<int> copy = crowd.add_agent_nodes(agent.name, agent.scale);
-    const animate::AgentMotion motion = animate::agent_motion(data, agent, character_of(agent, plan.character), times, options.fps);
+    const animate::AgentMotion motion = animate::agent_motion(data, agent, character_of(agent, plan.character), ground, times, options.fps);
     tinygltf::Animation animation;
     animation.name = agent.name;
     for (std::size_t i = 0; i < motion.nodes.size(); ++i) {

@@ -19,10 +19,14 @@ namespace {
 
 std::vector<RollStep> roll_steps(const AgentPlan& plan) {
   std::vector<RollStep> steps;
-  for (const Footstep& s : plan.footsteps)
+  const auto& footsteps = plan.footsteps;
+  for (std::size_t k = 0; k < footsteps.size(); ++k) {
+    const Footstep& s = footsteps[k];
+    const bool stair = k > 0 && std::fabs(s.foot_height - footsteps[k - 1].foot_height) > kStairRise;
     steps.push_back({s.start_time, s.end_time, static_cast<int>(s.foot),
-                     s.kind != StepKind::kSideStep,
+                     s.kind != StepKind::kSideStep && !stair,
                      length(s.com_end - s.com_start) / std::max(s.end_time - s.start_time, 1e-9)});
+  }
   return steps;
 }
 

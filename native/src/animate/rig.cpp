@@ -270,7 +270,7 @@ void read_legs(RigData& rig, const RigProfile& profile) {
     leg.lower = length(leg.ankle - leg.knee);
     leg.pole_ahead = (leg.knee + kPoleAhead * forward) - leg.ankle;
     const auto found = profile.dimensions.find("foot_length");
-    const double foot_length = found != profile.dimensions.end() ? found->second : length(ball - leg.ankle) / (1 - animate::kHeelShare);
+    const double foot_length = leg.foot_length = found != profile.dimensions.end() ? found->second : length(ball - leg.ankle) / (1 - animate::kHeelShare);
     double heel = 0;
     for (const auto& [joint, p] : vertices)
       if (joint == leg.foot || joint == leg.toe) heel = std::max(heel, -dot(p - leg.ankle, forward));

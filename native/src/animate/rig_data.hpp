@@ -50,6 +50,7 @@ struct Leg {
   double upper = 0, lower = 0;  ///< hip to knee, knee to ankle
   Vec3 pole_ahead;              ///< the knee's pole seen from the ankle
   FootShape shape;
+  double foot_length = 0;       ///< heel to toe tip along the ground
 };
 
 struct RigData {

@@ -13,6 +13,15 @@ constexpr double kSwingReach = 0.5;      // [m] above the higher foothold: an ov
 
 }  // namespace
 
+Sole sole_of(const CharacterParams& character, Vec2 foot, const GroundPoint& ground,
+             double orientation) {
+  const Vec2 ahead = ((0.5 - kHeelShare) * character.sole_length) * unit(orientation);
+  const Vec3& n = ground.normal;
+  const double z = ground.z - (n.x * ahead.x + n.y * ahead.y) / n.z;  // in the ground's plane
+  return {{foot.x + ahead.x, foot.y + ahead.y, z}, n, orientation, character.sole_length,
+          character.sole_width};
+}
+
 FootholdFault foothold_fault(const Ground& ground, const CharacterParams& character, Vec2 foot,
                              const OrientationInterval& turns, Vec2 other, Vec2 from) {
   const double min_normal_z = std::cos(character.max_slope);
@@ -27,8 +36,7 @@ FootholdFault foothold_fault(const Ground& ground, const CharacterParams& charac
   const double middle = turns.inner + 0.5 * wrap_angle(turns.outer - turns.inner);
   for (const double orientation : {turns.inner, turns.outer, middle}) {
     if (orientation != turns.inner && turns.outer == turns.inner) break;
-    const Sole sole{{foot.x, foot.y, here->z}, here->normal, orientation, character.sole_length,
-                    character.sole_width};
+    const Sole sole = sole_of(character, foot, *here, orientation);
     if (!ground.holds(sole, kSoleTolerance, min_normal_z, character.sole_support))
       return FootholdFault::kUnsupported;
   }

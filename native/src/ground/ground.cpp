@@ -17,6 +17,7 @@ constexpr double kMinNormalZ = 1e-9;   // a face steeper than this stands on edg
 constexpr int kSoleRows = 7, kSoleColumns = 4;  // the sole's sample grid
 constexpr int kSoleSamples = kSoleRows * kSoleColumns;
 constexpr double kInstep = 0.1;  // [m] above the sole: ground there is ground the foot is in
+constexpr double kToeRoom = 0.01;  // [m] kept from a riser before the toe and behind the heel
 
 [[noreturn]] void refuse(const std::string& field, const std::string& what) {
   throw std::invalid_argument(field + ": " + what);
@@ -295,13 +296,25 @@ int Ground::soles_samples_held(const Sole& sole, double tolerance, double min_no
       // The sole's plane over p.
       const double plane =
           sole.centre.z - (sole.normal.x * offset.x + sole.normal.y * offset.y) / sole.normal.z;
+      // The grid stretched to the sole's outline, its heel and toe rounded
+      // (the end rows half as wide): no ground above the sole there, below
+      // the instep, where the foot would be in it (a riser).
+      const bool end_row = i == 0 || i == kSoleRows - 1;
+      const Vec2 edge_offset =
+          (static_cast<double>(i) / (kSoleRows - 1) - 0.5) * (sole.length + 2 * kToeRoom) * along +
+          ((end_row ? 0.5 : 1.0) * (static_cast<double>(j) / (kSoleColumns - 1) - 0.5) *
+           sole.width) * across;
+      const Vec2 edge = centre + edge_offset;
+      const double edge_plane = sole.centre.z - (sole.normal.x * edge_offset.x +
+                                                 sole.normal.y * edge_offset.y) / sole.normal.z;
       bool supported = false;
       for (const Face* face : near) {
-        if (!in_box(*face, p) || !contains(*face, p)) continue;
-        // Ground above the sole, below the instep: the foot would be in it (a riser).
-        if (covers(*face, p, plane + tolerance, plane + kInstep)) return 0;
-        supported = supported || (face->walkable && face->normal.z >= min_normal_z &&
-                                  std::fabs(height_of(*face, p) - plane) <= tolerance);
+        if (covers(*face, edge, edge_plane + tolerance, edge_plane + kInstep) &&
+            in_box(*face, edge) && contains(*face, edge))
+          return 0;
+        if (in_box(*face, p) && contains(*face, p))
+          supported = supported || (face->walkable && face->normal.z >= min_normal_z &&
+                                    std::fabs(height_of(*face, p) - plane) <= tolerance);
       }
       held += supported ? 1 : 0;
       missed += supported ? 0 : 1;

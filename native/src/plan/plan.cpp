@@ -164,7 +164,18 @@ double facing_at(const AgentPlan& plan, double t) {
   return plan.footsteps[step_index(plan, t)].phi;
 }
 
+double swing_lift(double stride, double u) {
+  return std::min(kMaxLift, kLiftPerStride * stride) * std::sin(kPi * std::clamp(u, 0.0, 1.0));
+}
+
 namespace {
+
+FootPose planted(Vec2 position, double orientation) {
+  FootPose foot;
+  foot.position = position;
+  foot.orientation = orientation;
+  return foot;
+}
 
 // `from` moved toward the planted pose `to` by the fraction u of a swing.
 FootPose swing(const FootPose& from, const Footstep& to, double u) {
@@ -174,15 +185,20 @@ FootPose swing(const FootPose& from, const Footstep& to, double u) {
   foot.position = from.position + s * (to.foot_position - from.position);
   foot.orientation =
       wrap_angle(from.orientation + s * wrap_angle(to.foot_orientation - from.orientation));
-  foot.lift = std::min(kMaxLift, kLiftPerStride * stride) * std::sin(kPi * std::clamp(u, 0.0, 1.0));
+  foot.lift = swing_lift(stride, u);
   foot.planted = stride == 0.0 && to.foot_orientation == from.orientation;
+  foot.swing_from = from.position;
+  foot.swing_to = to.foot_position;
+  foot.swing_from_orientation = from.orientation;
+  foot.swing_to_orientation = to.foot_orientation;
+  foot.swing_phase = std::clamp(u, 0.0, 1.0);
   return foot;
 }
 
 // The feet before any step: where they stand.
 std::array<FootPose, 2> standing_feet(const AgentPlan& plan) {
   std::array<FootPose, 2> feet;
-  for (int f = 0; f < 2; ++f) feet[f] = {plan.start.feet[f], plan.start.facing, 0.0, true};
+  for (int f = 0; f < 2; ++f) feet[f] = planted(plan.start.feet[f], plan.start.facing);
   return feet;
 }
 
@@ -196,7 +212,7 @@ std::array<FootPose, 2> feet_during(const AgentPlan& plan, int k, double t) {
   for (int i = k - 1; i >= 0 && !(found[0] && found[1]); --i) {
     const int f = static_cast<int>(steps[i].foot);
     if (found[f]) continue;
-    feet[f] = {steps[i].foot_position, steps[i].foot_orientation, 0.0, true};
+    feet[f] = planted(steps[i].foot_position, steps[i].foot_orientation);
     found[f] = true;
   }
   const Footstep& step = steps[k];
@@ -206,8 +222,8 @@ std::array<FootPose, 2> feet_during(const AgentPlan& plan, int k, double t) {
   // A start's foot stays as it was put down (its own orientation is chosen
   // again when a crowd's plan is complete; the pose must not change with it).
   feet[stepping] = step.kind == StepKind::kStart
-                       ? FootPose{before.position, before.orientation, 0.0, true}
-                       : FootPose{step.foot_position, step.foot_orientation, 0.0, true};
+                       ? planted(before.position, before.orientation)
+                       : planted(step.foot_position, step.foot_orientation);
   // One that leaves walks on off its last step: the other foot swings a
   // stride on (two COM chords), as the COM travels beyond the planted foot.
   const bool walks_off = k + 1 == static_cast<int>(steps.size()) && plan.leaves &&

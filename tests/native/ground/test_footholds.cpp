@@ -13,6 +13,7 @@
 #include "footfall/io/scenario_file.hpp"
 #include "footfall/plan/ground_check.hpp"
 #include "footfall/plan/metrics.hpp"
+#include "footfall/ground/foothold.hpp"
 #include "footfall/ground/ground.hpp"
 #include "footfall/scenes/scenes.hpp"
 
@@ -43,8 +44,7 @@ std::vector<double> expect_on_ground(const Plan& plan, const Ground& ground) {
         ADD_FAILURE() << "step " << k << " over no ground";
         break;
       }
-      const Sole sole{{step.foot_position.x, step.foot_position.y, here->z}, here->normal,
-                      step.foot_orientation, c.sole_length, c.sole_width};
+      const Sole sole = sole_of(c, step.foot_position, *here, step.foot_orientation);
       EXPECT_GE(ground.support(sole, 0.02, std::cos(c.max_slope)), c.sole_support) << "step " << k;
       const int planted = static_cast<int>(step.foot);
       const double rise = here->z - feet[1 - planted];
@@ -171,8 +171,8 @@ TEST(Footholds, AgentsAndGoalsOffTheGroundOrItsHeightAreRefused) {
             "position": [0, 0, 0.8], "goals": [[3, 0]]}]})"),
             "<string>: agents[0].position: at a height of 0.80 m, but the scenario has no "
             "ground: its floor is z = 0");
-  // Half its foot over the floor's edge.
-  EXPECT_EQ(refusal(one_on(floor, "[4.95, 0]", "[2, 0]"))
+  // Its heel over the floor's edge.
+  EXPECT_EQ(refusal(one_on(floor, "[4.998, 0]", "[2, 0]"))
                 .rfind("<string>: agents[0].position: the standing agent's left foot is not on "
                        "the ground (",
                        0),

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "footfall/ground/foothold.hpp"
 #include "footfall/plan/plan.hpp"
 
 namespace footfall::animate {
@@ -14,7 +15,11 @@ constexpr double kHeelStrike = 0.2617993877991494;  ///< 15 deg: toes up at heel
 constexpr double kToeOff = 0.5235987755982988;      ///< 30 deg: heel up at toe-off, at full speed
 constexpr double kFlatAt = 0.15;     ///< of the stance: the foot is flat from here
 constexpr double kHeelOffAt = 0.6;   ///< of the stance: the heel rises from here
-constexpr double kHeelShare = 0.25;  ///< of the foot's length behind the ankle, without a mesh
+/// [m] a step landing this much above or below the other foot is a stair's:
+/// the foot is set down flat, as people do on stairs (no heel strike, no roll).
+constexpr double kStairRise = 0.02;
+/// Of the foot's length behind the ankle, without a mesh: as the planner's sole.
+constexpr double kHeelShare = footfall::kHeelShare;
 
 /// The foot seen from the side, flat on the ground, from the point under the
 /// ankle: the ankle's height, the heel's contact behind it, the ball (toe
@@ -41,7 +46,9 @@ FootRoll roll_at_pitch(const FootShape& shape, double pitch);
 struct RollStep {
   double start = 0, end = 0;  ///< [s]
   int foot = 0;               ///< 0 left, 1 right
-  bool forward = true;        ///< the body goes over the feet (a walk, start or stop; not a side step)
+  /// The body goes over the feet (a walk, start or stop; not a side step,
+  /// nor a stair's step, rising or dropping over kStairRise from the step before).
+  bool forward = true;
   double speed = 0;           ///< the COM's speed over the step [m/s]
 };
 

@@ -8,6 +8,16 @@
 
 namespace footfall {
 
+/// Of a sole's length, the share behind the point under the ankle (a foot
+/// is planted by that point; its heel is a quarter of its length behind).
+constexpr double kHeelShare = 0.25;
+
+/// The sole of `character` of a foot planted at `foot` (the point under its
+/// ankle), turned to `orientation`, in the plane of `ground` there:
+/// kHeelShare of sole_length behind `foot`, the rest ahead.
+Sole sole_of(const CharacterParams& character, Vec2 foot, const GroundPoint& ground,
+             double orientation);
+
 /// What is wrong with a foothold, if anything.
 enum class FootholdFault {
   kNone,

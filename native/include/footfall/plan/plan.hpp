@@ -125,6 +125,12 @@ struct FootPose {
   double orientation = 0;  ///< [rad]
   double lift = 0;         ///< Height of the sole above the ground. [m]
   bool planted = true;     ///< On the ground (stance), or swinging.
+  /// While swinging: from where and which way it was planted, to where and
+  /// which way it will be, and how far through the swing it is (0 to 1; the
+  /// position and orientation follow it eased in and out).
+  Vec2 swing_from, swing_to;            ///< [m]
+  double swing_from_orientation = 0, swing_to_orientation = 0;  ///< [rad]
+  double swing_phase = 0;
 };
 
 /// COM of the agent at time `t` (before the first step: the start; after the
@@ -171,6 +177,10 @@ class PlanBounds {
   std::vector<From> suffix_;  ///< [i]: from step i on (the start's feet left out).
   From start_;  ///< Standing at the start: circle_reach's feet term, and the start COM.
 };
+
+/// How high a swinging foot is lifted over the line between its footholds,
+/// `u` of the way through a swing of `stride`. [m]
+double swing_lift(double stride, double u);
 
 /// Both feet at time `t`, indexed by Foot. The foot of the current step is
 /// planted; the other swings from where it was planted to where the next step
