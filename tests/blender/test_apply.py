@@ -786,19 +786,6 @@ def test_failures_leave_the_scene_as_it_was():
     expect_error(bpy.ops.footfall.apply, f"footsteps.foot[{first_left}]: 'm' is not one of",
                  plan_filepath=str(bad))
     check(inventory() == before, "a failed apply changed the scene")
-    # A plan on ground (a step up to a platform) is not applied, keyed or live, until feet
-    # are put on it.
-    on_ground = ff.plan_scenario(ff.parse_scenario(json.dumps({
-        "format": "footfall-scenario", "version": 1,
-        "ground": [{"polygon": [[-3, -2], [0, -2], [0, 2], [-3, 2]], "height": 0},
-                   {"polygon": [[0, -2], [4, -2], [4, 2], [0, 2]], "height": 0.15}],
-        "agents": [{"name": "kerb", "position": [-2, 0], "goals": [[3, 0]]}]})))
-    ground_plan = TMP / "ground-plan.json"
-    ff.write_plan_file(on_ground, str(ground_plan))
-    for live in (False, True):
-        expect_error(bpy.ops.footfall.apply, "The plan walks on ground", plan_filepath=str(ground_plan),
-                     live=live)
-    check(inventory() == before, "a refused plan on ground changed the scene")
 
 
 def doorway_plan_without_rig(ff):

@@ -6,6 +6,7 @@ frame, the hands and head too.
 Run: blender -b --factory-startup --python-exit-code 1 --python tests/blender/test_headless_gltf.py
 """
 
+import json
 import os
 import pathlib
 import sys
@@ -22,10 +23,13 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, os.environ.get("FOOTFALL_ADDON_DIR", str(ROOT / "blender_addon")))
 sys.path.insert(0, str(ROOT / "tests" / "python"))
 from crowd_glb import CrowdGlb, z_up  # noqa: E402
+from ground_heights import ground_heights  # noqa: E402
 
 TMP = pathlib.Path(tempfile.mkdtemp(prefix="footfall-headless-"))
 RIG = ROOT / "rigs" / "footfall_humanoid.glb"
 PROFILE = ROOT / "rigs" / "footfall_humanoid.json"
+STAIRS = ROOT / "tests" / "data" / "stairs.json"
+GROUND_TOLERANCE = 0.01  # [m] a body's vertex below the ground under it
 TOLERANCE = 0.005  # [m] between the two animations' bones
 BONES = ("foot.L", "foot.R", "toe.L", "toe.R", "hand.L", "hand.R", "head")
 KNEES = ("shin.L", "shin.R")  # a shin's head
@@ -33,25 +37,29 @@ KNEE_TOLERANCE = 0.02  # [m] Blender's IK and the core's two-bone legs bend the 
 # wrong way is 0.1-0.3 m off)
 
 
-def test_blender_and_the_core_put_the_bones_in_the_same_places():
-    from footfall.core import native
-
-    ff = native.load()
+def applied_and_written(ff, plan, name, live=False):
+    """The plan applied in a new scene (keyed, or `live`) and written by the
+    core at the scene's rate: (the scene, the core's file read back, the
+    plan's times at the scene's frames)."""
     bpy.ops.wm.read_homefile(use_empty=True)
     addon_utils.enable("footfall", default_set=True, handle_error=None)
     check(bpy.ops.footfall.import_rig(filepath=str(RIG)) == {"FINISHED"}, "rig import failed")
-    plan = ff.plan_scenario(ff.demo_scenario())
-    plan_path = TMP / "demo-plan.json"
+    plan_path = TMP / f"{name}-plan.json"
     ff.write_plan_file(plan, str(plan_path))
-    check(bpy.ops.footfall.apply(plan_filepath=str(plan_path)) == {"FINISHED"}, "apply failed")
+    check(bpy.ops.footfall.apply(plan_filepath=str(plan_path), live=live) == {"FINISHED"}, "apply failed")
     scene = bpy.context.scene
     fps = scene.render.fps / scene.render.fps_base
-    crowd_path = TMP / "crowd.glb"
+    crowd_path = TMP / f"{name}-crowd.glb"
     ff.animate_gltf(plan, str(RIG), str(crowd_path), fps=fps, profile_path=str(PROFILE))
-    crowd = CrowdGlb(crowd_path)
-
     frames = range(scene.frame_start, scene.frame_end + 1)
-    times = numpy.array([(f - scene.frame_start) / fps for f in frames])
+    return scene, CrowdGlb(crowd_path), numpy.array([(f - scene.frame_start) / fps for f in frames])
+
+
+def bones_apart(plan, scene, crowd, times):
+    """(the core's bone heads per (agent, bone), the worst distance between the
+    add-on's and the core's feet, toes, hands and head, the worst between their
+    knees, how many positions were compared) over every frame; the worst is
+    printed with its agent, bone and frame."""
     core = {}
     for agent in plan.agents:
         nodes = crowd.subtree(crowd.agent_root(agent.name))
@@ -59,8 +67,8 @@ def test_blender_and_the_core_put_the_bones_in_the_same_places():
         for bone in BONES + KNEES:
             core[agent.name, bone] = z_up(world[nodes[bone]][:, :3, 3])
     worst, worst_knee = 0.0, 0.0
-    compared = 0
-    for i, frame in enumerate(frames):
+    compared, where = 0, None
+    for i, frame in enumerate(range(scene.frame_start, scene.frame_start + len(times))):
         scene.frame_set(frame)
         depsgraph = bpy.context.evaluated_depsgraph_get()
         for agent in plan.agents:
@@ -73,13 +81,51 @@ def test_blender_and_the_core_put_the_bones_in_the_same_places():
                 if bone in KNEES:
                     worst_knee = max(worst_knee, apart)
                 else:
+                    if apart > worst:
+                        where = (agent.name, bone, frame)
                     worst = max(worst, apart)
                     compared += 1
+    print(f"worst apart: {1000 * worst:.2f} mm, {where}")
+    return core, worst, worst_knee, compared
+
+
+def deepest_below_ground(plan, prisms, scene, frames):
+    """Over `frames`: how far the evaluated skinned meshes' deepest vertex
+    lies below the ground under it, and where."""
+    bodies = [obj for agent in plan.agents for obj in bpy.data.objects[agent.name].children_recursive
+              if obj.type == "MESH"]
+    worst = (0.0, None)
+    for frame in frames:
+        scene.frame_set(frame)
+        depsgraph = bpy.context.evaluated_depsgraph_get()
+        for obj in bodies:
+            evaluated = obj.evaluated_get(depsgraph)
+            mesh = evaluated.to_mesh()
+            co = numpy.empty(3 * len(mesh.vertices), dtype=numpy.float64)
+            mesh.vertices.foreach_get("co", co)
+            evaluated.to_mesh_clear()
+            world = numpy.array(evaluated.matrix_world)
+            points = co.reshape(-1, 3) @ world[:3, :3].T + world[:3, 3]
+            depth = ground_heights(prisms, points[:, :2]) - points[:, 2]
+            k = int(numpy.argmax(depth))
+            if depth[k] > worst[0]:
+                worst = (float(depth[k]), (frame, obj.name, tuple(round(float(c), 3) for c in points[k])))
+    return worst
+
+
+def test_blender_and_the_core_put_the_bones_in_the_same_places():
+    from footfall.core import native
+
+    ff = native.load()
+    plan = ff.plan_scenario(ff.demo_scenario())
+    scene, crowd, times = applied_and_written(ff, plan, "demo")
+    core, worst, worst_knee, compared = bones_apart(plan, scene, crowd, times)
     print(f"feet, toes, hands and head: worst {1000 * worst:.2f} mm apart over {compared} bone positions; "
           f"knees {1000 * worst_knee:.2f} mm")
     check(compared > 1000, f"only {compared} positions compared")
     check(worst < TOLERANCE, f"the add-on's and the core's bones are {1000 * worst:.1f} mm apart")
     check(worst_knee < KNEE_TOLERANCE, f"the add-on's and the core's knees are {1000 * worst_knee:.1f} mm apart")
+    fps = scene.render.fps / scene.render.fps_base
 
     # The two files, read alike: Blender's keys at frame / fps, from the scene's first frame.
     blender_path = TMP / "blender.glb"
@@ -97,5 +143,28 @@ def test_blender_and_the_core_put_the_bones_in_the_same_places():
     check(worst < TOLERANCE, f"Blender's file and the core's put the bones {1000 * worst:.1f} mm apart")
 
 
+def test_up_and_down_a_flight_blender_and_the_core_put_every_foot_on_its_tread():
+    """The stair crowd, applied keyed and live: the bones where the core's
+    writer puts them, and no vertex of a body more than 1 cm below the ground
+    under it at any frame (a toe in a riser, a sole through a tread)."""
+    from footfall.core import native
+
+    ff = native.load()
+    document = STAIRS.read_text()
+    plan = ff.plan_scenario(ff.parse_scenario(document, str(STAIRS)))
+    prisms = json.loads(document)["ground"]
+    for live in (False, True):
+        scene, crowd, times = applied_and_written(ff, plan, f"stairs-{'live' if live else 'keyed'}", live)
+        _, worst, worst_knee, compared = bones_apart(plan, scene, crowd, times)
+        depth, where = deepest_below_ground(plan, prisms, scene, range(scene.frame_start, scene.frame_end + 1))
+        print(f"stairs ({'live' if live else 'keyed'}): bones {1000 * worst:.2f} mm apart over {compared}, knees "
+              f"{1000 * worst_knee:.2f} mm; deepest vertex {1000 * depth:.1f} mm below the ground {where}")
+        check(compared > 1000, f"only {compared} positions compared")
+        check(worst < TOLERANCE, f"on stairs the add-on's and the core's bones are {1000 * worst:.1f} mm apart")
+        check(worst_knee < KNEE_TOLERANCE, f"on stairs the knees are {1000 * worst_knee:.1f} mm apart")
+        check(depth < GROUND_TOLERANCE, f"a body's vertex {1000 * depth:.1f} mm below the ground at {where}")
+
+
 if __name__ == "__main__":
-    run([test_blender_and_the_core_put_the_bones_in_the_same_places])
+    run([test_blender_and_the_core_put_the_bones_in_the_same_places,
+         test_up_and_down_a_flight_blender_and_the_core_put_every_foot_on_its_tread])

@@ -15,6 +15,7 @@ import pytest
 
 from conftest import scenario_json
 from crowd_glb import CrowdGlb, z_up
+from ground_heights import ground_heights
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 RIG = ROOT / "rigs" / "footfall_humanoid.glb"
@@ -187,22 +188,6 @@ def test_agents_of_other_sizes_are_the_rig_scaled_with_their_feet_on_the_plan(ff
 
 STAIRS = ROOT / "tests" / "data" / "stairs.json"
 GROUND_TOLERANCE = 0.01  # [m] a foot's vertex below the ground under it
-
-
-def ground_heights(prisms, points):
-    """The highest prism top over each of `points` (n, 2), -inf where none: even-odd per polygon."""
-    highest = numpy.full(len(points), -numpy.inf)
-    x, y = points[:, 0], points[:, 1]
-    for prism in prisms:
-        polygon = numpy.asarray(prism["polygon"], dtype=float)
-        inside = numpy.zeros(len(points), dtype=bool)
-        for (ax, ay), (bx, by) in zip(polygon, numpy.roll(polygon, -1, axis=0)):
-            crosses = (ay > y) != (by > y)
-            with numpy.errstate(divide="ignore", invalid="ignore"):
-                at = ax + (y - ay) * (bx - ax) / (by - ay)
-            inside ^= crosses & (x < at)
-        highest = numpy.where(inside, numpy.maximum(highest, prism["height"]), highest)
-    return highest
 
 
 def foot_vertices(crowd, agent, times, bones):

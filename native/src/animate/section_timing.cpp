@@ -68,19 +68,21 @@ SectionTiming::SectionTiming(const AgentPlan& plan, const std::map<std::string, 
                                                   : 0.0;
     strip.start = start - lead;
     const double cycle = strip.clip->cycle;
-    double walking_time = 0, right_strike = -1;
+    double walking_time = 0, right_strike = -1, first_walk = 0;
     int walking = 0;
     for (std::size_t k = section.first; k <= section.last; ++k) {
       if (steps[k].kind != StepKind::kWalk) continue;
+      if (walking == 0) first_walk = steps[k].start_time;
       walking_time += steps[k].duration();
       ++walking;
       if (right_strike < 0 && steps[k].foot == Foot::kRight) right_strike = steps[k].start_time;
     }
     if (section.behavior != "idle" && walking > 0) {
-      // A cycle spans two steps; the clip's right heel strike on the plan's.
+      // A cycle spans two steps; the clip's right heel strike on the plan's
+      // (without a right step, one step after the first walking one).
       const double step_time = walking_time / walking;
       strip.scale = 2.0 * step_time / cycle;
-      if (right_strike < 0) right_strike = start + step_time;
+      if (right_strike < 0) right_strike = first_walk + step_time;
       strip.offset = std::fmod(strip.clip->strike * cycle - (right_strike - strip.start) / strip.scale, cycle);
       if (strip.offset < 0) strip.offset += cycle;
     }
