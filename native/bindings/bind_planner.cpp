@@ -153,6 +153,11 @@ void bind_planner(py::module_& m) {
       .def_readwrite("scale", &AgentSpec::scale,
                      "Its body's size as a share of the scenario's character, [0.5, 1.6] (set its "
                      "character to scaled() of it).")
+      .def_readwrite("height", &AgentSpec::height,
+                     "The height its position was given with [m] (None: the only ground under it).")
+      .def_readwrite("goal_heights", &AgentSpec::goal_heights,
+                     "Per goal, the height it was given with [m] (None: the only ground under it); "
+                     "one per goal, or empty.")
       .def_readwrite("time_limit", &AgentSpec::time_limit,
                      "Its time budget [s]; 0: the planner's max_time or four times its route's "
                      "walking time, whichever is longer.")

@@ -3,10 +3,12 @@
 
 Each obstacle becomes a mesh "Obstacle N" in "Footfall Obstacles" (a prism's
 polygon extruded from its base to its height, or a mesh obstacle's
-triangles), each agent an ARROWS empty
-in "Footfall Agents" turned to its facing, with one SPHERE empty per goal
-parented to it. The file's "character" and "planner" overrides replace those
-of the same key in the scene's "footfall_overrides".
+triangles), each ground surface a mesh "Ground N" in "Footfall Ground"
+(likewise), each agent an ARROWS empty in "Footfall Agents" turned to its
+facing, standing on its ground (at the height given, else on the only ground
+under it), with one SPHERE empty per goal parented to it, likewise on its
+ground. The file's "character" and "planner" overrides replace those of the
+same key in the scene's "footfall_overrides".
 
 The scenario is validated by the core first. Either all of it is added, or
 the scene is left exactly as it was.
@@ -22,8 +24,8 @@ import bpy
 from ..core import native
 from ..core.scenario import document_of, parse
 from . import datablocks
-from .scene_extract import (AGENT_CHARACTER, AGENT_SCALE, AGENTS, FACE_GOAL, GOAL_INDEX, GOAL_WAIT, START_DELAY, TIME_LIMIT, LEAVE_AT_GOAL, OBSTACLES, OVERRIDE_KEYS,
-                            OVERRIDES, collection_in, overrides)
+from .scene_extract import (AGENT_CHARACTER, AGENT_SCALE, AGENTS, FACE_GOAL, GOAL_INDEX, GOAL_WAIT, GROUND, START_DELAY,
+                            TIME_LIMIT, LEAVE_AT_GOAL, OBSTACLES, OVERRIDE_KEYS, OVERRIDES, collection_in, overrides)
 
 AGENT_SIZE = 0.5  # [m] length of the agent empty's arrows
 GOAL_SIZE = 0.25  # [m] radius of the goal spheres
@@ -52,9 +54,10 @@ def build(scene, document: dict, source: str = "<scenario>") -> dict:
     """Validates a scenario document with the core and adds its obstacles,
     agents and overrides to the scene; returns it with the core's defaults
     (agent names, facings, heights) filled in. `source` names it in errors."""
-    complete = _complete(parse(document, source), document)
-    _check(complete, document, source)
-    _on_the_floor(complete)
+    scenario = parse(document, source)
+    complete = _complete(scenario, document)
+    _check(complete, source)
+    _heights(complete, scenario)
     given = {key: complete[key] for key in OVERRIDE_KEYS if key in complete}
     stored = overrides(scene) if given else {}
     before = datablocks.snapshot()
@@ -64,11 +67,9 @@ def build(scene, document: dict, source: str = "<scenario>") -> dict:
         agents = _collection(scene, AGENTS, linked)
         # Agents first: they must get their names; obstacles and goals may take any free one.
         empties = [_add_agent(agent, agents) for agent in complete["agents"]]
-        number = 0
-        for obstacle in complete["obstacles"]:
-            while f"Obstacle {number}" in bpy.data.objects:
-                number += 1
-            _add_obstacle(f"Obstacle {number}", obstacle, obstacles)
+        _add_shapes("Obstacle", complete["obstacles"], obstacles)
+        if complete.get("ground"):
+            _add_shapes("Ground", complete["ground"], _collection(scene, GROUND, linked))
         for empty, agent in zip(empties, complete["agents"]):
             _add_goals(empty, agent, agents)
     except BaseException:
@@ -92,12 +93,8 @@ def _complete(scenario, document: dict) -> dict:
     return complete
 
 
-def _check(document: dict, given: dict, source: str) -> None:
-    """Refuses what the core accepts (in `document`, as `given`) but a scene
-    cannot hold."""
-    if given.get("ground"):
-        raise ScenarioError(f"{source}: ground: a scenario on ground (stairs, ramps, levels) cannot be "
-                            "loaded into Blender yet")
+def _check(document: dict, source: str) -> None:
+    """Refuses what the core accepts (in `document`) but a scene cannot hold."""
     for i, agent in enumerate(document["agents"]):
         name = agent["name"]
         if len(name.encode("utf-8")) > NAME_BYTES:
@@ -107,12 +104,24 @@ def _check(document: dict, given: dict, source: str) -> None:
                                 "(an agent is the object of its name; rename one of them)")
 
 
-def _on_the_floor(document: dict) -> None:
-    """Points given with a height, [x, y, z], as [x, y]: without ground the
-    core has checked that z is within 0.5 m of the floor, z = 0."""
-    for agent in document["agents"]:
-        agent["position"] = list(agent["position"][:2])
-        agent["goals"] = [list(goal[:2]) for goal in agent["goals"]]
+def _heights(document: dict, scenario) -> None:
+    """Every point of the agents as [x, y, z], on its ground: at the height
+    it was given with (the core has checked that ground lies within 0.5 m of
+    it), else on the only ground under it; without ground on the floor, z = 0
+    (the core has checked that a height given lies within 0.5 m of it)."""
+    ground = native.load().Ground(scenario.ground)
+
+    def placed(point, headroom):
+        if ground.empty():
+            return [point[0], point[1], 0.0]
+        if len(point) == 3:
+            return list(point)
+        return [point[0], point[1], ground.standing_height(point[0], point[1], headroom)]
+
+    for agent, spec in zip(document["agents"], scenario.agents):
+        headroom = (spec.character or scenario.character).body_height
+        agent["position"] = placed(agent["position"], headroom)
+        agent["goals"] = [placed(goal, headroom) for goal in agent["goals"]]
 
 
 def _collection(scene, name: str, linked: list):
@@ -126,15 +135,26 @@ def _collection(scene, name: str, linked: list):
     return collection
 
 
-def _add_obstacle(name: str, obstacle: dict, collection) -> None:
-    """A mesh object for an obstacle of the document: its mesh as given, or
-    its prism (the polygon from `base` to `height`, n-gon bottom and top,
-    normals outward); the origin at the bottom centre of its bounding box."""
-    if "mesh" in obstacle:
-        points = [tuple(v) for v in obstacle["mesh"]["vertices"]]
-        faces = [tuple(t) for t in obstacle["mesh"]["triangles"]]
+def _add_shapes(prefix: str, shapes, collection) -> None:
+    """A mesh object "PREFIX N" (the first free numbers) for each of `shapes`."""
+    number = 0
+    for shape in shapes:
+        while f"{prefix} {number}" in bpy.data.objects:
+            number += 1
+        _add_shape(f"{prefix} {number}", shape, collection)
+
+
+def _add_shape(name: str, shape: dict, collection) -> None:
+    """A mesh object for an obstacle or a ground surface of the document: its
+    mesh as given, or its prism (the polygon from `base` to `height`, n-gon
+    bottom and top, normals outward); the origin at the bottom centre of its
+    bounding box."""
+    if "mesh" in shape:
+        points = [tuple(v) for v in shape["mesh"]["vertices"]]
+        faces = [tuple(t) for t in shape["mesh"]["triangles"]]
     else:
-        points, faces = _prism(obstacle["polygon"], obstacle.get("base", 0.0), obstacle["height"])
+        # An obstacle's base defaults to 0, a ground surface's to min(0, height): the same for both.
+        points, faces = _prism(shape["polygon"], shape.get("base", min(0.0, shape["height"])), shape["height"])
     origin = [(min(p[axis] for p in points) + max(p[axis] for p in points)) / 2 for axis in (0, 1)]
     origin.append(min(p[2] for p in points))
     mesh = bpy.data.meshes.new(name)
@@ -167,7 +187,7 @@ def _add_agent(agent: dict, collection):
     obj = bpy.data.objects.new(agent["name"], None)
     obj.empty_display_type = "ARROWS"
     obj.empty_display_size = AGENT_SIZE
-    obj.location = (*agent["position"], 0.0)
+    obj.location = agent["position"]
     obj.rotation_euler = (0.0, 0.0, agent["facing"])
     if agent.get("leave_at_goal"):
         obj[LEAVE_AT_GOAL] = True
@@ -190,18 +210,18 @@ def _add_agent(agent: dict, collection):
 def _add_goals(empty, agent: dict, collection) -> None:
     """The agent's goals as child empties of its empty (identity parent
     inverse: their locations are in the agent's frame), numbered from 1."""
-    x, y = agent["position"]
+    x, y, z = agent["position"]
     cos, sin = math.cos(agent["facing"]), math.sin(agent["facing"])
     facings = list(agent.get("goal_facings") or [None] * len(agent["goals"]))
     if agent.get("end_facing") is not None:
         facings[-1] = agent["end_facing"]
-    for number, (gx, gy) in enumerate(agent["goals"], start=1):
+    for number, (gx, gy, gz) in enumerate(agent["goals"], start=1):
         goal = bpy.data.objects.new(f"{agent['name']} goal {number}", None)
         goal.empty_display_type = "SPHERE"
         goal.empty_display_size = GOAL_SIZE
         goal.parent = empty
         dx, dy = gx - x, gy - y
-        goal.location = (cos * dx + sin * dy, -sin * dx + cos * dy, 0.0)
+        goal.location = (cos * dx + sin * dy, -sin * dx + cos * dy, gz - z)
         facing = facings[number - 1]
         if facing is not None:
             goal.rotation_euler = (0.0, 0.0, facing - agent["facing"])  # in the agent's frame

@@ -2,16 +2,21 @@
 """Reading the Blender scene back into a scenario document
 (docs/blender-scenes.md). Pure reading: nothing in the scene changes.
 
-Only objects in the two Footfall collections (or collections inside them)
+Only objects in the three Footfall collections (or collections inside them)
 count, hidden ones included:
 
 - every MESH object in "Footfall Obstacles" gives one mesh obstacle per face
   of its evaluated mesh (modifiers applied), in world space: its footprint is
   the face seen from above, its surface the face in 3-D;
+- every MESH object in "Footfall Ground" gives one ground surface, its
+  evaluated mesh in world space: its faces facing up are walked on, and all
+  of it is solid. Without any, the floor is z = 0;
 - every EMPTY in "Footfall Agents" whose parent is not an agent is an agent:
   its name (its custom property "footfall_agent_name" if it has one: Apply
   names the rig instance after the agent and the empty "NAME (agent)"),
-  world XY and world rotation about Z; its child EMPTYs in that
+  world position and world rotation about Z (the height goes with the
+  position where the scene has ground, or where it is not 0: the core
+  refuses one off the floor); its child EMPTYs in that
   collection are its goals, by "footfall_goal_index", then by name; its
   custom properties "footfall_leave_at_goal" (true: it walks through its last
   goal and leaves the scene there), "footfall_time_limit" (its time budget
@@ -42,6 +47,7 @@ import numpy as np
 from ..core.scenario import AgentInput, ObstacleInput, ScenarioInput, scenario_document
 
 OBSTACLES = "Footfall Obstacles"
+GROUND = "Footfall Ground"
 AGENTS = "Footfall Agents"
 GOAL_INDEX = "footfall_goal_index"
 LEAVE_AT_GOAL = "footfall_leave_at_goal"
@@ -70,14 +76,17 @@ class SceneScenario:
     document: dict
     obstacle_objects: List[str]
     agent_rigs: Dict[str, str] = field(default_factory=dict)  # agent -> its custom property AGENT_RIG
+    ground_objects: List[str] = field(default_factory=list)  # per ground surface, its object
 
     def locate(self, message: str) -> str:
         """The core's error `message` with the objects behind the
-        agents[i] and obstacles[i] that it names."""
+        agents[i], obstacles[i] and ground[i] that it names."""
         notes = []
-        for kind, index in dict.fromkeys(re.findall(r"\b(agents|obstacles)\[(\d+)\]", message)):
+        for kind, index in dict.fromkeys(re.findall(r"\b(agents|obstacles|ground)\[(\d+)\]", message)):
             if kind == "agents":
                 notes.append(f"{kind}[{index}] is agent '{self.document['agents'][int(index)]['name']}'")
+            elif kind == "ground":
+                notes.append(f"{kind}[{index}] is '{self.ground_objects[int(index)]}'")
             else:
                 notes.append(f"{kind}[{index}] is a face of '{self.obstacle_objects[int(index)]}'")
         return f"{message} ({'; '.join(notes)})" if notes else message
@@ -113,7 +122,10 @@ def overrides(scene) -> dict:
     return value
 
 
-def _xy(vector) -> List[float]:
+def _point(vector, with_height: bool) -> List[float]:
+    """[x, y], or [x, y, z] where the scene has ground or z is not 0."""
+    if with_height or vector.z != 0.0:
+        return [float(vector.x), float(vector.y), float(vector.z)]
     return [float(vector.x), float(vector.y)]
 
 
@@ -147,7 +159,7 @@ def _agent_objects(objects) -> list:
     return sorted(filter(is_agent, empties), key=agent_name)
 
 
-def _agents(objects, depsgraph) -> List[AgentInput]:
+def _agents(objects, depsgraph, on_ground: bool) -> List[AgentInput]:
     empties = {o for o in objects if o.type == "EMPTY"}
     agents = []
     for agent in _agent_objects(objects):
@@ -158,8 +170,8 @@ def _agents(objects, depsgraph) -> List[AgentInput]:
         world = agent.evaluated_get(depsgraph).matrix_world
         agents.append(AgentInput(
             name=agent_name(agent),
-            position=_xy(world.translation),
-            goals=[_xy(goal.evaluated_get(depsgraph).matrix_world.translation) for goal in goals],
+            position=_point(world.translation, on_ground),
+            goals=[_point(goal.evaluated_get(depsgraph).matrix_world.translation, on_ground) for goal in goals],
             facing=_facing(world),
             leave_at_goal=_flag(agent, LEAVE_AT_GOAL),
             character=_own_character(agent),
@@ -327,6 +339,18 @@ def _obstacles(objects, depsgraph):
     return obstacles, owners
 
 
+def _ground(objects, depsgraph):
+    """Per MESH object, its evaluated mesh in world space as one ground surface; and their names."""
+    ground, owners = [], []
+    for obj in sorted((o for o in objects if o.type == "MESH"), key=lambda o: o.name):
+        mesh = world_mesh(obj, depsgraph)
+        if len(mesh.triangles) == 0:
+            raise SceneError(f"Ground '{obj.name}' has no faces: Footfall walks on a ground object's faces")
+        ground.append(ObstacleInput(mesh=(mesh.points.tolist(), mesh.triangles.tolist())))
+        owners.append(obj.name)
+    return ground, owners
+
+
 def _depsgraph(scene):
     depsgraph = bpy.context.evaluated_depsgraph_get()
     if depsgraph.scene != scene:
@@ -345,13 +369,14 @@ def read(scene) -> SceneScenario:
     obstacles. Raises SceneError naming the object that cannot be read."""
     depsgraph = _depsgraph(scene)
     obstacles, owners = _obstacles(_members(scene, OBSTACLES), depsgraph)
+    ground, ground_owners = _ground(_members(scene, GROUND), depsgraph)
     members = _members(scene, AGENTS)
-    agents = _agents(members, depsgraph)
+    agents = _agents(members, depsgraph, bool(ground))
     params = overrides(scene)
-    document = scenario_document(ScenarioInput(agents=agents, obstacles=obstacles,
+    document = scenario_document(ScenarioInput(agents=agents, obstacles=obstacles, ground=ground,
                                                character=params.get("character", {}),
                                                planner=params.get("planner", {})))
-    return SceneScenario(document, owners, _rig_names(members))
+    return SceneScenario(document, owners, _rig_names(members), ground_owners)
 
 
 def extract(scene) -> dict:

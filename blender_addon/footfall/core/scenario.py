@@ -17,7 +17,8 @@ Point = Tuple[float, float]
 
 @dataclass(frozen=True)
 class AgentInput:
-    """One agent: name, standing position [m], goals [m], facing [rad] (None:
+    """One agent: name, standing position [m] (x, y, or x, y, z: on ground,
+    the height it stands at), goals [m] (likewise), facing [rad] (None:
     toward the first goal), whether it walks through its last goal and
     leaves the scene there (instead of coming to rest on it), overrides of
     the scenario's character for it alone (its own size, say), its time
@@ -58,23 +59,31 @@ class ScenarioInput:
 
     agents: Sequence[AgentInput] = ()
     obstacles: Sequence[ObstacleInput] = ()
+    ground: Sequence[ObstacleInput] = ()  # walkable surfaces; none: the floor z = 0
     character: dict = field(default_factory=dict)
     planner: dict = field(default_factory=dict)
 
 
 def _point(p):
-    return [float(p[0]), float(p[1])]
+    """[x, y], or [x, y, z] for a point given with its height."""
+    return [float(c) for c in p]
 
 
-def _obstacle_entry(obstacle: ObstacleInput) -> dict:
+def _obstacle_entry(obstacle: ObstacleInput, default_base: float = 0.0) -> dict:
+    """The file's entry of an obstacle, or of a ground surface (whose base
+    defaults to min(0, height): `default_base` is then that)."""
     if obstacle.mesh is not None:
         vertices, triangles = obstacle.mesh
         return {"mesh": {"vertices": [[float(c) for c in v] for v in vertices],
                          "triangles": [[int(k) for k in t] for t in triangles]}}
     entry = {"polygon": [_point(p) for p in obstacle.polygon], "height": float(obstacle.height)}
-    if obstacle.base:
+    if obstacle.base != default_base:
         entry["base"] = float(obstacle.base)
     return entry
+
+
+def _ground_entry(surface: ObstacleInput) -> dict:
+    return _obstacle_entry(surface, min(0.0, surface.height))
 
 
 def obstacle_input(obstacle) -> ObstacleInput:
@@ -118,6 +127,8 @@ def scenario_document(scenario: ScenarioInput) -> dict:
         "obstacles": [_obstacle_entry(o) for o in scenario.obstacles],
         "agents": agents,
     }
+    if scenario.ground:
+        document["ground"] = [_ground_entry(g) for g in scenario.ground]
     if scenario.character:
         document["character"] = dict(scenario.character)
     if scenario.planner:
@@ -125,16 +136,27 @@ def scenario_document(scenario: ScenarioInput) -> dict:
     return document
 
 
+def _with_height(point, height):
+    return tuple(point) if height is None else (*point, height)
+
+
 def document_of(scenario) -> dict:
     """The document of a scenario the core has read (a native Scenario, as
-    from a SteerSuite file), its agents and obstacles; parameters at their defaults."""
+    from a SteerSuite file), its agents, obstacles and ground; parameters at
+    their defaults. Points keep the heights they were given with."""
+    def goals(a):
+        heights = list(a.goal_heights) or [None] * len(a.goals)
+        return [_with_height(g, h) for g, h in zip(a.goals, heights)]
+
     return scenario_document(ScenarioInput(
-        agents=[AgentInput(a.name, a.position, a.goals, a.facing, a.leave_at_goal, time_limit=a.time_limit or None,
+        agents=[AgentInput(a.name, _with_height(a.position, a.height), goals(a), a.facing, a.leave_at_goal,
+                           time_limit=a.time_limit or None,
                            start_delay=a.start_delay or None, goal_wait=a.goal_wait or None,
                            scale=None if a.scale == 1.0 else a.scale, end_facing=a.end_facing,
                            goal_facings=list(a.goal_facings) or None)
                 for a in scenario.agents],
-        obstacles=[obstacle_input(o) for o in scenario.obstacles]))
+        obstacles=[obstacle_input(o) for o in scenario.obstacles],
+        ground=[obstacle_input(g) for g in scenario.ground]))
 
 
 def parse(document: dict, source: str = "<scene>"):
