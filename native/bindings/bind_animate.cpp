@@ -113,17 +113,6 @@ void bind_animate(py::module_& m) {
       "the body's facing [rad], the share of the walking clip's amplitude, the look angle [rad] the "
       "chest and head turn by (LOOK_SHARES of it each, the head on top of the chest), and the chest's "
       "twist [rad] to the heading the planner tested (on top of its look).");
-  py::class_<Ground>(m, "Ground", "A plan's ground, indexed (ground/ground.hpp): build it once a plan.")
-      .def(py::init<std::vector<GroundSurface>>(), py::arg("surfaces"))
-      .def("empty", &Ground::empty, "True without ground: the plane z = 0 is the floor.")
-      .def(
-          "standing_height",
-          [](const Ground& ground, double x, double y, double headroom) -> std::optional<double> {
-            if (const auto point = ground.standing_on({x, y}, headroom)) return point->z;
-            return std::nullopt;
-          },
-          py::arg("x"), py::arg("y"), py::arg("headroom"),
-          "The height of the lowest ground a body `headroom` tall stands on at (x, y) [m], or None.");
   m.def(
       "ground_motion",
       [](const AgentPlan& agent, const CharacterParams& character, const Ground& ground,

@@ -67,6 +67,26 @@ void bind_scenario(py::module_& m) {
       .def_readwrite("agents", &Scenario::agents)
       .def_readwrite("character", &Scenario::character)
       .def_readwrite("planner", &Scenario::planner);
+  py::class_<Ground>(m, "Ground", "A scenario's or a plan's ground, indexed (ground/ground.hpp): build it once.")
+      .def(py::init<std::vector<GroundSurface>>(), py::arg("surfaces"))
+      .def("empty", &Ground::empty, "True without ground: the plane z = 0 is the floor.")
+      .def(
+          "standing_height",
+          [](const Ground& ground, double x, double y, double headroom) -> std::optional<double> {
+            if (const auto point = ground.standing_on({x, y}, headroom)) return point->z;
+            return std::nullopt;
+          },
+          py::arg("x"), py::arg("y"), py::arg("headroom"),
+          "The height of the lowest ground a body `headroom` tall stands on at (x, y) [m], or None.")
+      .def(
+          "standing_problem",
+          [](const Ground& ground, const CharacterParams& character, double x, double y, double facing,
+             std::optional<double> height) {
+            return standing_problem(ground, character, {x, y}, facing, height);
+          },
+          py::arg("character"), py::arg("x"), py::arg("y"), py::arg("facing"), py::arg("height") = py::none(),
+          "Why a body of `character` cannot stand at (x, y) facing `facing` [rad] (at `height` [m], where "
+          "given), as a scenario's agent would be refused; None if it can.");
   m.def("validate", py::overload_cast<const Scenario&>(&validate), py::arg("scenario"),
         "Raises ValueError with the field path of the first problem.");
   m.def("parse_scenario", &parse_scenario, py::arg("text"), py::arg("source") = "<string>",

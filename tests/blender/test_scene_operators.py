@@ -621,10 +621,17 @@ def test_errors_leave_the_scene_as_it_was():
     check("footfall_plan" not in bpy.data.texts, "a failed plan stored a Text")
 
 
+def footfall_native():
+    from footfall.core import native
+
+    return native.load()
+
+
 def test_a_stair_scene_loads_and_plans_with_every_agent_on_its_level():
     """Ground in "Footfall Ground": loaded from a scenario, read back with
-    the agents' heights, planned; an agent over no ground, or off the floor
-    of a scene without ground, refused by name with the scene as it was."""
+    the agents' heights, planned; agents scattered on it; an agent over no
+    ground, or off the floor of a scene without ground, refused by name with
+    the scene as it was."""
     from footfall.bridge import plan_store
 
     fresh_scene()
@@ -651,6 +658,35 @@ def test_a_stair_scene_loads_and_plans_with_every_agent_on_its_level():
     plan = plan_store.load_plan()
     check(all(a.status.name == "REACHED" for a in plan.agents), "not every agent reached")
     check(plan.ground, "the plan has no ground")
+    lines = panel_lines()
+    # Eight prisms of 4 corners: a top, a bottom and 4 sides of 2 triangles each.
+    check(f"Ground: {len(given['ground'])} objects, {12 * len(given['ground'])} triangles" in lines, lines)
+    check(any(f"on ground: {len(given['agents'])} of {len(given['agents'])} agents climb or go down" in line
+              for line in lines), lines)
+
+    # Scattered over the flight and the floor before it, facing the landing:
+    # each stands on its tread (feet on footholds), its goal up on the landing.
+    bpy.ops.mesh.primitive_plane_add(size=1, location=(-2.5, 0, 0))
+    start = bpy.context.active_object
+    start.scale = (9, 2.6, 1)  # x from -7 to 2: the floor and the flight
+    bpy.ops.mesh.primitive_plane_add(size=1, location=(5, 0, 1.02))
+    goal = bpy.context.active_object
+    goal.scale = (4, 2.6, 1)
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(obj in (start, goal))
+    bpy.context.view_layer.objects.active = goal
+    check(bpy.ops.footfall.scatter_agents(count=10, seed=3, spacing=0.8, prefix="Climber") == {"FINISHED"},
+          "scatter on ground failed")
+    ground = footfall_native().Ground(footfall_native().parse_scenario(json.dumps(extract())).ground)
+    on_treads = 0
+    for k in range(1, 11):
+        agent = bpy.data.objects[f"Climber {k}"]
+        p, q = agent.matrix_world.translation, agent.children[0].matrix_world.translation
+        check(abs(p.z - ground.standing_height(p.x, p.y, 1.8)) < 1e-6, f"{agent.name} at {p} is off the ground")
+        check(abs(q.z - 1.02) < 1e-6, f"{agent.name}'s goal at {q} is not on the landing")
+        on_treads += 0 < p.x < 1.8
+    check(on_treads > 0, "no one was scattered on the flight")
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "planning the scattered climbers failed")
 
     bpy.data.objects["up0"].location = (30.0, 0.0, 0.0)  # off the ground's end
     bpy.context.view_layer.update()  # the plan's watch counts the change now, not during Plan
@@ -662,6 +698,7 @@ def test_a_stair_scene_loads_and_plans_with_every_agent_on_its_level():
 
     fresh_scene()
     load_good_scenario()
+    check("Ground: the floor z = 0" in panel_lines(), panel_lines())
     bpy.data.objects["alice"].location.z = 0.8  # a shelf that is not ground
     message = operator_error(bpy.ops.footfall.plan)
     check("at a height of 0.80 m, but the scenario has no ground" in message and "is agent 'alice'" in message,

@@ -2,7 +2,10 @@
 """Agents scattered at random: N agents standing in one region (a mesh seen
 from above), each with a goal in a second region, clear of the obstacles
 (their parts below the body's height) and of every agent, new or already in
-the scene. The same seed, regions and scene give the same agents."""
+the scene. On a scene's ground ("Footfall Ground") each stands, and each goal
+lies, on the ground under it, at its height, where a body can stand (both
+feet on footholds, facing its goal). The same seed, regions and scene give
+the same agents."""
 
 import math
 from typing import List
@@ -11,8 +14,9 @@ import bpy
 import numpy as np
 
 from ..core import native
+from ..core.scenario import ScenarioInput, scenario_document
 from . import scene_build
-from .scene_extract import SceneError, agent_empties, overrides, read_obstacles, world_mesh
+from .scene_extract import SceneError, agent_empties, overrides, read_ground, read_obstacles, world_mesh
 
 TRIES_PER_AGENT = 200  # draws before a crowded region is given up
 
@@ -39,20 +43,46 @@ def scatter(scene, start_region, goal_region, count: int, seed: int, spacing: fl
     clearance = max(spacing / 2, character.torso_width / 2)  # the standing body's shoulders
     rng = np.random.default_rng(seed)
     standing = [tuple(empty.matrix_world.translation.xy) for empty in agent_empties(scene).values()]
-    starts = _draw(rng, _triangles_from_above(start_region), count, spacing, clearance, blocked, core, standing,
-                   start_region.name)
-    goals = _draw(rng, _triangles_from_above(goal_region), count, spacing, clearance, blocked, core, [],
-                  goal_region.name)
+    surfaces = read_ground(scene)[0]
+    if surfaces:
+        starts, goals = _draw_on_ground(rng, core.Ground([_native_obstacle(core, g) for g in surfaces]), character,
+                                        start_region, goal_region, count, spacing, clearance, blocked, core, standing)
+    else:
+        starts = _draw(rng, _triangles_from_above(start_region), count, spacing, clearance, blocked, core, standing,
+                       start_region.name)
+        goals = _draw(rng, _triangles_from_above(goal_region), count, spacing, clearance, blocked, core, [],
+                      goal_region.name)
     names = _free_names(prefix, count)
     document = {"format": "footfall-scenario", "version": 1, "agents": [
         {"name": name, "position": list(start), "goals": [list(goal)],
-         "facing": math.atan2(goal[1] - start[1], goal[0] - start[0])}
+         "facing": _facing(start, goal)}
         for name, start, goal in zip(names, starts, goals)]}
+    if surfaces:  # for the core to judge where they stand
+        document["ground"] = scenario_document(ScenarioInput(ground=surfaces))["ground"]
     try:
-        scene_build.build(scene, document, "scatter_agents")
+        scene_build.build(scene, document, "scatter_agents", scene_ground=True)
     except ValueError as error:  # what the core refuses: named, nothing added
         raise SceneError(str(error)) from error
     return names
+
+
+def _facing(start, goal) -> float:
+    return math.atan2(goal[1] - start[1], goal[0] - start[0])
+
+
+def _draw_on_ground(rng, ground, character, start_region, goal_region, count, spacing, clearance, blocked, core,
+                    taken):
+    """(starts, goals) as _draw's, on `ground` (x, y, z): the goals drawn
+    first where a body stands, then each start where a body stands facing its goal."""
+    def height(point):
+        return ground.standing_height(point[0], point[1], character.body_height)
+
+    goals = _draw(rng, _triangles_from_above(goal_region), count, spacing, clearance, blocked, core, [],
+                  goal_region.name, lambda point, _: height(point) is not None)
+    starts = _draw(rng, _triangles_from_above(start_region), count, spacing, clearance, blocked, core, taken,
+                   start_region.name, lambda point, k: ground.standing_problem(
+                       character, point[0], point[1], _facing(point, goals[k])) is None)
+    return ([(*p, height(p)) for p in starts], [(*p, height(p)) for p in goals])
 
 
 def _native_obstacle(core, obstacle):
@@ -77,9 +107,10 @@ def _cross(a, b):
     return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
 
 
-def _draw(rng, triangles, count, spacing, clearance, blocked, core, taken, region_name):
+def _draw(rng, triangles, count, spacing, clearance, blocked, core, taken, region_name, stands=None):
     """`count` points drawn uniformly over `triangles`, each clear of the
-    obstacles by `clearance` and `spacing` from the others and from `taken`."""
+    obstacles by `clearance` and `spacing` from the others and from `taken`
+    (and, given `stands`, where stands(point, how many drawn before) holds)."""
     area = np.abs(_cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0]))
     weights = area / area.sum()
     points, others = [], list(taken)
@@ -96,11 +127,14 @@ def _draw(rng, triangles, count, spacing, clearance, blocked, core, taken, regio
         if blocked.overlaps(core.Circle(tuple(point), clearance)):
             continue
         point = (round(float(point[0]), 6), round(float(point[1]), 6))
+        if stands is not None and not stands(point, len(points)):
+            continue
         points.append(point)
         others.append(point)
     if len(points) < count:
-        raise SceneError(f"Region '{region_name}' holds only {len(points)} of {count} agents {spacing:g} m apart "
-                         f"and clear of the obstacles: fewer agents, less spacing or a larger region")
+        ground = " on ground they can stand on" if stands is not None else ""
+        raise SceneError(f"Region '{region_name}' holds only {len(points)} of {count} agents {spacing:g} m apart, "
+                         f"clear of the obstacles{ground}: fewer agents, less spacing or a larger region")
     return points
 
 

@@ -50,10 +50,12 @@ def load_file(scene, path: str) -> dict:
     return build(scene, document, path)
 
 
-def build(scene, document: dict, source: str = "<scenario>") -> dict:
+def build(scene, document: dict, source: str = "<scenario>", scene_ground: bool = False) -> dict:
     """Validates a scenario document with the core and adds its obstacles,
-    agents and overrides to the scene; returns it with the core's defaults
-    (agent names, facings, heights) filled in. `source` names it in errors."""
+    ground, agents and overrides to the scene; returns it with the core's
+    defaults (agent names, facings, heights) filled in. `source` names it in
+    errors. `scene_ground`: the document's ground is the scene's already, to
+    stand its agents on, not to add."""
     scenario = parse(document, source)
     complete = _complete(scenario, document)
     _check(complete, source)
@@ -68,7 +70,7 @@ def build(scene, document: dict, source: str = "<scenario>") -> dict:
         # Agents first: they must get their names; obstacles and goals may take any free one.
         empties = [_add_agent(agent, agents) for agent in complete["agents"]]
         _add_shapes("Obstacle", complete["obstacles"], obstacles)
-        if complete.get("ground"):
+        if complete.get("ground") and not scene_ground:
             _add_shapes("Ground", complete["ground"], _collection(scene, GROUND, linked))
         for empty, agent in zip(empties, complete["agents"]):
             _add_goals(empty, agent, agents)

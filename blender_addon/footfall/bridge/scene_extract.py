@@ -364,6 +364,11 @@ def read_obstacles(scene):
     return _obstacles(_members(scene, OBSTACLES), _depsgraph(scene))
 
 
+def read_ground(scene):
+    """The scene's ground surfaces (ObstacleInput), and for each its object's name."""
+    return _ground(_members(scene, GROUND), _depsgraph(scene))
+
+
 def read(scene) -> SceneScenario:
     """The scene as a scenario document, with the objects behind its
     obstacles. Raises SceneError naming the object that cannot be read."""

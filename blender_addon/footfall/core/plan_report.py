@@ -1,13 +1,14 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """What a plan's outcome says to the user: how many agents reached their
 goals, and which did not, and why; which cannot reach a goal, and where
-their way is too narrow; after a Plan of the selected agents, which of them
-overlap others."""
+their way is too narrow; on ground, how many climb; after a Plan of the
+selected agents, which of them overlap others."""
 
 from typing import Collection, Sequence, Tuple
 
 NAMED = 5  # agents named at most; the rest are counted
 NOT_THERE = "; not there: "  # where the outcome goes on to name those that did not arrive
+CLIMB = 0.02  # [m] footholds further apart in height than this: the agent climbs or goes down
 
 
 def outcome(agents: Sequence[Tuple[str, bool, str]]) -> str:
@@ -49,3 +50,11 @@ def overlapping(agents: Sequence[Tuple[str, int]], planned: Collection[str], rat
     named = _listed([f"'{name}' ({count} samples at {rate:g} Hz)" for name, count in found])
     return (f"; overlapping others: {named}: the agents not selected keep their plans and make way for no "
             "one; plan every agent")
+
+
+def climbing(spans: Sequence[float]) -> str:
+    """`spans`: per agent, how far its highest foothold lies above its
+    lowest [m]. "; on ground: 4 of 12 agents climb or go down stairs or
+    slopes"."""
+    count = sum(span > CLIMB for span in spans)
+    return f"; on ground: {count} of {len(spans)} agents climb or go down stairs or slopes"

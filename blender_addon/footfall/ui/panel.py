@@ -31,6 +31,22 @@ def _own_rig(context):
     return f"{agent_name(active)}: the scene's rig" + (f" '{scene_rig.name}'" if scene_rig else " (none yet)")
 
 
+def _ground_said(context) -> str:
+    """How much ground the scene has, said for the panel: its objects and
+    their evaluated triangles, or the floor z = 0."""
+    from ..bridge.scene_extract import GROUND, collection_in
+
+    collection = collection_in(context.scene, GROUND)
+    meshes = [o for o in collection.all_objects if o.type == "MESH"] if collection else []
+    if not meshes:
+        return "Ground: the floor z = 0"
+    depsgraph = context.evaluated_depsgraph_get()
+    # A face of n corners is n - 2 triangles.
+    triangles = sum(len(mesh.loops) - 2 * len(mesh.polygons)
+                    for mesh in (o.evaluated_get(depsgraph).data for o in meshes))
+    return f"Ground: {len(meshes)} object{'s' if len(meshes) != 1 else ''}, {triangles} triangles"
+
+
 class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
     """Shows whether Footfall's planning core is ready."""
 
@@ -57,6 +73,7 @@ class FOOTFALL_PT_main(_FootfallSidebarTab, bpy.types.Panel):
                 self.layout.label(text=line)
             if NOT_THERE in context.scene[OUTCOME]:
                 self.layout.operator("footfall.select_unreached", icon="RESTRICT_SELECT_OFF")
+        self.layout.label(text=_ground_said(context))
         self.layout.operator("footfall.scatter_agents", icon="PARTICLES")
         self.layout.operator("footfall.randomize_agents", icon="MOD_NOISE")
         self.layout.operator("footfall.import_rig", icon="ARMATURE_DATA")

@@ -91,11 +91,17 @@ def _input(context, selected_only: bool):
     return names, _planning_input(context, names)
 
 
+def _height_span(footsteps) -> float:
+    """How far an agent's highest foothold lies above its lowest [m]."""
+    heights = [step.foot_height for step in footsteps]
+    return max(heights) - min(heights) if heights else 0.0
+
+
 def _store(operator, context, result, names, seconds, read_at: int):
     """Stores the plan of the scene as it was at change count `read_at`
     (plan_watch) and reports its outcome on `operator`."""
     from ..bridge import plan_store, plan_watch
-    from ..core.plan_report import outcome, overlapping, unreachable
+    from ..core.plan_report import climbing, outcome, overlapping, unreachable
 
     ff = native.load()
     plan_store.store(ff.plan_to_json(result), result)
@@ -107,6 +113,8 @@ def _store(operator, context, result, names, seconds, read_at: int):
         clashes = overlapping([(m.name, m.overlaps) for m in metrics.agents], set(names), metrics.rate)
     said = (outcome([(a.name, a.status == ff.AgentStatus.REACHED, a.reason) for a in result.agents])
             + unreachable([(a.name, str(a.narrowest)) for a in result.agents if a.narrowest is not None]) + clashes)
+    if result.ground:
+        said += climbing([_height_span(a.footsteps) for a in result.agents])
     context.scene[plan_store.OUTCOME] = said
     steps = sum(len(agent.footsteps) for agent in result.agents)
     fine = all(a.status == ff.AgentStatus.REACHED for a in result.agents) and not clashes

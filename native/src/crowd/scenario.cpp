@@ -85,24 +85,56 @@ std::string metres(double value) {
   return text;
 }
 
-/// Refuses a point of an agent (`field`) over no ground to stand on, or
-/// with a height (`height`) not within kHeightReach of the ground there
-/// (without ground, of z = 0).
-void check_standing_height(const Ground& ground, Vec2 p, std::optional<double> height,
-                           double headroom, const std::string& field) {
+/// Why a point of an agent is over no ground to stand on, or has a height
+/// (`height`) not within kHeightReach of the ground there (without ground,
+/// of z = 0); nothing if it has none of these.
+std::optional<std::string> standing_height_problem(const Ground& ground, Vec2 p,
+                                                   std::optional<double> height,
+                                                   double headroom) {
   if (ground.empty()) {
     if (height && std::fabs(*height) > kHeightReach)
-      fail(field, "at a height of " + metres(*height) +
-                      ", but the scenario has no ground: its floor is z = 0");
-    return;
+      return "at a height of " + metres(*height) +
+             ", but the scenario has no ground: its floor is z = 0";
+    return std::nullopt;
   }
   const std::vector<GroundPoint> levels = ground.standable_at(p, headroom);
-  if (levels.empty()) fail(field, "over no ground to stand on");
+  if (levels.empty()) return "over no ground to stand on";
   if (height && std::none_of(levels.begin(), levels.end(), [&](const GroundPoint& level) {
         return std::fabs(level.z - *height) <= kHeightReach;
       }))
-    fail(field, "no ground to stand on within 0.50 m of its height " + metres(*height) +
-                    " (the ground there is at " + metres(levels.front().z) + ")");
+    return "no ground to stand on within 0.50 m of its height " + metres(*height) +
+           " (the ground there is at " + metres(levels.front().z) + ")";
+  return std::nullopt;
+}
+
+/// Why a body standing at `position` facing `facing` has a foot that is
+/// not on a foothold (each foot as a foothold of its own, beside the other,
+/// swung from nowhere); nothing if both are.
+std::optional<std::string> standing_feet_problem(const Ground& ground,
+                                                 const CharacterParams& character, Vec2 position,
+                                                 double facing) {
+  const FootstepState standing = standing_state(position, facing, character);
+  for (const Foot foot : {Foot::kLeft, Foot::kRight}) {
+    const int f = static_cast<int>(foot);
+    const FootholdFault fault =
+        foothold_fault(ground, character, standing.feet[f], standing.foot_orientation[f],
+                       standing.feet[1 - f], standing.feet[f]);
+    if (fault != FootholdFault::kNone)
+      return std::string("the standing agent's ") + to_string(foot) +
+             " foot is not on the ground (" +
+             (fault == FootholdFault::kUnsupported ? "too little of its sole is held"
+              : fault == FootholdFault::kRise      ? "a step above or below the other foot"
+                                                   : "no ground it can stand on under it") +
+             ")";
+  }
+  return std::nullopt;
+}
+
+/// Refuses a goal of an agent (`field`) standing_height_problem finds a problem with.
+void check_standing_height(const Ground& ground, Vec2 p, std::optional<double> height,
+                           double headroom, const std::string& field) {
+  if (const auto problem = standing_height_problem(ground, p, height, headroom))
+    fail(field, *problem);
 }
 
 /// Refuses levels above one another (stage 1 of docs/notes/terrain.md),
@@ -113,7 +145,8 @@ void check_on_ground(const Scenario& scenario, const Ground& ground,
     const AgentSpec& agent = scenario.agents[i];
     const std::string path = item("agents", i);
     const double headroom = planners.character(agent).body_height;
-    check_standing_height(ground, agent.position, agent.height, headroom, child(path, "position"));
+    if (const auto problem = standing_height_problem(ground, agent.position, agent.height, headroom))
+      fail(child(path, "position"), *problem);
     for (std::size_t k = 0; k < agent.goals.size(); ++k)
       check_standing_height(ground, agent.goals[k],
                             k < agent.goal_heights.size() ? agent.goal_heights[k] : std::nullopt,
@@ -131,24 +164,9 @@ void check_on_ground(const Scenario& scenario, const Ground& ground,
   }
   for (std::size_t i = 0; i < scenario.agents.size(); ++i) {
     const AgentSpec& agent = scenario.agents[i];
-    const std::string path = item("agents", i);
-    const CharacterParams& character = planners.character(agent);
-    const FootstepState standing = standing_state(agent.position, agent.facing, character);
-    // Each foot as a foothold of its own, beside the other, swung from nowhere.
-    for (const Foot foot : {Foot::kLeft, Foot::kRight}) {
-      const int f = static_cast<int>(foot);
-      const FootholdFault fault =
-          foothold_fault(ground, character, standing.feet[f], standing.foot_orientation[f],
-                         standing.feet[1 - f], standing.feet[f]);
-      if (fault != FootholdFault::kNone)
-        fail(child(path, "position"),
-             std::string("the standing agent's ") + to_string(foot) +
-                 " foot is not on the ground (" +
-                 (fault == FootholdFault::kUnsupported ? "too little of its sole is held"
-                  : fault == FootholdFault::kRise      ? "a step above or below the other foot"
-                                                       : "no ground it can stand on under it") +
-                 ")");
-    }
+    if (const auto problem = standing_feet_problem(ground, planners.character(agent),
+                                                   agent.position, agent.facing))
+      fail(child(item("agents", i), "position"), *problem);
   }
 }
 
@@ -316,6 +334,15 @@ Plan plan_among(const Scenario& scenario, const RunControl& control,
 }  // namespace
 
 void validate(const Scenario& scenario) { validate_on(scenario, Ground(scenario.ground)); }
+
+std::optional<std::string> standing_problem(const Ground& ground, const CharacterParams& character,
+                                            Vec2 position, double facing,
+                                            std::optional<double> height) {
+  if (auto problem = standing_height_problem(ground, position, height, character.body_height))
+    return problem;
+  if (ground.empty()) return std::nullopt;
+  return standing_feet_problem(ground, character, position, facing);
+}
 
 Plan plan_scenario(const Scenario& scenario, const RunControl& control) {
   return plan_among(scenario, control, {});

@@ -2,10 +2,12 @@
 // (read from files by io/scenario_file.hpp), and planning it whole.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "footfall/crowd/crowd_planner.hpp"
+#include "footfall/ground/ground.hpp"
 #include "footfall/navmesh/navmesh.hpp"
 #include "footfall/model/obstacles.hpp"
 #include "footfall/model/params.hpp"
@@ -28,6 +30,15 @@ struct Scenario {
 /// agent names, agents and goals clear of obstacles. Throws
 /// std::invalid_argument with the field path ("agents[1].position: ...").
 void validate(const Scenario& scenario);
+
+/// Why a body of `character` cannot stand at `position` facing `facing` on
+/// `ground` (at `height`, where given: within 0.5 m of it), as validate()
+/// says it of an agent's position ("over no ground to stand on", "the
+/// standing agent's left foot is not on the ground (...)"); nothing if it
+/// can. Without ground, only a height over 0.5 m from z = 0 is a problem.
+std::optional<std::string> standing_problem(const Ground& ground, const CharacterParams& character,
+                                            Vec2 position, double facing,
+                                            std::optional<double> height);
 
 /// Plans every agent of a scenario together on its navigation mesh
 /// (plan_agents). Deterministic: the same scenario gives bit-identical plans,
