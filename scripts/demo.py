@@ -20,9 +20,9 @@ OUT = pathlib.Path(sys.argv[sys.argv.index("--") + 1] if "--" in sys.argv else R
 
 
 def stage(scene, target: Vector) -> None:
-    """Ground, sun, colours and a camera looking down at `target`."""
-    bpy.ops.mesh.primitive_plane_add(size=40, location=(target.x, target.y, 0))
-    bpy.context.object.color = (0.85, 0.85, 0.82, 1)
+    """Colours, and a camera looking down at `target`."""
+    for obj in bpy.data.collections["Footfall Ground"].all_objects:
+        obj.color = (0.85, 0.85, 0.82, 1)
     for obj in bpy.data.collections["Footfall Obstacles"].all_objects:
         obj.color = (0.45, 0.55, 0.7, 1)
     for obj in bpy.data.collections["Footfall Crowd"].all_objects:

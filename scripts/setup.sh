@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The first README command: install, build, and run the main job on the
-# built-in demo (a crowd through a doorway, one walker holding its arms in and
+# built-in demo (a crowd up three steps and through a doorway, one walker holding its arms in and
 # one side-stepping through narrow gaps): the planner
 # writes out/demo-plan.json and prints a table; Blender animates the project's
 # rig on it and writes out/demo.png (a render), out/demo.glb (the animated

@@ -1,4 +1,8 @@
 #include "footfall/scenes/scenes.hpp"
+
+#include <tuple>
+
+#include "footfall/ground/ground.hpp"
 #include "util/seeded_random.hpp"
 
 namespace footfall {
@@ -22,12 +26,24 @@ std::vector<Obstacle> wall_with_door(double x, double door_width, double door_ce
 
 Scenario demo_scenario() {
   Scenario scenario;
+  // A floor, and three steps up to a landing before the door and the room
+  // behind it, half a storey up, the length of the wall.
+  constexpr double kRiser = 0.17, kTread = 0.3, kFirstStep = 3.2, kRoom = 3 * kRiser;
+  scenario.ground.push_back(ground_prism({{-14, -25}, {25, -25}, {25, 12}, {-14, 12}}, 0.0));
+  for (int k = 0; k < 3; ++k) {
+    const double x0 = kFirstStep + kTread * k, x1 = k < 2 ? x0 + kTread : 16.0;
+    scenario.ground.push_back(ground_prism({{x0, -6}, {x1, -6}, {x1, 6}, {x0, 6}}, kRiser * (k + 1)));
+  }
   scenario.obstacles = wall_with_door(5.0, 1.6);
-  // The room behind the door, cluttered.
-  scenario.obstacles.push_back(box_obstacle({8.0, 0.0}, {1.0, 1.0}, 0.8));
-  scenario.obstacles.push_back(box_obstacle({9.8, -2.2}, {0.8, 0.8}, 0.75));
-  scenario.obstacles.push_back(box_obstacle({10.2, 2.6}, {1.4, 0.6}, 0.9));
-  scenario.obstacles.push_back(box_obstacle({13.0, -0.6}, {0.6, 1.6}, 1.0));
+  // The room behind the door, cluttered: boxes standing on its floor.
+  for (const auto& [centre, size, height] : {std::tuple{Vec2{8.0, 0.0}, Vec2{1.0, 1.0}, 0.8},
+                                             {Vec2{9.8, -2.2}, Vec2{0.8, 0.8}, 0.75},
+                                             {Vec2{10.2, 2.6}, Vec2{1.4, 0.6}, 0.9},
+                                             {Vec2{13.0, -0.6}, Vec2{0.6, 1.6}, 1.0}}) {
+    Obstacle box = box_obstacle(centre, size, kRoom + height);
+    box.base = kRoom;
+    scenario.obstacles.push_back(box);
+  }
   // Below the door the wall goes on as a block 2 m deep with two narrow gaps
   // for the project's rig (its body's clearances 0.25, 0.31 and 0.41 m):
   // 0.70 m, walked with the arms held in, and 0.56 m, side-stepped.

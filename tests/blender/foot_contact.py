@@ -32,14 +32,14 @@ class FootRest:
                                      foot_points(rig, profile.bones)[side])
         self.heel = Vector((self.ankle.x, self.ankle.y, 0.0)) - shape.heel_back * forward
 
-    def error(self, armature, pose) -> float:
+    def error(self, armature, pose, ground: float = 0.0) -> float:
         """The distance of the nearest of the posed ankle, ball and heel to
-        where the plan's foot `pose` puts it (an evaluated instance
-        `armature`, whose armature space is the world, times its scale for
-        an agent of another size)."""
+        where the plan's foot `pose` puts it on a floor at height `ground`
+        (an evaluated instance `armature`, whose armature space is the world,
+        times its scale for an agent of another size)."""
         scale = armature.matrix_world.to_scale().x
         turn = scale * Matrix.Rotation(pose.orientation - self.yaw, 3, "Z")
-        ankle = Vector((pose.position[0], pose.position[1], scale * self.ankle.z))
+        ankle = Vector((pose.position[0], pose.position[1], ground + scale * self.ankle.z))
         planned = {"ankle": ankle, "ball": ankle + turn @ (self.ball - self.ankle),
                    "heel": ankle + turn @ (self.heel - self.ankle)}
         foot = armature.pose.bones[self.foot]
@@ -52,10 +52,16 @@ class FootRest:
 
 def plan_errors(ff, plan, rig, profile):
     """The farthest any planted foot's contact point (heel, ankle or ball, as
-    it rolls) is from the plan, and the hips from the COM, in the world at
-    every frame, for agents animated on `rig` (profile `profile`): (foot,
-    pelvis, stance samples)."""
+    it rolls) is from the plan (on its ground: flat treads and floors), and
+    the hips from the COM, in the world at every frame, for agents animated
+    on `rig` (profile `profile`): (foot, pelvis, stance samples)."""
     feet = {side: FootRest(rig, profile, side) for side in ("left", "right")}
+    ground = ff.Ground(plan.ground)  # flat treads: a planted foot lies flat on the ground under it
+
+    def under(position) -> float:
+        if ground.empty():
+            return 0.0
+        return ground.standing_height(position[0], position[1], plan.character.body_height)
     scene = bpy.context.scene
     fps = scene.render.fps / scene.render.fps_base
     worst_foot, worst_pelvis, stance_frames = 0.0, 0.0, 0
@@ -69,7 +75,7 @@ def plan_errors(ff, plan, rig, profile):
                 if not pose.planted:
                     continue
                 stance_frames += 1
-                worst_foot = max(worst_foot, feet[side].error(armature, pose))
+                worst_foot = max(worst_foot, feet[side].error(armature, pose, under(pose.position)))
             hips = world @ armature.pose.bones[profile.bones["hips"]].head
             worst_pelvis = max(worst_pelvis, math.dist(hips.xy, ff.com_at(agent, t).position))
     print(f"stance samples {stance_frames}, worst foot error {worst_foot * 1000:.2f} mm, "

@@ -87,6 +87,11 @@ def measure(ff, plan, crowd_path, feet):
     crowd = CrowdGlb(crowd_path)
     worst_contact = worst_hips = 0.0
     checked = 0
+    prisms = [{"polygon": o.polygon, "height": o.height} for o in plan.ground]  # the demo's: prisms only
+
+    def ground_under(point):
+        return max(float(ground_heights(prisms, numpy.array([point[:2]]))[0]), 0.0) if prisms else 0.0
+
     y_up_to_z_up = numpy.array([[1, 0, 0, 0], [0, 0, -1, 0], [0, 1, 0, 0], [0, 0, 0, 1.0]])
     for agent in plan.agents:
         times = crowd.animation_times(agent.name)
@@ -107,7 +112,8 @@ def measure(ff, plan, crowd_path, feet):
                     continue
                 rest = feet.sides[side]
                 rotation = agent.scale * turn(pose.orientation - feet.yaw)  # the rig at the agent's size
-                ankle = numpy.array([pose.position[0], pose.position[1], agent.scale * rest["ankle"][2]])
+                ankle = numpy.array([pose.position[0], pose.position[1],
+                                     ground_under(pose.position) + agent.scale * rest["ankle"][2]])
                 planned = [ankle, ankle + rotation @ (rest["ball"] - rest["ankle"]),
                            ankle + rotation @ (rest["heel"] - rest["ankle"])]
                 foot_world = world[nodes[rest["foot"]]][i]

@@ -55,13 +55,13 @@ class ObstacleInput:
 
 @dataclass(frozen=True)
 class ScenarioInput:
-    """Agents, obstacles and parameter overrides (field names as in the file format)."""
+    """Agents, obstacles, parameter overrides and ground (field names as in the file format)."""
 
     agents: Sequence[AgentInput] = ()
     obstacles: Sequence[ObstacleInput] = ()
-    ground: Sequence[ObstacleInput] = ()  # walkable surfaces; none: the floor z = 0
     character: dict = field(default_factory=dict)
     planner: dict = field(default_factory=dict)
+    ground: Sequence[ObstacleInput] = ()  # walkable surfaces; none: the floor z = 0
 
 
 def _point(p):
