@@ -7,6 +7,7 @@ Run: blender -b --factory-startup --python-exit-code 1 --python tests/blender/te
 """
 
 import json
+import math
 import os
 import pathlib
 import sys
@@ -16,7 +17,7 @@ import bpy  # first: as a Python module, bpy puts Blender's own modules on the p
 import addon_utils  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from harness import check, run  # noqa: E402
+from harness import check, expect_valid_gltf, run  # noqa: E402
 import numpy  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -89,6 +90,21 @@ def bones_apart(plan, scene, crowd, times):
     return core, worst, worst_knee, compared
 
 
+def lowest_vertex(agent: str) -> float:
+    """The lowest world height of the agent's evaluated skinned meshes at the current frame."""
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    lowest = math.inf
+    for obj in (o for o in bpy.data.objects[agent].children_recursive if o.type == "MESH"):
+        evaluated = obj.evaluated_get(depsgraph)
+        mesh = evaluated.to_mesh()
+        co = numpy.empty(3 * len(mesh.vertices), dtype=numpy.float64)
+        mesh.vertices.foreach_get("co", co)
+        evaluated.to_mesh_clear()
+        world = numpy.array(evaluated.matrix_world)
+        lowest = min(lowest, float((co.reshape(-1, 3) @ world[:3, :3].T + world[:3, 3])[:, 2].min()))
+    return lowest
+
+
 def deepest_below_ground(plan, prisms, scene, frames):
     """Over `frames`: how far the evaluated skinned meshes' deepest vertex
     lies below the ground under it, and where."""
@@ -113,6 +129,26 @@ def deepest_below_ground(plan, prisms, scene, frames):
     return worst
 
 
+def exported_apart(plan, scene, core, times, name):
+    """Export glTF of the applied crowd, read back: the farthest its feet,
+    toes, hands and head are from the core's (`core`, bones_apart's) while
+    shown, after the file is checked valid."""
+    path = TMP / f"{name}-blender.glb"
+    check(bpy.ops.footfall.export_gltf(filepath=str(path)) == {"FINISHED"}, "export failed")
+    expect_valid_gltf(path)
+    fps = scene.render.fps / scene.render.fps_base
+    exported = CrowdGlb(path)
+    worst = 0.0
+    for agent in plan.agents:
+        shown = times <= agent.end_time() if agent.leaves else numpy.ones(len(times), dtype=bool)
+        nodes = exported.subtree(exported.agent_root(agent.name))
+        world = exported.world_matrices(agent.name, times + scene.frame_start / fps, [nodes[b] for b in BONES])
+        for bone in BONES:
+            apart = numpy.linalg.norm(z_up(world[nodes[bone]][:, :3, 3]) - core[agent.name, bone], axis=1)
+            worst = max(worst, float(apart[shown].max()))
+    return worst
+
+
 def test_blender_and_the_core_put_the_bones_in_the_same_places():
     from footfall.core import native
 
@@ -125,20 +161,8 @@ def test_blender_and_the_core_put_the_bones_in_the_same_places():
     check(compared > 1000, f"only {compared} positions compared")
     check(worst < TOLERANCE, f"the add-on's and the core's bones are {1000 * worst:.1f} mm apart")
     check(worst_knee < KNEE_TOLERANCE, f"the add-on's and the core's knees are {1000 * worst_knee:.1f} mm apart")
-    fps = scene.render.fps / scene.render.fps_base
-
     # The two files, read alike: Blender's keys at frame / fps, from the scene's first frame.
-    blender_path = TMP / "blender.glb"
-    check(bpy.ops.footfall.export_gltf(filepath=str(blender_path)) == {"FINISHED"}, "export failed")
-    exported = CrowdGlb(blender_path)
-    worst = 0.0
-    for agent in plan.agents:
-        shown = times <= agent.end_time() if agent.leaves else numpy.ones(len(times), dtype=bool)
-        nodes = exported.subtree(exported.agent_root(agent.name))
-        world = exported.world_matrices(agent.name, times + scene.frame_start / fps, [nodes[b] for b in BONES])
-        for bone in BONES:
-            apart = numpy.linalg.norm(z_up(world[nodes[bone]][:, :3, 3]) - core[agent.name, bone], axis=1)
-            worst = max(worst, float(apart[shown].max()))
+    worst = exported_apart(plan, scene, core, times, "demo")
     print(f"the two files' bones: worst {1000 * worst:.2f} mm apart")
     check(worst < TOLERANCE, f"Blender's file and the core's put the bones {1000 * worst:.1f} mm apart")
 
@@ -155,7 +179,12 @@ def test_up_and_down_a_flight_blender_and_the_core_put_every_foot_on_its_tread()
     prisms = json.loads(document)["ground"]
     for live in (False, True):
         scene, crowd, times = applied_and_written(ff, plan, f"stairs-{'live' if live else 'keyed'}", live)
-        _, worst, worst_knee, compared = bones_apart(plan, scene, crowd, times)
+        core, worst, worst_knee, compared = bones_apart(plan, scene, crowd, times)
+        # Those starting up on the landing stand on it at the first frame: their soles on it, not above.
+        scene.frame_set(scene.frame_start)
+        for agent in (a for a in plan.agents if a.name.startswith("down")):
+            sole = lowest_vertex(agent.name)
+            check(abs(sole - 1.02) < GROUND_TOLERANCE, f"{agent.name}'s sole is at {sole:.3f} m, not on the landing")
         depth, where = deepest_below_ground(plan, prisms, scene, range(scene.frame_start, scene.frame_end + 1))
         print(f"stairs ({'live' if live else 'keyed'}): bones {1000 * worst:.2f} mm apart over {compared}, knees "
               f"{1000 * worst_knee:.2f} mm; deepest vertex {1000 * depth:.1f} mm below the ground {where}")
@@ -163,6 +192,10 @@ def test_up_and_down_a_flight_blender_and_the_core_put_every_foot_on_its_tread()
         check(worst < TOLERANCE, f"on stairs the add-on's and the core's bones are {1000 * worst:.1f} mm apart")
         check(worst_knee < KNEE_TOLERANCE, f"on stairs the knees are {1000 * worst_knee:.1f} mm apart")
         check(depth < GROUND_TOLERANCE, f"a body's vertex {1000 * depth:.1f} mm below the ground at {where}")
+        if not live:
+            exported = exported_apart(plan, scene, core, times, "stairs")
+            print(f"stairs: the exported file's bones {1000 * exported:.2f} mm from the core's")
+            check(exported < TOLERANCE, f"the exported stairs are {1000 * exported:.1f} mm from the core's")
 
 
 if __name__ == "__main__":
