@@ -11,11 +11,20 @@ namespace {
 /// posture its last step holds: every other plan was checked against it
 /// standing so past that end. Nothing moves, so nothing is checked (labelled
 /// anew, a wait could stand side-on where its rest stood arms in, and fail).
-StepResult stand_on(const Walker& w, const CharacterParams& character, double duration) {
+/// On ground the foot keeps its orientations too: turned to the facing, a
+/// sole on a tread may reach over its nosing or into the riser behind.
+StepResult stand_on(const Walker& w, const ValidityChecker& checks, double duration) {
   const FootstepAction wait_there{StepKind::kStop, other(w.state.last_foot), w.state.facing, 0.0,
                                   duration};
-  StepResult wait = create_footstep(w.state, wait_there, character);
+  StepResult wait = create_footstep(w.state, wait_there, checks.character());
   if (!w.plan.footsteps.empty()) wait.step.behavior = w.plan.footsteps.back().behavior;
+  if (checks.on_ground()) {
+    const int foot = static_cast<int>(wait.step.foot);
+    wait.step.orientation_interval = wait.state.foot_orientation[foot] =
+        w.state.foot_orientation[foot];
+    wait.step.foot_orientation = w.state.foot_orientation[foot].inner;
+    checks.place_on_ground(wait.step);
+  }
   return wait;
 }
 
@@ -31,7 +40,7 @@ void rest_until(Walker& w, const FootstepPlanner& planner, double t) {
   while (w.state.time < t) {
     const double duration = std::min(t - w.state.time, kMaxWait);
     const StepResult wait = w.state.standing()
-                                ? stand_on(w, planner.character(), duration)
+                                ? stand_on(w, planner.validity(), duration)
                                 : planner.validity().stop_step(w.state, duration, {},
                                                                following ? &*following : nullptr);
     if (!wait.valid()) break;
