@@ -12,7 +12,8 @@ namespace {
 /// standing so past that end. Nothing moves, so nothing is checked (labelled
 /// anew, a wait could stand side-on where its rest stood arms in, and fail).
 /// On ground the foot keeps its orientations too: turned to the facing, a
-/// sole on a tread may reach over its nosing or into the riser behind.
+/// sole on a tread may reach over its nosing or into the riser behind (its
+/// height is set with every step's once the plan is made).
 StepResult stand_on(const Walker& w, const ValidityChecker& checks, double duration) {
   const FootstepAction wait_there{StepKind::kStop, other(w.state.last_foot), w.state.facing, 0.0,
                                   duration};
@@ -23,7 +24,6 @@ StepResult stand_on(const Walker& w, const ValidityChecker& checks, double durat
     wait.step.orientation_interval = wait.state.foot_orientation[foot] =
         w.state.foot_orientation[foot];
     wait.step.foot_orientation = w.state.foot_orientation[foot].inner;
-    checks.place_on_ground(wait.step);
   }
   return wait;
 }

@@ -180,7 +180,6 @@ bool ValidityChecker::off_ground(const Footstep& step, const FootstepState& befo
   return impl_->off_ground(step, before);
 }
 bool ValidityChecker::on_ground() const { return impl_->on_ground(); }
-void ValidityChecker::place_on_ground(Footstep& step) const { impl_->place_on_ground(step); }
 
 ValidityChecker::Impl::Impl(const CharacterParams& character, const PlannerParams& planner,
                             const ObstacleMap& obstacles, const Ground* ground)

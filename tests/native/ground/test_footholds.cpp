@@ -44,6 +44,8 @@ std::vector<double> expect_on_ground(const Plan& plan, const Ground& ground) {
         ADD_FAILURE() << "step " << k << " over no ground";
         break;
       }
+      // The body is posed at the foot's height: every step's, waits' too.
+      EXPECT_NEAR(step.foot_height, here->z, 1e-9) << "step " << k;
       const Sole sole = sole_of(c, step.foot_position, *here, step.foot_orientation);
       EXPECT_GE(ground.support(sole, 0.02, std::cos(c.max_slope)), c.sole_support) << "step " << k;
       const int planted = static_cast<int>(step.foot);

@@ -166,9 +166,6 @@ class ValidityChecker {
   bool off_ground(const Footstep& step, const FootstepState& before) const;
   /// True if the checker was given ground.
   bool on_ground() const;
-  /// With ground, sets `step`'s foot_height (the standable ground's under
-  /// its foot), where its body is posed; without, leaves it 0.
-  void place_on_ground(Footstep& step) const;
 
   /// The character parameters.
   const CharacterParams& character() const;
