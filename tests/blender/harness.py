@@ -1,5 +1,6 @@
-"""Shared by the Blender background tests: checks, and a runner that reports
-every test and makes Blender exit non-zero when any fails."""
+"""Shared by the Blender background tests: checks, an evaluated mesh's
+points, and a runner that reports every test and makes Blender exit non-zero
+when any fails."""
 
 import json
 import os
@@ -15,6 +16,20 @@ def check(condition, message):
     """Fails the current test with `message` unless `condition` holds."""
     if not condition:
         raise AssertionError(message)
+
+
+def evaluated_points(obj, depsgraph):
+    """The vertices of the object's evaluated mesh (modifiers and armature
+    applied) in world space, (n, 3) [m]."""
+    import numpy
+
+    evaluated = obj.evaluated_get(depsgraph)
+    mesh = evaluated.to_mesh()
+    co = numpy.empty(3 * len(mesh.vertices), dtype=numpy.float64)
+    mesh.vertices.foreach_get("co", co)
+    evaluated.to_mesh_clear()
+    world = numpy.array(evaluated.matrix_world)
+    return co.reshape(-1, 3) @ world[:3, :3].T + world[:3, 3]
 
 
 def expect_valid_gltf(path):

@@ -7,7 +7,6 @@ Run: blender -b --factory-startup --python-exit-code 1 --python tests/blender/te
 """
 
 import json
-import math
 import os
 import pathlib
 import sys
@@ -17,7 +16,7 @@ import bpy  # first: as a Python module, bpy puts Blender's own modules on the p
 import addon_utils  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from harness import check, expect_valid_gltf, run  # noqa: E402
+from harness import check, evaluated_points, expect_valid_gltf, run  # noqa: E402
 import numpy  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -93,16 +92,8 @@ def bones_apart(plan, scene, crowd, times):
 def lowest_vertex(agent: str) -> float:
     """The lowest world height of the agent's evaluated skinned meshes at the current frame."""
     depsgraph = bpy.context.evaluated_depsgraph_get()
-    lowest = math.inf
-    for obj in (o for o in bpy.data.objects[agent].children_recursive if o.type == "MESH"):
-        evaluated = obj.evaluated_get(depsgraph)
-        mesh = evaluated.to_mesh()
-        co = numpy.empty(3 * len(mesh.vertices), dtype=numpy.float64)
-        mesh.vertices.foreach_get("co", co)
-        evaluated.to_mesh_clear()
-        world = numpy.array(evaluated.matrix_world)
-        lowest = min(lowest, float((co.reshape(-1, 3) @ world[:3, :3].T + world[:3, 3])[:, 2].min()))
-    return lowest
+    meshes = (o for o in bpy.data.objects[agent].children_recursive if o.type == "MESH")
+    return min(float(evaluated_points(obj, depsgraph)[:, 2].min()) for obj in meshes)
 
 
 def deepest_below_ground(plan, prisms, scene, frames):
@@ -115,13 +106,7 @@ def deepest_below_ground(plan, prisms, scene, frames):
         scene.frame_set(frame)
         depsgraph = bpy.context.evaluated_depsgraph_get()
         for obj in bodies:
-            evaluated = obj.evaluated_get(depsgraph)
-            mesh = evaluated.to_mesh()
-            co = numpy.empty(3 * len(mesh.vertices), dtype=numpy.float64)
-            mesh.vertices.foreach_get("co", co)
-            evaluated.to_mesh_clear()
-            world = numpy.array(evaluated.matrix_world)
-            points = co.reshape(-1, 3) @ world[:3, :3].T + world[:3, 3]
+            points = evaluated_points(obj, depsgraph)
             depth = ground_heights(prisms, points[:, :2]) - points[:, 2]
             k = int(numpy.argmax(depth))
             if depth[k] > worst[0]:

@@ -21,7 +21,7 @@ from mathutils import Vector  # noqa: E402
 from mathutils.bvhtree import BVHTree  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from harness import check, run  # noqa: E402
+from harness import check, evaluated_points, run  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, os.environ.get("FOOTFALL_ADDON_DIR", str(ROOT / "blender_addon")))
@@ -130,13 +130,7 @@ def deepest_penetration(body_objects, frames):
         scene.frame_set(frame)
         depsgraph = bpy.context.evaluated_depsgraph_get()
         for obj in body_objects:
-            evaluated = obj.evaluated_get(depsgraph)
-            mesh = evaluated.to_mesh()
-            co = numpy.empty(3 * len(mesh.vertices), dtype=numpy.float64)
-            mesh.vertices.foreach_get("co", co)
-            evaluated.to_mesh_clear()
-            world = numpy.array(evaluated.matrix_world)
-            points = co.reshape(-1, 3) @ world[:3, :3].T + world[:3, 3]
+            points = evaluated_points(obj, depsgraph)
             for tree, low, high in trees:
                 near = points[numpy.all((points > low - TOLERANCE) & (points < high + TOLERANCE), axis=1)]
                 for point in near:

@@ -405,6 +405,16 @@ class CrowdGlb:
             pending.extend(reversed(node.get("children", [])))
         return found
 
+    def skinned_primitives(self):
+        """Per primitive of the skinned mesh: its POSITION, JOINTS_0 (ints)
+        and WEIGHTS_0 arrays."""
+        document = self.document
+        mesh_node = next(n for n in document["nodes"] if "skin" in n and "mesh" in n)
+        for primitive in document["meshes"][mesh_node["mesh"]]["primitives"]:
+            attributes = primitive["attributes"]
+            yield (self.accessor(attributes["POSITION"]), self.accessor(attributes["JOINTS_0"]).astype(int),
+                   self.accessor(attributes["WEIGHTS_0"]))
+
     def world_positions(self, animation, times, names, root):
         """node name -> (len(times), 3) world translations, for named nodes below `root`."""
         below = self.subtree(root)

@@ -51,16 +51,11 @@ class RigFeet:
         forward /= numpy.linalg.norm(forward)
         skin = document["skins"][0]
         binds = [world[j][0] @ m for j, m in zip(skin["joints"], rig.accessor(skin["inverseBindMatrices"]))]
-        mesh_node = next(n for n in document["nodes"] if "skin" in n and "mesh" in n)
         for side in ("left", "right"):
             foot, toe = names[bones[side]["foot"]], names[bones[side]["toe"]]
             ankle = z_up(world[foot][0, :3, 3])
             points = []
-            for primitive in document["meshes"][mesh_node["mesh"]]["primitives"]:
-                attributes = primitive["attributes"]
-                positions = rig.accessor(attributes["POSITION"])
-                joints = rig.accessor(attributes["JOINTS_0"]).astype(int)
-                weights = rig.accessor(attributes["WEIGHTS_0"])
+            for positions, joints, weights in rig.skinned_primitives():
                 for p, j, w in zip(positions, joints, weights):
                     if skin["joints"][j[numpy.argmax(w)]] not in (foot, toe):
                         continue
@@ -208,13 +203,8 @@ def foot_vertices(crowd, agent, times, bones):
     binds = crowd.accessor(skin["inverseBindMatrices"])
     skinning = numpy.stack([world[j] @ m for j, m in zip(joints_here, binds)], axis=1)  # (t, joints, 4, 4)
     wanted = {rig_names.index(name) for name in bones}
-    mesh_node = next(n for n in document["nodes"] if "skin" in n and "mesh" in n)
     points = []
-    for primitive in document["meshes"][mesh_node["mesh"]]["primitives"]:
-        attributes = primitive["attributes"]
-        positions = crowd.accessor(attributes["POSITION"])
-        joints = crowd.accessor(attributes["JOINTS_0"]).astype(int)
-        weights = crowd.accessor(attributes["WEIGHTS_0"])
+    for positions, joints, weights in crowd.skinned_primitives():
         keep = numpy.array([j[numpy.argmax(w)] in wanted for j, w in zip(joints, weights)])
         p = numpy.append(positions[keep], numpy.ones((keep.sum(), 1)), axis=1)
         skinned = sum(weights[keep, k][None, :, None] * numpy.einsum("tvij,vj->tvi", skinning[:, joints[keep, k]], p)
