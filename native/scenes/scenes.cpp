@@ -28,11 +28,12 @@ Scenario demo_scenario() {
   Scenario scenario;
   // A floor, and three steps up to a landing before the door and the room
   // behind it, half a storey up, the length of the wall.
-  constexpr double kRiser = 0.17, kTread = 0.3, kFirstStep = 3.2, kRoom = 3 * kRiser;
+  constexpr double kTread = 0.3, kFirstStep = 3.2;
+  constexpr double kSteps[] = {0.17, 0.34, 0.51}, kRoom = kSteps[2];  // as written: short in the plan
   scenario.ground.push_back(ground_prism({{-14, -25}, {25, -25}, {25, 12}, {-14, 12}}, 0.0));
   for (int k = 0; k < 3; ++k) {
     const double x0 = kFirstStep + kTread * k, x1 = k < 2 ? x0 + kTread : 16.0;
-    scenario.ground.push_back(ground_prism({{x0, -6}, {x1, -6}, {x1, 6}, {x0, 6}}, kRiser * (k + 1)));
+    scenario.ground.push_back(ground_prism({{x0, -6}, {x1, -6}, {x1, 6}, {x0, 6}}, kSteps[k]));
   }
   scenario.obstacles = wall_with_door(5.0, 1.6);
   // The room behind the door, cluttered: boxes standing on its floor.

@@ -49,8 +49,8 @@ double GroundFollower::highest_under(Vec3 sole, double heading, double ceiling) 
     for (int j = 0; j < kAcross; ++j) {
       const double a = -(extent_.heel_back + kPitchReach) +
                        (extent_.heel_back + extent_.toe_ahead + 2 * kPitchReach) * i / (kAlong - 1);
-      // The heel and toe rounded, as the planner's sole: the end rows half as wide.
-      const double b = (i == 0 || i == kAlong - 1 ? 0.5 : 1.0) * extent_.width *
+      // The heel rounded, as the planner's sole: its row half as wide.
+      const double b = (i == 0 ? 0.5 : 1.0) * extent_.width *
                        (static_cast<double>(j) / (kAcross - 1) - 0.5);
       for (const GroundPoint& level : ground_.levels_at(ground(sole) + a * along + b * across))
         if (level.z <= ceiling) highest = std::max(highest, level.z);

@@ -250,8 +250,8 @@ int Ground::soles_samples_held(const Sole& sole, double tolerance, double min_no
                                int may_miss) const {
   const Vec2 along = unit(sole.heading), across = perp(along);
   const Vec2 centre = ground(sole.centre);
-  const double reach = 0.5 * std::hypot(sole.length, sole.width);
-  // The faces near the sole, gathered once from the cells under its circle.
+  const double reach = 0.5 * std::hypot(sole.length + 2 * kToeRoom, sole.width);
+  // The faces near the sole and its room, gathered once from the cells under its circle.
   thread_local std::vector<const Face*> near;
   near.clear();
   const Box circle{{centre.x - reach, centre.y - reach}, {centre.x + reach, centre.y + reach}};
@@ -296,13 +296,14 @@ int Ground::soles_samples_held(const Sole& sole, double tolerance, double min_no
       // The sole's plane over p.
       const double plane =
           sole.centre.z - (sole.normal.x * offset.x + sole.normal.y * offset.y) / sole.normal.z;
-      // The grid stretched to the sole's outline, its heel and toe rounded
-      // (the end rows half as wide): no ground above the sole there, below
-      // the instep, where the foot would be in it (a riser).
-      const bool end_row = i == 0 || i == kSoleRows - 1;
+      // The grid stretched to the sole's outline, its heel rounded (the heel
+      // row half as wide; a shoe's toe is about as wide as its ball): no
+      // ground above the sole there, below the instep, where the foot would
+      // be in it (a riser).
+      const bool heel_row = i == 0;
       const Vec2 edge_offset =
           (static_cast<double>(i) / (kSoleRows - 1) - 0.5) * (sole.length + 2 * kToeRoom) * along +
-          ((end_row ? 0.5 : 1.0) * (static_cast<double>(j) / (kSoleColumns - 1) - 0.5) *
+          ((heel_row ? 0.5 : 1.0) * (static_cast<double>(j) / (kSoleColumns - 1) - 0.5) *
            sole.width) * across;
       const Vec2 edge = centre + edge_offset;
       const double edge_plane = sole.centre.z - (sole.normal.x * edge_offset.x +

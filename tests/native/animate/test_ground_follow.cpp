@@ -17,7 +17,7 @@ constexpr FootExtent kSoleFoot{0.065, 0.195, 0.10};  // the planner's sole
 constexpr double kRate = 100.0;                // samples a second
 
 /// The highest ground under a foot's 9 x 3 samples, heel to toe (the heel
-/// and toe rounded: half as wide).
+/// rounded: half as wide).
 double highest_under(const Ground& ground, const FootOnGround& foot) {
   const Vec2 along = unit(foot.heading), across = perp(along);
   double highest = -INFINITY;
@@ -25,7 +25,7 @@ double highest_under(const Ground& ground, const FootOnGround& foot) {
     for (int j = 0; j < 3; ++j) {
       const Vec2 p = footfall::ground(foot.sole) +
                      (-kSoleFoot.heel_back + (kSoleFoot.heel_back + kSoleFoot.toe_ahead) * i / 8.0) * along +
-                     ((i == 0 || i == 8 ? 0.5 : 1.0) * kSoleFoot.width * (j / 2.0 - 0.5)) * across;
+                     ((i == 0 ? 0.5 : 1.0) * kSoleFoot.width * (j / 2.0 - 0.5)) * across;
       for (const GroundPoint& level : ground.levels_at(p))
         if (level.z < foot.sole.z + 0.5) highest = std::max(highest, level.z);
     }

@@ -146,8 +146,14 @@ TEST(PlanFileV2, IsCompact) {
     EXPECT_LT(double(text.size()) / double(footsteps(plan)), 250.0) << name;
     EXPECT_EQ(text.find('\n'), text.size() - 1) << name;  // one line
   }
-  const Plan demo = plan_scenario(demo_scenario());
+  // The demo, a small plan its obstacles and character weigh on, on the
+  // flat; on its ground it carries two more columns (foot_height, terrain).
+  Scenario flat = demo_scenario();
+  flat.ground.clear();
+  const Plan demo = plan_scenario(flat);
   EXPECT_LT(double(plan_to_json(demo).size()) / double(footsteps(demo)), 250.0);
+  const Plan on_ground = plan_scenario(demo_scenario());
+  EXPECT_LT(double(plan_to_json(on_ground).size()) / double(footsteps(on_ground)), 260.0);
 }
 
 // Version 1 (written by Footfall before version 2, pretty-printed) reads as

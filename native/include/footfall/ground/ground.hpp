@@ -103,8 +103,8 @@ class Ground {
   /// The share of `sole` (sampled on a 7 x 4 grid) over a walkable face
   /// within `tolerance` of the sole's plane, on a slope whose normal has at
   /// least `min_normal_z` (the cosine of the steepest walkable slope); 0
-  /// where any point of the sole's outline (its heel and toe rounded, and
-  /// 1 cm of room before the toe and behind the heel) has ground over the
+  /// where any point of the sole's outline (its heel rounded, and 1 cm of
+  /// room before the toe and behind the heel) has ground over the
   /// sole's plane, above `tolerance` and up to the instep (0.1 m): a toe in
   /// a riser is no foothold. [0, 1]
   double support(const Sole& sole, double tolerance, double min_normal_z) const;
