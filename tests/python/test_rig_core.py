@@ -215,6 +215,7 @@ def test_reference_size_gives_the_papers_character():
     assert c["com_height"] == pytest.approx(1.0, abs=0.01)
     assert c["max_step_length"] == pytest.approx(1.0)
     assert c["torso_width"] == pytest.approx(0.6)
+    assert c["sole_length"] == pytest.approx(0.27)  # the rig's foot, for footholds on treads
     assert p["gaits"][1] == {"speed": pytest.approx(1.3), "duration": pytest.approx(0.5)}
 
 

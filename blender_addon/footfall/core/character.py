@@ -20,6 +20,7 @@ COM_ABOVE_HIPS = 1.05  # the COM stands about 5 % above the hip joints
 ARM_THICKNESS = 0.1  # [m] per side outside the shoulder joints, at the reference size
 DEFAULT_GAITS = ((0.6, 0.65), (1.3, 0.5), (1.6, 0.45))  # as PlannerParams' defaults
 SIDE_STEP = (0.6, 1.2)  # the core's side step at the reference size: speed [m/s], cycle [s]
+SOLE_WIDTH_SHARE = 0.10 / 0.26  # a sole's width over its length, as the core's default sole
 
 
 def derive_parameters(dimensions: Mapping[str, float], body: Optional[Mapping] = None
@@ -45,6 +46,9 @@ def derive_parameters(dimensions: Mapping[str, float], body: Optional[Mapping] =
         "shoulder_radius": 0.1 * scale,
         "foot_offset": 0.1 * scale,
         "foot_radius": 0.3 * dimensions["foot_length"],
+        # The sole the planner fits on treads is the rig's foot (its heel a quarter of it behind the ankle).
+        "sole_length": dimensions["foot_length"],
+        "sole_width": SOLE_WIDTH_SHARE * dimensions["foot_length"],
     }
     if body is not None:
         walk = {"cycle_duration": 2 * character["preferred_step_duration"], "speed": character["preferred_speed"]}
@@ -85,7 +89,8 @@ def with_rig(document: dict, dimensions: Mapping[str, float], body: Optional[Map
 # What each derived field is in the user's terms, and the dimension it comes
 # from; any other (strides, speeds, step durations, gaits) from the leg length.
 MEASURED_BY = {"com_height": ("hip_height", "a centre of mass"), "torso_width": ("shoulder_width", "a torso"),
-               "foot_radius": ("foot_length", "a foot")}
+               "foot_radius": ("foot_length", "a foot"), "sole_length": ("foot_length", "a foot"),
+               "sole_width": ("foot_length", "a foot")}
 # The core's words for a value out of its range: "must be in [LOW, HIGH], got VALUE".
 OUT_OF_RANGE = re.compile(r"must be in .(\S+), (\S+)., got (\S+)")
 
