@@ -37,12 +37,13 @@ footfall::AgentPlan four_steps() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const footfall::AgentPlan plan = four_steps();
   static const footfall::CharacterParams character;
+  static const footfall::Ground flat;  // the plane z = 0
   static const std::vector<double> times{0.0, 0.25, 0.75, 1.125, 1.625, 2.125};
   try {
     const footfall::Rig rig = footfall::Rig::parse(
         std::string(reinterpret_cast<const char*>(data), size), "fuzz.gltf", {});
     footfall::fuzz::require_sound_pose(
-        footfall::animate::agent_motion(rig.data(), plan, character, times, 24.0));
+        footfall::animate::agent_motion(rig.data(), plan, character, flat, times, 24.0));
   } catch (const std::invalid_argument&) {
   }
   return 0;

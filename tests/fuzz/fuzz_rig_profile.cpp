@@ -30,13 +30,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const std::string rig_text = skeleton();
   static const footfall::AgentPlan standing;
   static const footfall::CharacterParams character;
+  static const footfall::Ground flat;  // the plane z = 0
   static const std::vector<double> times{0.0};
   try {
     const footfall::RigProfile profile = footfall::parse_rig_profile(
         std::string(reinterpret_cast<const char*>(data), size), "fuzz.json");
     const footfall::Rig rig = footfall::Rig::parse(rig_text, "rig.gltf", profile);
     footfall::fuzz::require_sound_pose(
-        footfall::animate::agent_motion(rig.data(), standing, character, times, 24.0));
+        footfall::animate::agent_motion(rig.data(), standing, character, flat, times, 24.0));
   } catch (const std::invalid_argument&) {
   }
   return 0;
