@@ -130,7 +130,7 @@ std::optional<std::string> standing_feet_problem(const Ground& ground,
   return std::nullopt;
 }
 
-/// Refuses a goal of an agent (`field`) standing_height_problem finds a problem with.
+/// Refuses a point of an agent (`field`) standing_height_problem finds a problem with.
 void check_standing_height(const Ground& ground, Vec2 p, std::optional<double> height,
                            double headroom, const std::string& field) {
   if (const auto problem = standing_height_problem(ground, p, height, headroom))
@@ -145,8 +145,7 @@ void check_on_ground(const Scenario& scenario, const Ground& ground,
     const AgentSpec& agent = scenario.agents[i];
     const std::string path = item("agents", i);
     const double headroom = planners.character(agent).body_height;
-    if (const auto problem = standing_height_problem(ground, agent.position, agent.height, headroom))
-      fail(child(path, "position"), *problem);
+    check_standing_height(ground, agent.position, agent.height, headroom, child(path, "position"));
     for (std::size_t k = 0; k < agent.goals.size(); ++k)
       check_standing_height(ground, agent.goals[k],
                             k < agent.goal_heights.size() ? agent.goal_heights[k] : std::nullopt,
