@@ -74,6 +74,19 @@ Scenario stairs_scenario(int up, int down);
 constexpr double kPlatformHeight = 0.6;
 Scenario ramp_scenario();
 
+/// A street at 0 (x from -12 to 12, y from -kStreetHalfWidth to
+/// kStreetHalfWidth) between two banks kBridgeHeight up (y out to +-12),
+/// their sides walls to the street; a footbridge's deck, 2 m wide and 0.2 m
+/// thick, spans the street from bank to bank at x from -1 to 1, the street
+/// passing under it; a flight of kBridgeRisers - 1 treads leads from the
+/// street up into the north bank at x from 6 to 8. `under` agents walk along
+/// the street under the deck, each way in turn (east on the south half);
+/// `over` cross it from the south bank to the north, two abreast, in rows
+/// 1 m apart. [m]
+constexpr int kBridgeRisers = 17;
+constexpr double kBridgeHeight = kBridgeRisers * kRiser, kStreetHalfWidth = 4.0;
+Scenario bridge_scenario(int under, int over);
+
 /// A height field of cells x cells squares of side `cell`, centred on the
 /// origin, raised as a round hill `height` high whose slope spreads over
 /// `spread` (a Gaussian of that deviation). [m]

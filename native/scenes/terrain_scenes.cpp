@@ -1,5 +1,5 @@
 // Footfall — built-in scenes on ground (scenes.hpp): a flight of stairs, a
-// platform with a ramp beside its edge, a hill.
+// platform with a ramp beside its edge, a street under a footbridge, a hill.
 #include <cmath>
 
 #include "footfall/ground/ground.hpp"
@@ -49,6 +49,38 @@ Scenario ramp_scenario() {
   ramp.mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
   scenario.ground.push_back(ramp);
   scenario.agents.push_back({"walker", {-3, -2}, 0.0, {{7, -2}}});
+  return scenario;
+}
+
+Scenario bridge_scenario(int under, int over) {
+  Scenario scenario;
+  constexpr double kEnd = 12.0, kDeck = 1.0, kStairsWest = 6.0, kStairsEast = 8.0;
+  const double w = kStreetHalfWidth, h = kBridgeHeight;
+  const double top = w + kTreadDepth * (kBridgeRisers - 1);  // the flight's top tread's end
+  scenario.ground.push_back(ground_prism(rectangle(-kEnd, -w, kEnd, w), 0.0));
+  scenario.ground.push_back(ground_prism(rectangle(-kEnd, -kEnd, kEnd, -w), h));
+  scenario.ground.push_back(ground_prism({{-kEnd, w}, {kStairsWest, w}, {kStairsWest, top},
+                                          {kStairsEast, top}, {kStairsEast, w}, {kEnd, w},
+                                          {kEnd, kEnd}, {-kEnd, kEnd}},
+                                         h));
+  scenario.ground.push_back(prism(rectangle(-kDeck, -w, kDeck, w), h, h - 0.2));
+  for (int k = 1; k < kBridgeRisers; ++k)
+    scenario.ground.push_back(ground_prism(
+        rectangle(kStairsWest, w + kTreadDepth * (k - 1), kStairsEast, w + kTreadDepth * k),
+        kRiser * k));
+  for (int n = 0; n < under; ++n) {
+    const bool east = n % 2 == 0;
+    const double back = 1.0 * (n / 2), lane = east ? -1.5 : 1.5;
+    scenario.agents.push_back({"under" + std::to_string(n),
+                               {east ? -10.0 + back : 10.0 - back, lane},
+                               east ? 0.0 : kPi,
+                               {{east ? 10.0 - back : -10.0 + back, lane}}});
+  }
+  for (int n = 0; n < over; ++n) {
+    const double back = 1.0 * (n / 2), lane = n % 2 == 0 ? -0.4 : 0.4;
+    scenario.agents.push_back(
+        {"over" + std::to_string(n), {lane, -6.0 - back}, 0.5 * kPi, {{lane, 9.0 - back}}});
+  }
   return scenario;
 }
 

@@ -21,6 +21,7 @@
 
 #include "animate_command.hpp"
 #include "bench_command.hpp"
+#include "footfall/crowd/navigation.hpp"
 #include "footfall/fullbody/body_check.hpp"
 #include "footfall/io/path_json.hpp"
 #include "footfall/io/plan_file.hpp"
@@ -58,9 +59,11 @@ const char* const kUsage =
     "                                         animated .glb, N keys a second (default 24)\n"
     "       footfall metrics PLAN             our figures and SteerBench's, per agent, at 20 Hz,\n"
     "                                         and the full-body check of limbs against obstacles\n"
-    "       footfall path SCENARIO --from X,Y --to X,Y --radius R\n"
-    "                                         shortest path for a disc of radius R, as JSON\n"
-    "       footfall path SCENARIO --from X,Y --to X,Y --behaviors\n"
+    "       footfall path SCENARIO --from X,Y[,Z] --to X,Y[,Z] --radius R\n"
+    "                                         shortest path for a disc of radius R, as JSON; on\n"
+    "                                         ground, Z picks the level where several lie over\n"
+    "                                         a point, and each point has its height\n"
+    "       footfall path SCENARIO --from X,Y[,Z] --to X,Y[,Z] --behaviors\n"
     "                                         the full-body planner's path, in sections of walk,\n"
     "                                         arms_in and side_step, as JSON\n"
     "       footfall bench [--repeat N]       time the planner on the standard workloads\n"
@@ -320,29 +323,47 @@ std::vector<std::string> parse_arguments(int argc, char** argv, Options& options
   return positional;
 }
 
-footfall::Vec2 parse_point(const std::string& flag, const std::string& text) {
-  const std::size_t comma = text.find(',');
-  if (comma == std::string::npos) throw UsageError(flag + ": expected X,Y, got " + user_text(text));
-  const footfall::Vec2 point{parse_number(flag, text.substr(0, comma)),
-                             parse_number(flag, text.substr(comma + 1))};
-  if (!footfall::in_world(point))
+/// A point X,Y or X,Y,Z: its plan position, and its height if given.
+struct ParsedPoint {
+  footfall::Vec2 at;
+  std::optional<double> z;
+};
+
+ParsedPoint parse_point(const std::string& flag, const std::string& text) {
+  std::vector<std::string> parts{""};
+  for (const char c : text) {
+    if (c == ',')
+      parts.emplace_back();
+    else
+      parts.back() += c;
+  }
+  if (parts.size() < 2 || parts.size() > 3)
+    throw UsageError(flag + ": expected X,Y or X,Y,Z, got " + user_text(text));
+  ParsedPoint point{{parse_number(flag, parts[0]), parse_number(flag, parts[1])}, std::nullopt};
+  if (parts.size() == 3) point.z = parse_number(flag, parts[2]);
+  if (!footfall::in_world(point.at) || (point.z && std::fabs(*point.z) > 1e9))
     throw UsageError(flag + ": must be within 1e9 m of the origin, got " + user_text(text));
   return point;
 }
 
-// footfall path SCENARIO --from X,Y --to X,Y (--radius R | --behaviors)
+// footfall path SCENARIO --from X,Y[,Z] --to X,Y[,Z] (--radius R | --behaviors)
 int print_path(int argc, char** argv) {
   std::string scenario;
   footfall::PathQuery query;
+  std::optional<double> from_z, to_z;
   bool from = false, to = false, radius = false, behaviors = false;
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
     const bool has_value = i + 1 < argc;
     if (arg == "--from" && has_value) {
-      query.from = parse_point(arg, argv[++i]);
+      const ParsedPoint point = parse_point(arg, argv[++i]);
+      query.from = point.at;
+      from_z = point.z;
       from = true;
     } else if (arg == "--to" && has_value) {
-      query.to = parse_point(arg, argv[++i]);
+      const ParsedPoint point = parse_point(arg, argv[++i]);
+      query.to = point.at;
+      to_z = point.z;
       to = true;
     } else if (arg == "--radius" && has_value) {
       query.radius = parse_number(arg, argv[++i]);
@@ -361,11 +382,18 @@ int print_path(int argc, char** argv) {
   if (scenario.empty() || !from || !to || radius == behaviors)
     throw UsageError("path needs SCENARIO, --from X,Y, --to X,Y and one of --radius R, --behaviors");
   const footfall::Scenario loaded = footfall::load_scenario_file(scenario);
-  footfall::NavMesh mesh = footfall::navmesh_of(loaded);
+  const footfall::LayeredNavigation navigation(loaded);
+  const int from_layer = navigation.layer_at(query.from, from_z, "--from");
+  const int to_layer = navigation.layer_at(query.to, to_z, "--to");
   if (!behaviors) {
-    std::cout << footfall::to_json(mesh.find_path(query)) << "\n";
+    std::cout << footfall::to_json(navigation.find_path(query, from_layer, to_layer)) << "\n";
     return 0;
   }
+  if (navigation.layers() > 1)
+    throw std::invalid_argument(
+        "--behaviors: the full-body planner does not yet find ways on ground with levels above "
+        "one another");
+  footfall::NavMesh mesh = footfall::navmesh_of(loaded);
   const footfall::CollisionScene scene(loaded.obstacles);
   const footfall::BodyModel body(loaded.character);
   footfall::BehavioralPlanner planner(mesh, scene, body, loaded.planner);

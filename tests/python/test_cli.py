@@ -328,6 +328,36 @@ def test_a_scenario_on_ground_plans_every_foot_at_the_height_of_its_tread(cli, t
         assert max(abs(b - a) for a, b in zip(heights, heights[1:])) == pytest.approx(0.17)
 
 
+BRIDGE = STAIRS.parent / "bridge.json"
+
+
+def test_path_answers_on_the_level_of_the_points_given(cli):
+    """tests/data/bridge.json: a street at 0 between banks 2.89 m up, a
+    footbridge's deck (x -1 to 1) spanning it from bank to bank, a flight
+    from the street up into the north bank at x 6-8."""
+    def path(start, end):
+        result = run(cli, "path", str(BRIDGE), "--from", start, "--to", end, "--radius", "0.25")
+        assert result.returncode == 0, result.stderr
+        return json.loads(result.stdout)
+
+    under = path("-10,0,0", "10,0,0")
+    assert under["length"] == pytest.approx(20.0) and {p[2] for p in under["points"]} == {0.0}
+    over = path("0,-8", "0,8")
+    assert over["length"] == pytest.approx(16.0) and {p[2] for p in over["points"]} == {2.89}
+    # From the deck to the street under it: round by the flight, 23 m.
+    down = path("0,0,2.9", "0,0.5,0")
+    assert down["points"][0] == [0.0, 0.0, 2.89] and down["points"][-1] == [0.0, 0.5, 0.0]
+    assert any(6 < x < 8 and y > 4 for x, y, _ in down["points"])
+    assert 22 < down["length"] < 25
+
+
+def test_path_between_two_levels_asks_for_the_height(cli):
+    result = run(cli, "path", str(BRIDGE), "--from", "0,0", "--to", "5,0", "--radius", "0.25")
+    assert result.returncode == 2 and result.stdout == ""
+    assert result.stderr == (
+        "footfall: --from: 2 levels at (0.00, 0.00), at 0.00 and 2.89 m: give its height (X,Y,Z)\n")
+
+
 def test_a_plan_on_ground_is_animated_by_plan_and_by_animate(cli, tmp_path):
     plan, glb, again = tmp_path / "plan.json", tmp_path / "crowd.glb", tmp_path / "again.glb"
     rig = pathlib.Path(__file__).resolve().parents[2] / "rigs" / "footfall_humanoid.glb"

@@ -13,6 +13,7 @@
 
 #include "crowd/behavior_sections.hpp"
 #include "crowd/character_planners.hpp"
+#include "footfall/crowd/navigation.hpp"
 #include "footfall/fullbody/body_model.hpp"
 #include "footfall/fullbody/step_body_test.hpp"
 #include "footfall/model/footstep.hpp"
@@ -31,8 +32,6 @@ using detail::item;
 using detail::user_text;
 
 namespace {
-
-constexpr double kGroundWallWidth = 0.02;  // [m] a ground wall's obstacle in the mesh
 
 // Refuses two agents whose standing bodies (torso circles and feet) overlap:
 // neither could take a step. Swept along x, so that a crowd of thousands
@@ -99,6 +98,10 @@ std::optional<std::string> standing_height_problem(const Ground& ground, Vec2 p,
   }
   const std::vector<GroundPoint> levels = ground.standable_at(p, headroom);
   if (levels.empty()) return "over no ground to stand on";
+  if (!height && levels.size() > 1)
+    return std::to_string(levels.size()) + " levels of ground under it, at " +
+           metres(levels[0].z) + " and " + metres(levels[1].z) +
+           ": give its height, [x, y, z]";
   if (height && std::none_of(levels.begin(), levels.end(), [&](const GroundPoint& level) {
         return std::fabs(level.z - *height) <= kHeightReach;
       }))
@@ -137,10 +140,11 @@ void check_standing_height(const Ground& ground, Vec2 p, std::optional<double> h
     fail(field, *problem);
 }
 
-/// Refuses levels above one another (stage 1 of docs/notes/terrain.md),
-/// and agents and goals off the ground or its height (check_standing_height).
-void check_on_ground(const Scenario& scenario, const Ground& ground,
-                     const detail::CharacterPlanners& planners) {
+/// Refuses agents and goals off the ground or its height
+/// (check_standing_height); returns the ground's layers (for the scenario's
+/// character).
+GroundLayers check_on_ground(const Scenario& scenario, const Ground& ground,
+                             const detail::CharacterPlanners& planners) {
   for (std::size_t i = 0; i < scenario.agents.size(); ++i) {
     const AgentSpec& agent = scenario.agents[i];
     const std::string path = item("agents", i);
@@ -151,83 +155,34 @@ void check_on_ground(const Scenario& scenario, const Ground& ground,
                             k < agent.goal_heights.size() ? agent.goal_heights[k] : std::nullopt,
                             headroom, item(child(path, "goals"), k));
   }
-  if (ground.empty()) return;
   const double headroom = scenario.character.body_height;
-  if (const std::optional<StackedLevels> stacked = ground.stacked_levels(headroom)) {
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "two levels over (%.2f, %.2f), at %.2f and %.2f m: ground with levels above "
-                  "one another is not planned on yet",
-                  stacked->at.x, stacked->at.y, stacked->lower, stacked->upper);
-    fail("ground", text);
-  }
+  GroundLayers layers = ground.layers(
+      std::min(scenario.character.max_step_up, scenario.character.max_step_down), headroom);
+  if (ground.empty()) return layers;
   for (std::size_t i = 0; i < scenario.agents.size(); ++i) {
     const AgentSpec& agent = scenario.agents[i];
     if (const auto problem = standing_feet_problem(ground, planners.character(agent),
                                                    agent.position, agent.facing))
       fail(child(item("agents", i), "position"), *problem);
   }
+  return layers;
 }
 
-// navmesh_of(), on the scenario's ground built once by its caller.
-NavMesh navmesh_on(const Scenario& scenario, const Ground& ground, double margin) {
-  if (!(margin > 0)) throw std::invalid_argument("navmesh_of: margin must be > 0");
-  Vec2 lo{0, 0}, hi{0, 0};
-  bool any = false;
-  auto grow = [&](Vec2 p) {
-    lo = any ? Vec2{std::min(lo.x, p.x), std::min(lo.y, p.y)} : p;
-    hi = any ? Vec2{std::max(hi.x, p.x), std::max(hi.y, p.y)} : p;
-    any = true;
-  };
-  const std::vector<double> cuts =
-      cut_heights(ground, scenario.obstacles, scenario.character.body_height);
-  std::vector<std::vector<Vec2>> footprints;
-  for (std::size_t i = 0; i < scenario.obstacles.size(); ++i) {
-    footprints.push_back(footprint(scenario.obstacles[i], cuts[i]));
-    for (Vec2 p : footprints.back()) grow(p);
-  }
-  // The ground's walls: its edges no one steps across (by the scenario's
-  // character: the lower of its step limits), as thin obstacles after them.
-  const double step = std::min(scenario.character.max_step_up, scenario.character.max_step_down);
-  for (const GroundWall& wall : ground.walls(step, scenario.character.body_height)) {
-    const Vec2 side = (0.5 * kGroundWallWidth / distance(wall.a, wall.b)) * perp(wall.b - wall.a);
-    footprints.push_back({wall.a - side, wall.b - side, wall.b + side, wall.a + side});
-    for (Vec2 p : footprints.back()) grow(p);
-  }
-  for (const AgentSpec& a : scenario.agents) {
-    grow(a.position);
-    for (Vec2 g : a.goals) grow(g);
-  }
-  // The margin stops at the world's edge: everything lies within it already.
-  const auto inside = [](double v) { return std::clamp(v, -kMaxCoordinate, kMaxCoordinate); };
-  NavMesh mesh({inside(lo.x - margin), inside(lo.y - margin)},
-               {inside(hi.x + margin), inside(hi.y + margin)});
-  // Obstacle i gets id i; one wholly above the head (no footprint) blocks
-  // nothing. Overlapping ones enter as their union, under the first one's id.
-  std::vector<int> merged_into(footprints.size(), -1);
-  std::map<int, Region> regions;
-  for (OverlapGroup& group : overlapping_groups(footprints)) {
-    for (int i : group.members) merged_into[i] = group.members.front();
-    regions[group.members.front()] = std::move(group.region);
-  }
-  for (std::size_t i = 0; i < footprints.size(); ++i) {
-    const std::string name =
-        i < scenario.obstacles.size()
-            ? "obstacles[" + std::to_string(i) + "]"
-            : "ground wall " + std::to_string(i - scenario.obstacles.size());
-    const int first = merged_into[i];
-    if (footprints[i].empty() || (first >= 0 && first != static_cast<int>(i)))
-      mesh.add_empty();
-    else if (first >= 0)
-      mesh.add_region(regions[first].outlines, regions[first].holes, name);
-    else
-      mesh.add_polygon(footprints[i], name);
-  }
-  return mesh;
+/// Refuses levels above one another, not planned on yet (stage 2 of
+/// docs/notes/terrain.md; their ways are found: LayeredNavigation).
+void check_one_layer(const Ground& ground, const GroundLayers& layers) {
+  if (layers.count() == 1) return;
+  const std::optional<StackedLevels> stacked = ground.stacked_levels(layers.headroom());
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "two levels over (%.2f, %.2f), at %.2f and %.2f m: ground with levels above "
+                "one another is not planned on yet",
+                stacked->at.x, stacked->at.y, stacked->lower, stacked->upper);
+  fail("ground", text);
 }
 
-// validate(), on the scenario's ground built once by its caller.
-void validate_on(const Scenario& scenario, const Ground& ground) {
+// validate(), on the scenario's ground built once by its caller; returns its layers.
+GroundLayers validate_on(const Scenario& scenario, const Ground& ground) {
   validate(scenario.character, "character");
   validate(scenario.planner, "planner");
   for (size_t i = 0; i < scenario.agents.size(); ++i) {
@@ -282,7 +237,7 @@ void validate_on(const Scenario& scenario, const Ground& ground) {
     }
   }
   check_standing_apart(scenario, planners);
-  check_on_ground(scenario, ground, planners);
+  return check_on_ground(scenario, ground, planners);
 }
 
 /// plan_scenario, with the agents that `fixed` (empty, or one per agent)
@@ -290,10 +245,11 @@ void validate_on(const Scenario& scenario, const Ground& ground) {
 Plan plan_among(const Scenario& scenario, const RunControl& control,
                 const std::vector<const AgentPlan*>& fixed) {
   const Ground ground(scenario.ground);
-  validate_on(scenario, ground);
+  const GroundLayers layers = validate_on(scenario, ground);
+  check_one_layer(ground, layers);
   const CollisionScene scene(scenario.obstacles);
   const detail::CharacterPlanners planners(scenario, &scene, &ground);
-  const NavMesh mesh = navmesh_on(scenario, ground, kNavMeshMargin);
+  const NavMesh mesh = layer_navmesh(scenario, layers, 0);
   Plan plan;
   plan.character = scenario.character;
   plan.obstacles = scenario.obstacles;
@@ -374,8 +330,5 @@ Plan replan_agents(const Scenario& scenario, const Plan& fixed,
   return plan_among(scenario, control, each);
 }
 
-NavMesh navmesh_of(const Scenario& scenario, double margin) {
-  return navmesh_on(scenario, Ground(scenario.ground), margin);
-}
 
 }  // namespace footfall

@@ -196,7 +196,9 @@ std::vector<GroundPoint> Ground::levels_at(Vec2 p) const {
 std::vector<GroundPoint> Ground::levels_of(const std::vector<const Face*>& here, Vec2 p) const {
   std::vector<GroundPoint> all;
   for (const Face* face : here)
-    if (face->walkable) all.push_back({height_of(*face, p), face->normal, face->surface});
+    if (face->walkable)
+      all.push_back({height_of(*face, p), face->normal, face->surface,
+                     static_cast<int>(face - faces_.data())});
   std::sort(all.begin(), all.end(),
             [](const GroundPoint& a, const GroundPoint& b) { return a.z < b.z; });
   std::vector<GroundPoint> levels;
@@ -231,7 +233,7 @@ std::optional<GroundPoint> Ground::level_near(Vec2 p, double z, double reach) co
     const double h = height_of(face, p);
     if (face.walkable && std::fabs(h - z) <= reach &&
         (!nearest || std::fabs(h - z) < std::fabs(nearest->z - z)))
-      nearest = GroundPoint{h, face.normal, face.surface};
+      nearest = GroundPoint{h, face.normal, face.surface, static_cast<int>(&face - faces_.data())};
   });
   return nearest;
 }
@@ -324,26 +326,58 @@ int Ground::soles_samples_held(const Sole& sole, double tolerance, double min_no
   return held;
 }
 
+namespace {
+
+/// An obstacle's outline points in plan and their middle: where the ground
+/// under it is looked for.
+std::vector<Vec2> outline_and_middle(const Obstacle& obstacle) {
+  std::vector<Vec2> outline = obstacle.polygon;
+  for (const Vec3 v : obstacle.mesh.vertices) outline.push_back(footfall::ground(v));
+  if (outline.empty()) return outline;
+  Vec2 middle{0, 0};
+  const double share = 1.0 / static_cast<double>(outline.size());
+  for (const Vec2 p : outline) middle = middle + share * p;
+  outline.push_back(middle);
+  return outline;
+}
+
+double top_of(const Obstacle& obstacle) {
+  if (!obstacle.is_mesh()) return obstacle.height;
+  double top = -std::numeric_limits<double>::infinity();
+  for (const Vec3 v : obstacle.mesh.vertices) top = std::max(top, v.z);
+  return top;
+}
+
+}  // namespace
+
 std::vector<double> cut_heights(const Ground& ground, const std::vector<Obstacle>& obstacles,
                                 double headroom) {
   std::vector<double> cuts;
   cuts.reserve(obstacles.size());
   for (const Obstacle& obstacle : obstacles) {
-    std::vector<Vec2> outline = obstacle.polygon;
-    for (const Vec3 v : obstacle.mesh.vertices) outline.push_back(footfall::ground(v));
-    double under = 0.0;
-    if (!ground.empty() && !outline.empty()) {
-      Vec2 middle{0, 0};
-      const double share = 1.0 / static_cast<double>(outline.size());
-      for (const Vec2 p : outline) middle = middle + share * p;
-      outline.push_back(middle);
-      under = -std::numeric_limits<double>::infinity();
-      for (const Vec2 p : outline)
+    double under = -std::numeric_limits<double>::infinity();
+    if (!ground.empty())
+      for (const Vec2 p : outline_and_middle(obstacle))
         for (const GroundPoint& level : ground.standable_at(p, headroom))
           under = std::max(under, level.z);
-      if (!std::isfinite(under)) under = 0.0;
-    }
-    cuts.push_back(under + headroom);
+    cuts.push_back((std::isfinite(under) ? under : 0.0) + headroom);
+  }
+  return cuts;
+}
+
+std::vector<double> cut_heights(const GroundLayers& layers, const std::vector<Obstacle>& obstacles,
+                                int layer) {
+  const double headroom = layers.headroom();
+  std::vector<double> cuts;
+  cuts.reserve(obstacles.size());
+  for (const Obstacle& obstacle : obstacles) {
+    double under = -std::numeric_limits<double>::infinity();
+    for (const Vec2 p : outline_and_middle(obstacle))
+      if (const std::optional<GroundPoint> level = layers.level_on(p, layer))
+        under = std::max(under, level->z);
+    // Off the layer's ground, or wholly under it (a pier under a deck): nothing to cut.
+    const bool apart = !std::isfinite(under) || top_of(obstacle) <= under + Ground::kSameLevel;
+    cuts.push_back(apart ? -std::numeric_limits<double>::infinity() : under + headroom);
   }
   return cuts;
 }

@@ -16,7 +16,9 @@ nlohmann::json points_json(const std::vector<Vec2>& points, std::size_t skip = 0
 }  // namespace
 
 std::string to_json(const PathResult& result) {
-  const nlohmann::json points = points_json(result.points);
+  nlohmann::json points = points_json(result.points);
+  for (std::size_t k = 0; k < result.heights.size() && k < points.size(); ++k)
+    points[k].push_back(result.heights[k]);
   return nlohmann::ordered_json{{"status", to_string(result.status)},
                         {"points", points},
                         {"length", result.length},

@@ -31,6 +31,7 @@ struct GroundPoint {
   double z = 0;   ///< [m]
   Vec3 normal;    ///< Unit, normal.z > 0.
   int surface = -1;  ///< Index into Ground::surfaces().
+  int face = -1;     ///< The walkable face, as Ground numbers them (GroundLayers::layer_of).
 };
 
 /// A sole on the ground: a rectangle `length` along `heading` by `width`,
@@ -47,6 +48,49 @@ struct Sole {
 /// standable level within a step across it.
 struct GroundWall {
   Vec2 a, b;  ///< [m]
+};
+
+/// Where two layers of the ground meet within a step: a run of an edge with
+/// one layer's ground on its side and the other's across it.
+struct GroundPortal {
+  Vec2 a, b;             ///< [m]
+  int from = 0, to = 0;  ///< The layer on the edge's side, and the one across.
+  Vec2 across;           ///< Unit, in plan from `from`'s side to `to`'s.
+};
+
+class Ground;
+
+/// Standable ground split into layers, each with at most one level over any
+/// point: one layer where no levels lie above one another; a street and a
+/// bridge's deck over it in two, joined by portals where the deck meets its
+/// stairs or ramps. Each layer has its own walls, which close round its ground
+/// (and across its portals). Refers to the ground it was made from.
+class GroundLayers {
+ public:
+  /// More layers are refused: each one is a navigation mesh of the whole scene.
+  static constexpr int kMaxLayers = 64;
+
+  int count() const { return static_cast<int>(walls_.size()); }
+  /// The layer of a standable level (a point from standable_at or level_on).
+  int layer_of(const GroundPoint& point) const {
+    return face_layer_.empty() || point.face < 0 ? 0 : face_layer_[point.face];
+  }
+  /// The standable level of `layer` over `p`, if any.
+  std::optional<GroundPoint> level_on(Vec2 p, int layer) const;
+  /// The walls of a layer: edges of its ground no one on it steps across
+  /// (Ground::walls, each layer on its own).
+  const std::vector<GroundWall>& walls(int layer) const { return walls_.at(layer); }
+  const std::vector<GroundPortal>& portals() const { return portals_; }
+  /// The headroom the layers were found for. [m]
+  double headroom() const { return headroom_; }
+
+ private:
+  friend class Ground;
+  const Ground* ground_ = nullptr;
+  double headroom_ = 0;
+  std::vector<int> face_layer_;  ///< Per face; empty with one layer.
+  std::vector<std::vector<GroundWall>> walls_;
+  std::vector<GroundPortal> portals_;
 };
 
 /// Two standable levels over one point.
@@ -98,6 +142,12 @@ class Ground {
   /// along each walkable face's edges, 2 cm inside it (where two faces
   /// overlap, one's edge runs inside the other).
   std::optional<StackedLevels> stacked_levels(double headroom) const;
+  /// The ground's layers for a body `headroom` tall stepping at most
+  /// `max_step` up or down: faces standable over one point (found as
+  /// stacked_levels finds them) lie in different layers, each face in the
+  /// first layer it fits. Throws std::invalid_argument ("ground: ...") past
+  /// GroundLayers::kMaxLayers.
+  GroundLayers layers(double max_step, double headroom) const;
   /// The level over `p` nearest the height `z`, if one lies within `reach`.
   std::optional<GroundPoint> level_near(Vec2 p, double z, double reach) const;
   /// The share of `sole` (sampled on a 7 x 4 grid) over a walkable face
@@ -131,10 +181,15 @@ class Ground {
 
   void add_face(Face face, Vec2 low, Vec2 high);
   /// Calls visit(a, b, za, zb, outward) for each edge of each walkable face
-  /// but those a mesh's two walkable triangles share: its ends in plan and
-  /// their heights, and the unit normal pointing out of the face.
+  /// but those a mesh's two walkable triangles (faces f and g) share where
+  /// keep_shared(f, g) is false: its ends in plan and their heights, and the
+  /// unit normal pointing out of the face.
+  template <class Visit, class KeepShared>
+  void visit_walkable_edges(Visit&& visit, KeepShared&& keep_shared) const;
+  /// Calls visit(p) at points every 5 cm along each walkable face's edges
+  /// (but those a mesh's walkable triangles share), 2 cm inside the face.
   template <class Visit>
-  void visit_walkable_edges(Visit&& visit) const;
+  void visit_inner_edge_samples(Visit&& visit) const;
   /// The samples of support()'s grid held, counting until `may_miss` are
   /// not (then fewer than all that are held may be counted).
   int soles_samples_held(const Sole& sole, double tolerance, double min_normal_z,
@@ -164,5 +219,10 @@ class Ground {
 /// their middle), or above 0 where there is none or no ground at all.
 std::vector<double> cut_heights(const Ground& ground, const std::vector<Obstacle>& obstacles,
                                 double headroom);
+/// The same for the ground of one of several layers: the layer's ground
+/// under each obstacle; -infinity (it blocks nothing on the layer) where it
+/// stands off that ground or wholly under it (a bridge's pier under its deck).
+std::vector<double> cut_heights(const GroundLayers& layers, const std::vector<Obstacle>& obstacles,
+                                int layer);
 
 }  // namespace footfall

@@ -8,7 +8,8 @@
 
 namespace footfall {
 
-/// A path result as one line of JSON: {"status", "points", "length", "min_clearance"}.
+/// A path result as one line of JSON: {"status", "points", "length",
+/// "min_clearance"}; its points [x, y, z] where it has heights, else [x, y].
 std::string to_json(const PathResult& result);
 /// An annotated path as one line of JSON: the same fields (the points of
 /// every section joined), then "sections" [{"behavior", "clearance",

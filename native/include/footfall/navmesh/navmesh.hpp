@@ -37,6 +37,9 @@ struct PathResult {
   std::vector<Vec2> points;
   double length = 0.0;         ///< Length of the polyline. [m] [>= 0]
   double min_clearance = 0.0;  ///< Smallest distance from the polyline to an obstacle. [m]
+  /// Per point, the ground's height under it, for a way over a scenario's
+  /// ground (LayeredNavigation); empty otherwise. [m]
+  std::vector<double> heights;
 };
 
 /// One triangle of the mesh, for drawing.
