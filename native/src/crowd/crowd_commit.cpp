@@ -11,9 +11,9 @@ namespace {
 /// posture its last step holds: every other plan was checked against it
 /// standing so past that end. Nothing moves, so nothing is checked (labelled
 /// anew, a wait could stand side-on where its rest stood arms in, and fail).
-/// On ground the foot keeps its orientations too: turned to the facing, a
-/// sole on a tread may reach over its nosing or into the riser behind (its
-/// height is set with every step's once the plan is made).
+/// On ground the foot keeps its height and orientations too: turned to the
+/// facing, a sole on a tread may reach over its nosing or into the riser
+/// behind.
 StepResult stand_on(const Walker& w, const ValidityChecker& checks, double duration) {
   const FootstepAction wait_there{StepKind::kStop, other(w.state.last_foot), w.state.facing, 0.0,
                                   duration};
@@ -21,6 +21,7 @@ StepResult stand_on(const Walker& w, const ValidityChecker& checks, double durat
   if (!w.plan.footsteps.empty()) wait.step.behavior = w.plan.footsteps.back().behavior;
   if (checks.on_ground()) {
     const int foot = static_cast<int>(wait.step.foot);
+    wait.step.foot_height = wait.state.foot_heights[foot] = w.state.foot_heights[foot];
     wait.step.orientation_interval = wait.state.foot_orientation[foot] =
         w.state.foot_orientation[foot];
     wait.step.foot_orientation = w.state.foot_orientation[foot].inner;

@@ -668,7 +668,8 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     // check against it), its planner's: not owned, it outlives the run.
     w.plan.character = std::shared_ptr<const CharacterParams>(std::shared_ptr<void>(),
                                                               &w.planner->character());
-    w.plan.start = standing_state(agents[i].position, agents[i].facing, w.planner->character());
+    w.plan.start =
+        w.planner->validity().standing(agents[i].position, agents[i].facing, agents[i].height);
     w.state = w.plan.start;
     w.bounds = std::make_shared<const PlanBounds>(w.plan, w.planner->character());
     w.start_at = agents[i].start_delay;

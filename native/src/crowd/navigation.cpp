@@ -203,7 +203,7 @@ PathResult LayeredNavigation::find_path(const PathQuery& query, int from_layer,
     if (stops[s].twin >= 0) {
       const Stop& twin = stops[stops[s].twin];
       PathResult jump{PathStatus::kFound, {stops[s].at, twin.at}, distance(stops[s].at, twin.at),
-                      query.radius};
+                      query.radius, {}};
       reach(stops[s].twin, std::move(jump));
     }
     for (int t = 1; t < static_cast<int>(stops.size()); ++t) {

@@ -110,18 +110,29 @@ std::optional<std::string> standing_height_problem(const Ground& ground, Vec2 p,
   return std::nullopt;
 }
 
-/// Why a body standing at `position` facing `facing` has a foot that is
-/// not on a foothold (each foot as a foothold of its own, beside the other,
-/// swung from nowhere); nothing if both are.
+/// Why a body standing at `position` facing `facing`, on the ground near
+/// `height` (standing_on_ground), has a foot that is not on a foothold (each
+/// foot as a foothold of its own, beside the other, swung from nowhere);
+/// nothing if both are.
 std::optional<std::string> standing_feet_problem(const Ground& ground,
                                                  const CharacterParams& character, Vec2 position,
-                                                 double facing) {
-  const FootstepState standing = standing_state(position, facing, character);
+                                                 double facing, std::optional<double> height) {
+  const FootstepState standing = standing_on_ground(ground, character, position, facing, height);
+  const auto at = [&](int f) {
+    return Vec3{standing.feet[f].x, standing.feet[f].y, standing.foot_heights[f]};
+  };
+  // A foot over nothing first: the other's fault would be its rise from nowhere.
+  std::array<FootholdFault, 2> faults{};
+  for (int f = 0; f < 2; ++f)
+    faults[f] = ground.standable_at(standing.feet[f], character.body_height).empty()
+                    ? FootholdFault::kOffGround
+                    : FootholdFault::kNone;
+  for (int f = 0; f < 2; ++f)
+    if (faults[0] == FootholdFault::kNone && faults[1] == FootholdFault::kNone)
+      faults[f] = foothold_fault(ground, character, standing.feet[f], standing.foot_orientation[f],
+                                 at(1 - f), at(f));
   for (const Foot foot : {Foot::kLeft, Foot::kRight}) {
-    const int f = static_cast<int>(foot);
-    const FootholdFault fault =
-        foothold_fault(ground, character, standing.feet[f], standing.foot_orientation[f],
-                       standing.feet[1 - f], standing.feet[f]);
+    const FootholdFault fault = faults[static_cast<int>(foot)];
     if (fault != FootholdFault::kNone)
       return std::string("the standing agent's ") + to_string(foot) +
              " foot is not on the ground (" +
@@ -162,7 +173,7 @@ GroundLayers check_on_ground(const Scenario& scenario, const Ground& ground,
   for (std::size_t i = 0; i < scenario.agents.size(); ++i) {
     const AgentSpec& agent = scenario.agents[i];
     if (const auto problem = standing_feet_problem(ground, planners.character(agent),
-                                                   agent.position, agent.facing))
+                                                   agent.position, agent.facing, agent.height))
       fail(child(item("agents", i), "position"), *problem);
   }
   return layers;
@@ -264,14 +275,6 @@ Plan plan_among(const Scenario& scenario, const RunControl& control,
     return sections.plan(agents[i], from, first_goal);
   };
   plan.agents = plan_agents(agents, each, &mesh, control, fixed, annotate);
-  // Every foothold was checked on its one standable level: that is its height.
-  if (!ground.empty())
-    for (std::size_t i = 0; i < agents.size(); ++i)
-      for (Footstep& step : plan.agents[i].footsteps) {
-        const auto under =
-            ground.standing_on(step.foot_position, planners.character(agents[i]).body_height);
-        if (under) step.foot_height = under->z;
-      }
   // One that stops short stands at its last goal: none of the scenario's.
   for (std::size_t i = 0; i < agents.size(); ++i) {
     if (!narrowest[i]) continue;
@@ -296,7 +299,7 @@ std::optional<std::string> standing_problem(const Ground& ground, const Characte
   if (auto problem = standing_height_problem(ground, position, height, character.body_height))
     return problem;
   if (ground.empty()) return std::nullopt;
-  return standing_feet_problem(ground, character, position, facing);
+  return standing_feet_problem(ground, character, position, facing, height);
 }
 
 Plan plan_scenario(const Scenario& scenario, const RunControl& control) {

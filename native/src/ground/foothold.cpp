@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace footfall {
@@ -22,17 +23,32 @@ Sole sole_of(const CharacterParams& character, Vec2 foot, const GroundPoint& gro
           character.sole_width};
 }
 
+std::optional<GroundPoint> foothold_level(const Ground& ground, const CharacterParams& character,
+                                          Vec2 foot, double beside) {
+  std::optional<GroundPoint> nearest;
+  for (const GroundPoint& level : ground.standable_at(foot, character.body_height))
+    if (!nearest || std::fabs(level.z - beside) < std::fabs(nearest->z - beside)) nearest = level;
+  return nearest;
+}
+
+FootstepState standing_on_ground(const Ground& ground, const CharacterParams& character,
+                                 Vec2 position, double facing, std::optional<double> height) {
+  FootstepState state = standing_state(position, facing, character);
+  if (ground.empty()) return state;
+  const double near = height.value_or(-std::numeric_limits<double>::infinity());
+  for (int f = 0; f < 2; ++f)
+    if (const auto level = foothold_level(ground, character, state.feet[f], near))
+      state.foot_heights[f] = level->z;
+  return state;
+}
+
 FootholdFault foothold_fault(const Ground& ground, const CharacterParams& character, Vec2 foot,
-                             const OrientationInterval& turns, Vec2 other, Vec2 from) {
+                             const OrientationInterval& turns, Vec3 other, Vec3 from) {
   const double min_normal_z = std::cos(character.max_slope);
-  const auto standing = [&](Vec2 p) { return ground.standing_on(p, character.body_height); };
-  const std::optional<GroundPoint> here = standing(foot);
+  const std::optional<GroundPoint> here = foothold_level(ground, character, foot, other.z);
   if (!here || here->normal.z < min_normal_z) return FootholdFault::kOffGround;
-  if (const std::optional<GroundPoint> beside = standing(other)) {
-    const double rise = here->z - beside->z;
-    if (rise > character.max_step_up || -rise > character.max_step_down)
-      return FootholdFault::kRise;
-  }
+  const double rise = here->z - other.z;
+  if (rise > character.max_step_up || -rise > character.max_step_down) return FootholdFault::kRise;
   const double middle = turns.inner + 0.5 * wrap_angle(turns.outer - turns.inner);
   for (const double orientation : {turns.inner, turns.outer, middle}) {
     if (orientation != turns.inner && turns.outer == turns.inner) break;
@@ -40,13 +56,13 @@ FootholdFault foothold_fault(const Ground& ground, const CharacterParams& charac
     if (!ground.holds(sole, kSoleTolerance, min_normal_z, character.sole_support))
       return FootholdFault::kUnsupported;
   }
-  const std::optional<GroundPoint> lifted = standing(from);
-  if (!lifted || from == foot) return FootholdFault::kNone;
-  const double top = std::max(lifted->z, here->z);
-  const int samples = static_cast<int>(std::ceil(distance(from, foot) / kSwingSpacing));
+  const Vec2 lifted = footfall::ground(from);
+  if (lifted == foot) return FootholdFault::kNone;
+  const double top = std::max(from.z, here->z);
+  const int samples = static_cast<int>(std::ceil(distance(lifted, foot) / kSwingSpacing));
   for (int i = 1; i < samples; ++i) {
     const double t = static_cast<double>(i) / samples;
-    for (const GroundPoint& level : ground.levels_at(from + t * (foot - from)))
+    for (const GroundPoint& level : ground.levels_at(lifted + t * (foot - lifted)))
       if (level.z > top + kSoleTolerance && level.z <= top + kSwingReach)
         return FootholdFault::kSwing;
   }

@@ -13,6 +13,7 @@ FootstepState state_after(const FootstepState& state, const Footstep& step) {
   next.com_velocity = step.com_velocity_end;
   next.last_foot = step.foot;
   next.feet[static_cast<int>(step.foot)] = step.foot_position;
+  next.foot_heights[static_cast<int>(step.foot)] = step.foot_height;
   next.foot_orientation[static_cast<int>(step.foot)] = step.orientation_interval;
   next.facing = step.phi;
   next.time = step.end_time;
@@ -447,6 +448,7 @@ std::array<Footstep, 2> split_set_off(const Footstep& walk, const FootstepState&
   start.foot = other(walk.foot);
   start.end_time = at;
   start.foot_position = before.feet[static_cast<int>(start.foot)];
+  start.foot_height = before.foot_heights[static_cast<int>(start.foot)];
   start.orientation_interval = before.foot_orientation[static_cast<int>(start.foot)];
   start.foot_orientation = start.orientation_interval.inner;
   start.com_end = cut.position;

@@ -33,7 +33,23 @@ constexpr double kCellSpeed = 0.1;
 constexpr std::size_t kMaxSearchNodes = 500000;
 constexpr double kDuplicateTurn = 1e-3;    // [rad] goal-directed turn equal to a tabled one
 
-std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, Foot last_foot) {
+// A number for the level of ground at height `z`: two standable levels over
+// one point, more than `headroom` apart, differ in it; ground lower than
+// `headroom` (and the floor z = 0) is all level 0. 14 bits.
+std::uint64_t level_bucket(double z, double headroom) {
+  return static_cast<std::uint64_t>(
+             static_cast<std::int64_t>(std::clamp(std::floor(z / headroom), -1e6, 1e6))) &
+         0x3FFF;
+}
+
+// The level_bucket of the ground under the foot `state` stands on (the one
+// its last step did not plant: that one's height is found as its step is checked).
+std::uint64_t stance_level(const FootstepState& state, double headroom) {
+  return level_bucket(state.foot_heights[1 - static_cast<int>(state.last_foot)], headroom);
+}
+
+std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, Foot last_foot,
+                        std::uint64_t level) {
   // Clamped before the conversion, so that far-away coordinates stay defined.
   const auto q = [](double v, double cell) {
     return static_cast<std::uint64_t>(
@@ -43,7 +59,7 @@ std::uint64_t state_key(Vec2 com, double heading, double speed, bool standing, F
   return (q(com.x, kCellPosition) & 0xFFFF) | (q(com.y, kCellPosition) & 0xFFFF) << 16 |
          (q(wrap_angle(heading) + kPi, kCellHeading) & 0x7F) << 32 |
          (q(speed, kCellSpeed) & 0xFF) << 39 | (standing ? 1ull : 0ull) << 47 |
-         static_cast<std::uint64_t>(last_foot) << 48 | 1ull << 63;
+         static_cast<std::uint64_t>(last_foot) << 48 | level << 49 | 1ull << 63;
 }
 
 // True if `step`, taken from `before`, keeps clear of `others`; a walking
@@ -211,14 +227,16 @@ FootstepPlanner::~FootstepPlanner() = default;
 double FootstepPlanner::heuristic(const FootstepState& state, Vec2 goal) const {
   const double remaining = std::max(0.0, distance(state.com, goal) - params().goal_tolerance);
   // On ground, and the climbs on the way there.
-  return expected_step_cost_ * remaining / expected_step_length_ + climb_to(state.com, goal);
+  // From the stance foot's ground (the other one's is found when its step is checked).
+  const double z = state.foot_heights[1 - static_cast<int>(state.last_foot)];
+  return expected_step_cost_ * remaining / expected_step_length_ + climb_to(state.com, z, goal);
 }
 
-double FootstepPlanner::climb_to(Vec2 from, Vec2 goal) const {
+double FootstepPlanner::climb_to(Vec2 from, double z, Vec2 goal) const {
   const ValidityChecker::Impl& checks = validity_.impl();
   if (!checks.on_ground()) return 0.0;
-  // Found once for each 0.1 m cell of `from`, from its middle (the same value
-  // whatever found it first, on any thread).
+  // Found once for each 0.1 m cell of `from` and level, from its middle (the
+  // same value whatever found it first, on any thread).
   constexpr double kCell = 0.1;  // [m]
   thread_local std::unordered_map<std::uint64_t, double> climbs;
   thread_local Vec2 climbs_to{std::numeric_limits<double>::quiet_NaN(), 0.0};
@@ -228,13 +246,15 @@ double FootstepPlanner::climb_to(Vec2 from, Vec2 goal) const {
   }
   const auto ix = static_cast<std::int64_t>(std::floor(from.x / kCell));
   const auto iy = static_cast<std::int64_t>(std::floor(from.y / kCell));
-  const std::uint64_t key = static_cast<std::uint64_t>(static_cast<std::uint32_t>(ix)) << 32 |
-                            static_cast<std::uint32_t>(iy);
+  const std::uint64_t level = level_bucket(z, checks.character_.body_height);
+  const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(ix)) << 32 |
+                             static_cast<std::uint32_t>(iy)) ^
+                            level << 50;
   const auto found = climbs.find(key);
   if (found != climbs.end()) return found->second;
   const Vec2 middle{(static_cast<double>(ix) + 0.5) * kCell,
                     (static_cast<double>(iy) + 0.5) * kCell};
-  return climbs.emplace(key, checks.climb_cost(middle, goal)).first->second;
+  return climbs.emplace(key, checks.climb_cost(middle, z, goal)).first->second;
 }
 
 void FootstepPlanner::land_on_ground(Search& search, int index, Vec2 goal) const {
@@ -283,7 +303,9 @@ void FootstepPlanner::expand(Search& search, int index, Vec2 goal) const {
     Footstep step = next.step;
     if (search.whole && !search.whole->label(step)) return;
     if (!search.seen.insert(state_key(next.state.com, heading_after, speed,
-                                      next.state.standing(), next.step.foot)).second) {
+                                      next.state.standing(), next.step.foot,
+                                      stance_level(next.state, character.body_height)))
+             .second) {
       return;
     }
     search.push(Node{next.state, g + step.cost.total(), heuristic(next.state, goal), index, step},
@@ -434,7 +456,8 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
   search.seen.clear();
   const detail::Heading start_heading = detail::heading_of(start);
   search.seen.insert(state_key(start.com, start_heading.angle, start_heading.speed,
-                               start.standing(), start.last_foot));
+                               start.standing(), start.last_foot,
+                               stance_level(start, checks.character_.body_height)));
   search.push(Node{start, 0.0, heuristic(start, goal), -1, Footstep{}}, params.heuristic_weight);
 
   int goal_node = -1;
@@ -456,7 +479,7 @@ SearchResult FootstepPlanner::plan(const FootstepState& start, Vec2 goal,
           land_on_ground(search, current, goal);
         continue;
       }
-      checks.place_on_ground(step);
+      checks.place_on_ground(step, before, search.nodes[current].state);
       // The ground's cost is found for the steps taken off the open list
       // only: one that changes is put back at its true cost.
       if (!search.nodes[current].costed) {

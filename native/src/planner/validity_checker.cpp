@@ -180,6 +180,11 @@ bool ValidityChecker::off_ground(const Footstep& step, const FootstepState& befo
   return impl_->off_ground(step, before);
 }
 bool ValidityChecker::on_ground() const { return impl_->on_ground(); }
+FootstepState ValidityChecker::standing(Vec2 position, double facing,
+                                        std::optional<double> height) const {
+  if (!impl_->on_ground()) return standing_state(position, facing, impl_->character_);
+  return standing_on_ground(*impl_->ground_, impl_->character_, position, facing, height);
+}
 
 ValidityChecker::Impl::Impl(const CharacterParams& character, const PlannerParams& planner,
                             const ObstacleMap& obstacles, const Ground* ground)
@@ -261,29 +266,32 @@ FootholdFault ValidityChecker::Impl::foothold(const Footstep& step,
                                               const FootstepState& before) const {
   if (ground_ == nullptr) return FootholdFault::kNone;
   const int planted = static_cast<int>(step.foot);
+  const auto at = [&](int foot) {
+    return Vec3{before.feet[foot].x, before.feet[foot].y, before.foot_heights[foot]};
+  };
   return foothold_fault(*ground_, character_, step.foot_position, step.orientation_interval,
-                        before.feet[1 - planted], before.feet[planted]);
+                        at(1 - planted), at(planted));
 }
 
-double ValidityChecker::Impl::ground_height(Vec2 p) const {
-  const std::optional<GroundPoint> under = ground_->standing_on(p, character_.body_height);
+double ValidityChecker::Impl::ground_height(Vec2 p, double near) const {
+  const std::optional<GroundPoint> under = foothold_level(*ground_, character_, p, near);
   return under ? under->z : 0.0;
 }
 
 double ValidityChecker::Impl::ground_cost(const Footstep& step, const FootstepState& before) const {
   if (ground_ == nullptr) return 0.0;
-  const double rise = ground_height(step.foot_position) -
-                      ground_height(before.feet[1 - static_cast<int>(step.foot)]);
+  const double rise = step.foot_height - before.foot_heights[1 - static_cast<int>(step.foot)];
   return terrain_cost(character_.mass, distance(step.com_start, step.com_end), rise);
 }
 
-double ValidityChecker::Impl::climb_cost(Vec2 from, Vec2 to) const {
+double ValidityChecker::Impl::climb_cost(Vec2 from, double z, Vec2 to) const {
   if (ground_ == nullptr) return 0.0;
   constexpr double kSpacing = 0.5;  // [m]
   const int pieces = std::max(1, static_cast<int>(std::ceil(distance(from, to) / kSpacing)));
-  double ascent = 0.0, before = ground_height(from);
+  double ascent = 0.0, before = ground_height(from, z);
   for (int k = 1; k <= pieces; ++k) {
-    const double here = ground_height(from + (static_cast<double>(k) / pieces) * (to - from));
+    const double here =
+        ground_height(from + (static_cast<double>(k) / pieces) * (to - from), before);
     ascent += std::max(0.0, here - before);
     before = here;
   }
@@ -542,8 +550,8 @@ StepResult ValidityChecker::Impl::stop_step(const FootstepState& state, double f
   StepResult stop = create_footstep(
       state, {StepKind::kStop, other(state.last_foot), facing, 0.0, duration}, character_);
   if (!stop.valid()) return stop;
+  place_on_ground(stop.step, state, stop.state);
   stop.step.cost.terrain = ground_cost(stop.step, state);
-  place_on_ground(stop.step);
   if (whole != nullptr) whole->label(stop.step);  // a stop goes anywhere
   if (step_touches_agents(stop.step, state, others) ||
       blocked(stop.step, state, whole != nullptr && whole->shoulders_in_3d()) ||
@@ -570,7 +578,7 @@ bool ValidityChecker::Impl::free_to_set_off(const FootstepState& rested,
   if (in_3d ? collides(rested, whole) : !room_to_turn(rested.com)) return false;
   const auto clear = [&](StepResult step, double, const detail::StepShape&) {
     if (!step.valid() || (whole != nullptr && !whole->label(step.step))) return false;
-    place_on_ground(step.step);
+    place_on_ground(step.step, rested, step.state);
     return !blocked(step.step, rested, in_3d) &&
            (whole == nullptr || whole->passes(step.step, rested));
   };

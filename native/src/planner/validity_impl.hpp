@@ -63,17 +63,22 @@ struct ValidityChecker::Impl {
   // With ground, `step`'s terrain_cost from `before`: the body rises as the
   // stance moves from the other foot's ground to this foot's. 0 without.
   double ground_cost(const Footstep& step, const FootstepState& before) const;
-  // With ground, the climbs along the straight line from `from` to `to`
-  // (sampled every 0.5 m; descents count nothing) at stairs' cost, 4.5 times
-  // their potential energy (more than a gentle slope's: the search leans on
-  // it). 0 without ground. The search's heuristic adds it.
-  double climb_cost(Vec2 from, Vec2 to) const;
+  // With ground, the climbs along the straight line from `from`, on ground
+  // near the height `z`, to `to` (sampled every 0.5 m, each sample on the
+  // level nearest the one before; descents count nothing) at stairs' cost,
+  // 4.5 times their potential energy (more than a gentle slope's: the search
+  // leans on it). 0 without ground. The search's heuristic adds it.
+  double climb_cost(Vec2 from, double z, Vec2 to) const;
   bool on_ground() const { return ground_ != nullptr; }
-  // The standable ground's height under `p`; 0 where there is none.
-  double ground_height(Vec2 p) const;
-  // With ground, sets `step`'s foot_height, where its body is posed.
-  void place_on_ground(Footstep& step) const {
-    if (ground_ != nullptr) step.foot_height = ground_height(step.foot_position);
+  // The standable ground's height under `p` nearest `near`; 0 where there is none.
+  double ground_height(Vec2 p, double near) const;
+  // With ground, sets `step`'s foot_height (where its body is posed) and
+  // that of its foot in `after`: its foothold_level beside the other foot.
+  void place_on_ground(Footstep& step, const FootstepState& before, FootstepState& after) const {
+    if (ground_ == nullptr) return;
+    const int planted = static_cast<int>(step.foot);
+    step.foot_height = ground_height(step.foot_position, before.foot_heights[1 - planted]);
+    after.foot_heights[planted] = step.foot_height;
   }
   // hits_obstacles or off_ground: what no step may do, whoever is about.
   bool blocked(const Footstep& step, const FootstepState& before, bool shoulders_in_3d) const {

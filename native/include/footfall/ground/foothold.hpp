@@ -2,6 +2,8 @@
 // footstep planner applies to its steps and `footfall metrics` to a plan's.
 #pragma once
 
+#include <optional>
+
 #include "footfall/model/footstep.hpp"
 #include "footfall/model/params.hpp"
 #include "footfall/ground/ground.hpp"
@@ -27,15 +29,30 @@ enum class FootholdFault {
   kSwing,        ///< The swinging foot passes over ground above the higher foothold.
 };
 
+/// The standable level under a foot planted at `foot` beside a foot on
+/// ground at the height `beside`: of the levels there (a street and a deck
+/// over it), the nearest to `beside`; on ground of one level at every point,
+/// the only one.
+std::optional<GroundPoint> foothold_level(const Ground& ground, const CharacterParams& character,
+                                          Vec2 foot, double beside);
+
+/// A body of `character` standing at `position` facing `facing`
+/// (standing_state) on the ground: each foot on the standable level nearest
+/// `height` where given, else on the lowest (the only one, in a checked
+/// scenario). Without ground, standing_state itself.
+FootstepState standing_on_ground(const Ground& ground, const CharacterParams& character,
+                                 Vec2 position, double facing, std::optional<double> height);
+
 /// A foot planted at `foot`, turned anywhere in `turns` (its ends and its
 /// middle are tested; inner == outer: one orientation), while the other foot
-/// stands at `other`, having swung from `from`, on ground of one level at
-/// every point: the sole of `character` (sole_length by sole_width) held for
-/// at least sole_support within 2 cm of its plane on a slope within
-/// max_slope, the rise within the step limits, and the swing over nothing
-/// more than 2 cm above the higher of its two footholds (a tread's nosing, a
-/// kerb; ground over 0.5 m above is an overhang, the body's business).
+/// stands at `other` (its z: the ground's height under it), having swung
+/// from `from` (as `other`): on its foothold_level, the sole of `character`
+/// (sole_length by sole_width) held for at least sole_support within 2 cm of
+/// its plane on a slope within max_slope, the rise within the step limits,
+/// and the swing over nothing more than 2 cm above the higher of its two
+/// footholds (a tread's nosing, a kerb; ground over 0.5 m above is an
+/// overhang, the body's business).
 FootholdFault foothold_fault(const Ground& ground, const CharacterParams& character, Vec2 foot,
-                             const OrientationInterval& turns, Vec2 other, Vec2 from);
+                             const OrientationInterval& turns, Vec3 other, Vec3 from);
 
 }  // namespace footfall

@@ -97,6 +97,10 @@ struct FootstepState {
   Foot last_foot = Foot::kRight;                        ///< Foot placed by the last step.
   std::array<Vec2, 2> feet;                             ///< Foot positions, indexed by Foot. [m]
   std::array<OrientationInterval, 2> foot_orientation;  ///< Valid orientations per foot.
+  /// The ground's height under each foot, indexed by Foot; 0 on flat ground.
+  /// On ground, the footstep planner sets a planted foot's when it checks the
+  /// foothold (each foot's level is the one within a step of the other's). [m]
+  std::array<double, 2> foot_heights{};
   double facing = 0;  ///< Torso facing: phi of the last walking step. [rad]
   double time = 0;    ///< Time at the end of the step. [s]
   /// True before the first step: no foot has swung yet, so the first step may

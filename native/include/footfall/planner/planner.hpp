@@ -138,9 +138,10 @@ class FootstepPlanner {
   /// riser too high) is taken again landing a little nearer or further,
   /// where the ground holds it: a stair's tread is barely longer than a sole.
   void land_on_ground(Search& search, int index, Vec2 goal) const;
-  /// On ground, the cost of the climbs on the straight way from `from` to
-  /// `goal` (ValidityChecker's climb_cost, kept per 0.1 m cell); 0 without.
-  double climb_to(Vec2 from, Vec2 goal) const;
+  /// On ground, the cost of the climbs on the straight way from `from`, on
+  /// the level near the height `z`, to `goal` (ValidityChecker's climb_cost,
+  /// kept per 0.1 m cell and level); 0 without.
+  double climb_to(Vec2 from, double z, Vec2 goal) const;
 
   ValidityChecker validity_;
   const StepBodyTest* body_ = nullptr;

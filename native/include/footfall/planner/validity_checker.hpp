@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "footfall/model/footstep.hpp"
@@ -161,11 +162,15 @@ class ValidityChecker {
   /// sole's plane; a rise
   /// from the other foot over max_step_up or a drop over max_step_down; or a
   /// swinging foot that passes over ground more than 2 cm above the higher
-  /// of its two footholds (a hump, not a nosing). Ground of one level at every point
-  /// (stage 1 of docs/notes/terrain.md).
+  /// of its two footholds (a hump, not a nosing). Where levels lie above one
+  /// another, the foot's is the one a step from the other foot's
+  /// (foothold_level).
   bool off_ground(const Footstep& step, const FootstepState& before) const;
   /// True if the checker was given ground.
   bool on_ground() const;
+  /// The character standing at `position` facing `facing`, each foot on the
+  /// ground near `height` (standing_on_ground; without ground, standing_state).
+  FootstepState standing(Vec2 position, double facing, std::optional<double> height) const;
 
   /// The character parameters.
   const CharacterParams& character() const;
