@@ -203,9 +203,12 @@ Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& wal
              bounds_from,
              std::vector<PlanBounds::From>(walkers.size()),
              std::vector<char>(walkers.size()),
-             {}};
+             {},
+             std::vector<double>(walkers.size()),
+             walkers.empty() ? 0.0 : walkers.front().planner->character().body_height};
   for (std::size_t j = 0; j < walkers.size(); ++j) {
     s.com[j] = walks[j].com_at(t).position;
+    s.ground[j] = ground_at(walkers[j].plan, t);
     s.present[j] = present_at(walkers[j].plan, t);
     s.bounds[j] = walkers[j].bounds->from(bounds_from);
   }
@@ -230,9 +233,9 @@ std::vector<std::size_t> seen_by(const std::vector<Walker>& walkers, std::size_t
   std::vector<std::size_t> seen;
   std::vector<Vec2> where;
   std::vector<std::size_t> around;
-  now.grid.around(eye, kViewDistance, around);
+  now.around(i, kViewDistance, around);
   for (const std::size_t j : around) {
-    if (j == i || !now.present[j]) continue;
+    if (!now.present[j]) continue;
     const Vec2 d = now.com[j] - eye;
     if (dot(d, d) > kViewDistance * kViewDistance || dot(d, ahead) <= 0.0) continue;
     seen.push_back(j);
@@ -431,7 +434,7 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
 /// time, seen or not.
 std::vector<std::size_t> near(std::size_t i, const Snapshot& now) {
   std::vector<std::size_t> around, out;
-  now.grid.around(now.com[i], kCheckDistance, around);
+  now.around(i, kCheckDistance, around);
   for (const std::size_t j : around) {
     if (j != i && now.present[j] && distance(now.com[j], now.com[i]) <= kCheckDistance)
       out.push_back(j);
@@ -445,7 +448,7 @@ std::vector<std::size_t> near(std::size_t i, const Snapshot& now) {
 void wake_near(std::vector<Walker>& walkers, std::size_t i, const Snapshot& now,
                std::vector<std::size_t>& woken) {
   std::vector<std::size_t> around;
-  now.grid.around(now.com[i], kFreezeRadius, around);
+  now.around(i, kFreezeRadius, around);
   for (const std::size_t j : around) {
     if (walkers[j].dormant && distance(now.com[j], now.com[i]) <= kFreezeRadius) {
       wake(walkers[j], now.t);
@@ -562,9 +565,9 @@ bool nothing_new(const std::vector<Walker>& walkers, std::size_t i, const Snapsh
       !same_stance(w.searched_from, w.state) || patient(w, w.searched_from) != patient(w, w.state))
     return false;
   std::vector<std::size_t> around;
-  now.grid.around(now.com[i], kFreezeRadius, around);
+  now.around(i, kFreezeRadius, around);
   for (const std::size_t j : around) {
-    if (j == i || distance(now.com[j], now.com[i]) > kFreezeRadius) continue;
+    if (distance(now.com[j], now.com[i]) > kFreezeRadius) continue;
     if (walkers[j].committed_at >= w.searched_at || !still_from(walkers[j].plan, w.searched_at))
       return false;
   }

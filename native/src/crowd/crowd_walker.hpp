@@ -242,6 +242,21 @@ struct Snapshot {
   std::vector<char> giving_way;
   /// Where the present agents are thick (none without a mesh).
   CrowdDensity crowd;
+  /// Per agent, the height of the ground it stands on (ground_at), and the
+  /// body's height: agents on levels apart by that much never meet.
+  std::vector<double> ground;
+  double headroom = 0.0;
+
+  /// The agents but `i` within `radius` of agent `i` (and some further) on
+  /// its level: grid.around, less those on levels apart from it.
+  void around(std::size_t i, double radius, std::vector<std::size_t>& out) const {
+    grid.around(com[i], radius, out);
+    out.erase(std::remove_if(out.begin(), out.end(),
+                             [&](std::size_t j) {
+                               return j == i || levels_apart(ground[j], ground[i], headroom);
+                             }),
+              out.end());
+  }
 };
 
 /// True if agent `a` goes before agent `b` where their ways cross: one that

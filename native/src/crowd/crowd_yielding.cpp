@@ -91,9 +91,9 @@ bool gives_way(const std::vector<Walker>& walkers, std::size_t i, const Snapshot
   if (w.done || w.dormant || w.blocked < kGiveWayBlocked || patient(w, w.state)) return false;
   const Vec2 bound = bound_of(w, now.com[i]);
   std::vector<std::size_t> around;
-  now.grid.around(now.com[i], kJamDistance, around);
+  now.around(i, kJamDistance, around);
   for (const std::size_t j : around) {
-    if (j == i || walkers[j].done || walkers[j].dormant || !now.present[j] ||
+    if (walkers[j].done || walkers[j].dormant || !now.present[j] ||
         distance(now.com[j], now.com[i]) > kJamDistance)
       continue;
     if (dot(bound_of(walkers[j], now.com[j]), bound) < 0.0) return true;

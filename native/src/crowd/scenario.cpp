@@ -36,11 +36,13 @@ namespace {
 // Refuses two agents whose standing bodies (torso circles and feet) overlap:
 // neither could take a step. Swept along x, so that a crowd of thousands
 // costs about a sort.
-void check_standing_apart(const Scenario& scenario, const detail::CharacterPlanners& planners) {
+void check_standing_apart(const Scenario& scenario, const Ground& ground,
+                          const detail::CharacterPlanners& planners) {
   struct Body {
     std::size_t agent;
     std::array<Circle, 5> circles;
-    double reach = 0.0;  // from the COM [m]
+    double reach = 0.0;   // from the COM [m]
+    double ground = 0.0;  // the height it stands at [m]
   };
   std::vector<Body> bodies;
   bodies.reserve(scenario.agents.size());
@@ -48,10 +50,14 @@ void check_standing_apart(const Scenario& scenario, const detail::CharacterPlann
   for (std::size_t i = 0; i < scenario.agents.size(); ++i) {
     const AgentSpec& agent = scenario.agents[i];
     const CharacterParams& character = planners.character(agent);
-    const FootstepState s = standing_state(agent.position, agent.facing, character);
+    const FootstepState s =
+        standing_on_ground(ground, character, agent.position, agent.facing, agent.height);
     const auto torso = torso_circles(s.com, s.facing, character);
-    Body body{i, {torso[0], torso[1], torso[2], Circle{s.feet[0], character.foot_radius},
-                  Circle{s.feet[1], character.foot_radius}}};
+    Body body{i,
+              {torso[0], torso[1], torso[2], Circle{s.feet[0], character.foot_radius},
+               Circle{s.feet[1], character.foot_radius}},
+              0.0,
+              std::max(s.foot_heights[0], s.foot_heights[1])};
     for (const Circle& c : body.circles)
       body.reach = std::max(body.reach, distance(c.center, s.com) + c.radius);
     widest = std::max(widest, body.reach);
@@ -65,6 +71,7 @@ void check_standing_apart(const Scenario& scenario, const detail::CharacterPlann
     for (std::size_t j = i + 1; j < bodies.size() && x(bodies[j]) - x(bodies[i]) < 2 * widest; ++j) {
       const Body& a = bodies[i];
       const Body& b = bodies[j];
+      if (levels_apart(a.ground, b.ground, scenario.character.body_height)) continue;
       bool overlap = false;
       for (const Circle& p : a.circles)
         for (const Circle& q : b.circles)
@@ -247,7 +254,7 @@ GroundLayers validate_on(const Scenario& scenario, const Ground& ground) {
       }
     }
   }
-  check_standing_apart(scenario, planners);
+  check_standing_apart(scenario, ground, planners);
   return check_on_ground(scenario, ground, planners);
 }
 

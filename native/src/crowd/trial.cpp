@@ -52,6 +52,9 @@ bool Trial::touches(const AgentPlan& other, const PlanBounds& bounds,
     const ComSample them = known != nullptr && known->sampled ? known->com : them_at.com_at(t);
     const double between = distance(me.position, them.position);
     next = k + 1;
+    const double their_ground = known != nullptr && known->sampled ? known->ground
+                                                                    : ground_at(other, t);
+    if (levels_apart(at(k, false).ground, their_ground, character_->body_height)) continue;
     if (between > near) {
       if (closing > 0.0) next = k + std::max(1L, static_cast<long>((between - near) / closing));
       continue;

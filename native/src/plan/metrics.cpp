@@ -59,14 +59,19 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
     m.effort = plan.agents[a].total_cost();
   }
   std::vector<Vec2> position(n), previous(n), velocity(n), previous_velocity(n);
+  std::vector<double> ground(n);  // agents on levels apart never meet
   std::vector<std::size_t> around;
   std::vector<bool> colliding(n, false), present(n, true);
   std::vector<std::vector<Circle>> circles(n);
+  const auto apart = [&](std::size_t a, std::size_t b) {
+    return levels_apart(ground[a], ground[b], plan.character.body_height);
+  };
   const double dt = 1.0 / rate;
   for (long s = 0; s < samples; ++s) {
     const double t = static_cast<double>(s) * dt;
     for (size_t a = 0; a < n; ++a) {
       position[a] = com_at(plan.agents[a], t).position;
+      ground[a] = ground_at(plan.agents[a], t);
       circles[a] = collision_circles(plan.agents[a], plan.character, t);
       present[a] = present_at(plan.agents[a], t);
     }
@@ -83,7 +88,7 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
       for (const int o : near) now = now || penetration(map, o, disc) > kSteerBenchPenetration;
       grid.around(position[a], kNear, around);  // all that could overlap, and more
       for (const size_t b : around) {
-        now = now || (b != a && present[b] &&
+        now = now || (b != a && present[b] && !apart(a, b) &&
                       2 * kSteerBenchRadius - distance(position[a], position[b]) >
                           kSteerBenchPenetration);
       }
@@ -97,7 +102,8 @@ PlanMetrics measure_plan(const Plan& plan, double rate) {
       for (std::size_t c = 0; c < circles[a].size(); ++c)
         overlap = overlap || (c != 1 && c != 2 && map.overlaps(circles[a][c]));
       for (const size_t b : around) {
-        if (overlap || b == a || !present[b] || distance(position[a], position[b]) > kNear)
+        if (overlap || b == a || !present[b] || apart(a, b) ||
+            distance(position[a], position[b]) > kNear)
           continue;
         for (const Circle& c : circles[a]) {
           for (const Circle& d : circles[b]) overlap = overlap || circles_overlap(c, d);

@@ -25,6 +25,13 @@ double smoothstep(double u) { return u * u * (3.0 - 2.0 * u); }
 
 }  // namespace
 
+double ground_at(const AgentPlan& plan, double t) {
+  const auto& steps = plan.footsteps;
+  if (steps.empty() || t < steps.front().start_time)
+    return std::max(plan.start.foot_heights[0], plan.start.foot_heights[1]);
+  return steps[step_index(plan, t)].foot_height;
+}
+
 ComSample com_at(const AgentPlan& plan, double t) {
   if (plan.footsteps.empty()) return {plan.start.com, {0.0, 0.0}};
   return com_at(plan.footsteps[step_index(plan, t)], t);

@@ -20,6 +20,7 @@ const PlanSample& PlanSamples::at(const AgentPlan& plan, const CharacterParams& 
   const double t = static_cast<double>(held) * kContactDt;
   if (!sample.sampled) {
     sample.com = com_at(plan, t);
+    sample.ground = ground_at(plan, t);
     sample.sampled = true;
   }
   if (shaped && !sample.shaped) {

@@ -49,7 +49,9 @@ void SampledAgents::fill(std::size_t j, long k, AgentWhere& where) const {
   const AgentPlan& plan = *other.plan;
   const double t = static_cast<double>(k) * kContactDt;
   const PlanSample* known = other.samples != nullptr ? other.samples->taken(k) : nullptr;
-  const ComSample com = known != nullptr && known->sampled ? known->com : com_at(plan, t);
+  const bool held = known != nullptr && known->sampled;
+  const ComSample com = held ? known->com : com_at(plan, t);
+  where.ground = held ? known->ground : ground_at(plan, t);
   where.present = present_at(plan, t);
   where.com = com.position;
   where.speed = length(com.velocity);

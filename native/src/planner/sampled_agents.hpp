@@ -23,6 +23,7 @@ struct AgentWhere {
   std::uint64_t stamp = 0;  ///< The reset that filled it (0: never).
   Vec2 com;
   double speed = 0.0;    ///< COM speed. [m/s]
+  double ground = 0.0;   ///< The height of the ground it stands on (ground_at). [m]
   bool present = false;  ///< Not yet gone (an agent that leaves at its goal).
 };
 

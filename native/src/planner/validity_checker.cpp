@@ -40,6 +40,8 @@ class StandingCheck {
  public:
   StandingCheck(const FootstepState& state, const CharacterParams& character)
       : com_(state.com),
+        ground_(std::max(state.foot_heights[0], state.foot_heights[1])),
+        headroom_(character.body_height),
         mine_{Circle{state.com, 0.5 * character.torso_width},
               Circle{state.feet[0], character.foot_radius},
               Circle{state.feet[1], character.foot_radius}},
@@ -63,7 +65,7 @@ class StandingCheck {
     for (long k = first_; k <= last; ++k) {
       const detail::AgentWhere& them = others.at(j, k);
       if (!them.present) break;  // gone for good
-      if (distance(them.com, com_) > near) continue;
+      if (distance(them.com, com_) > near || levels_apart(them.ground, ground_, headroom_)) continue;
       const detail::AgentShape& shape = others.shape(j, k);
       const double pad = 0.5 * them.speed * kContactDt;
       if (k != first_ && distance(them.com, com_) - extent_ - shape.extent - pad > 0.0) continue;
@@ -84,6 +86,7 @@ class StandingCheck {
 
  private:
   Vec2 com_;
+  double ground_, headroom_;    // where it stands, and its height
   std::array<Circle, 3> mine_;  // the torso disc and the feet
   double extent_ = 0.0;         // how far they reach from the COM, room included
   long first_ = 0;
@@ -359,7 +362,9 @@ bool ValidityChecker::Impl::touches_agents(const Footstep& step, detail::Sampled
   const auto touches_at = [&](std::size_t j, long k, double counted_until, double reach,
                               double& start_gap) {
     const detail::AgentWhere& them = others.at(j, k);
-    if (!them.present || static_cast<double>(k) * kContactDt > counted_until) return false;
+    if (!them.present || static_cast<double>(k) * kContactDt > counted_until ||
+        levels_apart(them.ground, step.foot_height, character_.body_height))
+      return false;
     const Instant& me = instant(k);
     // Both move between instants: the circles are grown by half the travel.
     const double pad = 0.5 * (me.speed + them.speed) * kContactDt;

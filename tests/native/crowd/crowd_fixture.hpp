@@ -42,7 +42,9 @@ struct CrowdFixture {
       s.com.push_back(com_at(w.plan, t).position);
       s.present.push_back(present_at(w.plan, t));
       s.bounds.push_back(w.bounds->from(0.0));
+      s.ground.push_back(ground_at(w.plan, t));
     }
+    s.headroom = planner.character().body_height;
     s.grid = AgentGrid(s.com, kGridCell);
     s.giving_way.assign(walkers.size(), 0);
     return s;

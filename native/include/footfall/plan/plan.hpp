@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -136,6 +137,16 @@ struct FootPose {
 /// COM of the agent at time `t` (before the first step: the start; after the
 /// last: where it ends).
 ComSample com_at(const AgentPlan& plan, double t);
+/// The height of the ground the agent stands on at time `t`: the planted
+/// foot's of the step under way (before the first step, the higher of the
+/// start's feet; after the last, its foot's); 0 on flat ground. [m]
+double ground_at(const AgentPlan& plan, double t);
+/// True if two agents standing on ground at heights `a` and `b` are on
+/// levels apart, a body's height (`headroom`) or more (a street and a bridge's
+/// deck over it): they never meet, whatever their places in plan.
+inline bool levels_apart(double a, double b, double headroom) {
+  return std::fabs(a - b) >= headroom;
+}
 /// The largest COM speed of the plan from time `from` on (a step's is
 /// greatest at one of its ends): a bound for skipping ahead while two plans
 /// are far apart. [m/s]

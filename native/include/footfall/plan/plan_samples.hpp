@@ -14,8 +14,9 @@ namespace footfall {
 
 /// A plan at one instant k of the contact grid (t = k * kContactDt).
 struct PlanSample {
-  bool sampled = false;  ///< `com` holds com_at(plan, t).
+  bool sampled = false;  ///< `com` holds com_at(plan, t), `ground` ground_at(plan, t).
   ComSample com;
+  double ground = 0.0;  ///< [m]
   bool shaped = false;  ///< The circles hold collision_circles(plan, t).
   int count = 0;
   std::array<Circle, 5> circles;
