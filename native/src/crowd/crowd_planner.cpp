@@ -39,6 +39,7 @@
 #include "behavior/local_goal.hpp"
 #include "crowd/crowd_commit.hpp"
 #include "crowd/crowd_walker.hpp"
+#include "crowd/crowd_ways.hpp"
 #include "crowd/crowd_yielding.hpp"
 #include "footfall/crowd/crowd_planner.hpp"
 #include "footfall/plan/plan.hpp"
@@ -111,60 +112,6 @@ void annotate_anew(Walker& w, std::size_t i, const Annotator& annotate,
   w.sections = std::make_shared<const SectionLookup>(std::move(both));
 }
 
-/// The annotated way to the goal from `from`: from the nearest point of the
-/// guide on, when that point is within kGuideReach and in sight (the torso
-/// circle passes); else nothing, and the way is measured on the mesh.
-constexpr double kGuideReach = 1.0;  // [m]
-bool guided_way(const std::vector<Vec2>& guide, const NavMesh* mesh,
-                const CharacterParams& character, Vec2 from, Way& way) {
-  if (guide.size() < 2) return false;
-  double nearest = std::numeric_limits<double>::infinity();
-  std::size_t piece = 0;
-  Vec2 join;
-  for (std::size_t k = 1; k < guide.size(); ++k) {
-    const Vec2 p = closest_on_segment(from, guide[k - 1], guide[k]);
-    const double d = distance(from, p);
-    if (d < nearest) {
-      nearest = d;
-      piece = k;
-      join = p;
-    }
-  }
-  if (nearest > kGuideReach) return false;
-  if (mesh != nullptr && nearest > 0.0 &&
-      mesh->clearance_between(from, join, character.torso_radius) < character.torso_radius)
-    return false;
-  way.points = {from};
-  if (!(join == from)) way.points.push_back(join);
-  way.points.insert(way.points.end(), guide.begin() + static_cast<long>(piece), guide.end());
-  way.length = polyline_length(way.points);
-  return true;
-}
-
-/// The way from `from` to walker w's current goal: one of its known ways if
-/// one starts and ends there (the mesh does not change while the agents plan,
-/// so it would come out the same); else its annotated way where it has one
-/// (unless it takes the roomiest ways, stuck once); else measured anew, a
-/// roomy way out of a tight place passing none of the agents it sees
-/// (`seen`, where they stand `now`), or round a crowd on it (congestion.hpp).
-Way way_toward(const Walker& w, const NavMesh* mesh, const CharacterParams& character, Vec2 from,
-               const std::vector<std::size_t>& seen, const Snapshot& now) {
-  const Vec2 goal = w.spec->goals[w.goal];
-  for (const KnownWay& k : w.ways)
-    if (k.from == from && k.goal == goal) return k.way;
-  Way way;
-  if (!w.roomy && w.goal < w.guides.size() && guided_way(w.guides[w.goal], mesh, character, from, way))
-    return way;
-  std::vector<Vec2> others;
-  if (w.roomy)
-    for (const std::size_t j : seen)
-      if (now.present[j]) others.push_back(now.com[j]);
-  way = footfall::way_toward(mesh, character, from, goal, w.roomy, others, w.roomy_at);
-  if (mesh == nullptr || w.roomy) return way;
-  std::optional<Way> round = now.crowd.way_round(way, *mesh, sway_room(character));
-  return round ? std::move(*round) : way;
-}
-
 /// Near a narrower section (walking with the arms in, side-stepping) a search
 /// aims no farther than kNarrowAim along the way, the middle of the passage
 /// (the annotated way keeps to it): a passage a few centimetres wider than
@@ -227,7 +174,8 @@ Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& wal
 /// kViewDistance, in front of its torso, and with a clear line of sight),
 /// those it has noticed, and those whose wishes it keeps out of.
 std::vector<std::size_t> seen_by(const std::vector<Walker>& walkers, std::size_t i,
-                                 const Snapshot& now, const NavMesh* mesh) {
+                                 const Snapshot& now, const CrowdWays& ways) {
+  const NavMesh* mesh = ways.mesh_at(walkers[i].state);
   const Vec2 eye = now.com[i];
   const Vec2 ahead = unit(facing_at(walkers[i].plan, now.t));
   std::vector<std::size_t> seen;
@@ -309,12 +257,19 @@ void turn_first(const FootstepState& start, Attempt& a) {
 /// goes after it near, also its wish: the same search among only those it
 /// sees that go first.
 Attempt search(const std::vector<Walker>& walkers, std::size_t i, const FootstepPlanner& planner,
-               const NavMesh* mesh, const std::vector<std::size_t>& seen, const Snapshot& now) {
+               const CrowdWays& ways, const std::vector<std::size_t>& seen, const Snapshot& now) {
   const Walker& w = walkers[i];
   const Vec2 goal = w.spec->goals[w.goal];
-  const Way way = way_toward(w, mesh, planner.character(), w.state.com, seen, now);
-  const LocalGoal target =
-      keep_right(walkers, i, aim_of(w, planner, mesh, way), seen, now, planner, mesh);
+  const NavMesh* mesh = ways.mesh_at(w.state);
+  const LayerWay on = way_on(w, ways, planner.character(), w.state, seen, now);
+  const Way& way = on.way;
+  // Near where its way crosses to another layer, it aims past the crossing:
+  // the footsteps take it across (each layer's mesh is walled there).
+  const LocalGoal aim =
+      on.across && polyline_length(way.points) <= planner.params().local_goal_distance
+          ? LocalGoal{*on.across, false}
+          : aim_of(w, planner, mesh, way);
+  const LocalGoal target = keep_right(walkers, i, aim, seen, now, planner, mesh);
   // One that leaves at this goal needs no room to rest there.
   const bool leaves = leaves_now(w, target.is_goal);
   KeepOut keep_out;
@@ -372,11 +327,13 @@ Attempt search(const std::vector<Walker>& walkers, std::size_t i, const Footstep
     a.rest.state = turn.state;
     a.turned = true;
   }
-  a.ways.push_back({w.state.com, goal, way});
+  // Ways to where they cross to another layer are not kept: they lead
+  // elsewhere than the goal they would be found by.
+  if (!on.across) a.ways.push_back({w.state.com, goal, way});
   if (!a.reached) {
-    Way left = way_toward(w, mesh, planner.character(), a.end.com, seen, now);
-    a.way_left = left.length;
-    a.ways.push_back({a.end.com, goal, std::move(left)});
+    LayerWay left = way_on(w, ways, planner.character(), a.end, seen, now);
+    a.way_left = left.way.length;
+    if (!left.across) a.ways.push_back({a.end.com, goal, std::move(left.way)});
   }
   a.way_from = way.length;
   a.nodes_generated = result.nodes_generated;
@@ -484,7 +441,8 @@ void wake_where_gone(std::vector<Walker>& walkers, std::vector<Departure>& depar
 
 /// Keeps the last place its committed steps `a` stand with room to walk
 /// upright (Walker::roomy_at).
-void note_roomy_place(Walker& w, const Attempt& a, const NavMesh* mesh) {
+void note_roomy_place(Walker& w, const Attempt& a, const CrowdWays& ways) {
+  const NavMesh* mesh = ways.mesh_at(a.end);
   if (mesh == nullptr) return;
   const double upright = 0.5 * w.planner->character().torso_width;
   for (auto step = a.steps.rbegin(); step != a.steps.rend(); ++step) {
@@ -642,11 +600,14 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
                      control);
 }
 
-std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
-                                   const std::vector<const FootstepPlanner*>& planners,
-                                   const NavMesh* mesh, const RunControl& control,
-                                   const std::vector<const AgentPlan*>& fixed,
-                                   const Annotator& annotate) {
+namespace {
+
+// plan_agents, finding ways on `ways`.
+std::vector<AgentPlan> plan_on(const std::vector<AgentSpec>& agents,
+                               const std::vector<const FootstepPlanner*>& planners,
+                               const CrowdWays& ways, const RunControl& control,
+                               const std::vector<const AgentPlan*>& fixed,
+                               const Annotator& annotate) {
   if (planners.size() != agents.size() ||
       std::find(planners.begin(), planners.end(), nullptr) != planners.end())
     throw std::invalid_argument("plan_agents: give one planner per agent");
@@ -686,7 +647,8 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
   std::vector<FootstepState> first_states;
   for (const Walker& w : walkers) first_states.push_back(w.plan.start);
   std::optional<CrowdGrid> crowd_grid;
-  if (mesh != nullptr) crowd_grid.emplace(*mesh, sway_room(planners.front()->character()));
+  if (ways.first() != nullptr)
+    crowd_grid.emplace(*ways.first(), sway_room(planners.front()->character()));
   // Two views (see the top of this file), one per tick in flight; each is
   // brought up to date from the walkers changed since it last was. Bounds
   // and samples are shared with the walkers, not copied.
@@ -726,7 +688,7 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       others.clear();
       if (w.committed_at == t) {
         wake_near(walkers, i, jobs.at, others);
-        note_roomy_place(w, a, mesh);
+        note_roomy_place(w, a, ways);
       }
       if (a.searched) {
         w.ways = std::move(jobs.attempts[k].ways);
@@ -835,13 +797,13 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
       jobs.proposals.resize(n);
       jobs.seconds.assign(n, 0.0);
       jobs.job_seconds.assign(n, 0.0);
-      jobs.batch = workers.launch(n, [&jobs, &view, mesh](std::size_t job) {
+      jobs.batch = workers.launch(n, [&jobs, &view, &ways](std::size_t job) {
         const std::size_t k = jobs.order[job], i = jobs.due[k];
         const FootstepPlanner& planner = *view[i].planner;
         const auto begin = std::chrono::steady_clock::now();
         if (!jobs.idle[k]) {
           jobs.attempts[k] =
-              search(view, i, planner, mesh, seen_by(view, i, jobs.at, mesh), jobs.at);
+              search(view, i, planner, ways, seen_by(view, i, jobs.at, ways), jobs.at);
           jobs.seconds[k] =
               std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
         }
@@ -891,6 +853,23 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
     plans.push_back(std::move(w.plan));
   }
   return plans;
+}
+
+}  // namespace
+
+std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
+                                   const std::vector<const FootstepPlanner*>& planners,
+                                   const NavMesh* mesh, const RunControl& control,
+                                   const std::vector<const AgentPlan*>& fixed,
+                                   const Annotator& annotate) {
+  return plan_on(agents, planners, CrowdWays{mesh, nullptr}, control, fixed, annotate);
+}
+
+std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
+                                   const std::vector<const FootstepPlanner*>& planners,
+                                   const LayeredNavigation& navigation, const RunControl& control,
+                                   const std::vector<const AgentPlan*>& fixed) {
+  return plan_on(agents, planners, CrowdWays{nullptr, &navigation}, control, fixed, {});
 }
 
 std::optional<std::pair<std::string, std::string>> facings_problem(const AgentSpec& agent) {

@@ -136,17 +136,31 @@ int LayeredNavigation::layer_at(Vec2 p, std::optional<double> z, const std::stri
 
 PathResult LayeredNavigation::find_path(const PathQuery& query, int from_layer,
                                         int to_layer) const {
-  const auto with_heights = [&](PathResult result, const std::vector<int>& layer_of_point) {
-    if (ground_->empty()) return result;
-    for (std::size_t k = 0; k < result.points.size(); ++k) {
-      const std::optional<GroundPoint> level = layers_.level_on(result.points[k], layer_of_point[k]);
-      result.heights.push_back(level ? level->z : result.heights.empty() ? 0.0 : result.heights.back());
-    }
-    return result;
-  };
+  LayeredPath way = route(query, from_layer, to_layer);
+  if (ground_->empty()) return std::move(way.path);
+  for (std::size_t k = 0; k < way.path.points.size(); ++k) {
+    const std::optional<GroundPoint> level = layers_.level_on(way.path.points[k], way.layers[k]);
+    const std::vector<double>& heights = way.path.heights;
+    way.path.heights.push_back(level ? level->z : heights.empty() ? 0.0 : heights.back());
+  }
+  return std::move(way.path);
+}
+
+int LayeredNavigation::layer_under(Vec2 p, double z) const {
+  if (layers() == 1) return 0;
+  const std::vector<GroundPoint> levels = ground_->standable_at(p, layers_.headroom());
+  const auto nearest = std::min_element(
+      levels.begin(), levels.end(), [&](const GroundPoint& a, const GroundPoint& b) {
+        return std::fabs(a.z - z) < std::fabs(b.z - z);
+      });
+  return nearest == levels.end() ? 0 : layers_.layer_of(*nearest);
+}
+
+LayeredPath LayeredNavigation::route(const PathQuery& query, int from_layer, int to_layer) const {
   if (layers() == 1) {
-    PathResult result = meshes_.front().find_path(query);
-    return with_heights(result, std::vector<int>(result.points.size(), 0));
+    PathResult path = meshes_.front().find_path(query);
+    std::vector<int> on(path.points.size(), 0);
+    return {std::move(path), std::move(on)};
   }
   // The start, the goal, and both sides of points along each portal.
   std::vector<Stop> stops{{query.from, from_layer}, {query.to, to_layer}};
@@ -217,32 +231,32 @@ PathResult LayeredNavigation::find_path(const PathQuery& query, int from_layer,
     }
   }
   if (before[1] < 0) {
-    PathResult none;
-    none.status = outside         ? PathStatus::kOutside
-                  : start_blocked ? PathStatus::kStartBlocked
-                  : goal_blocked  ? PathStatus::kGoalBlocked
-                                  : PathStatus::kNoPath;
+    LayeredPath none;
+    none.path.status = outside         ? PathStatus::kOutside
+                       : start_blocked ? PathStatus::kStartBlocked
+                       : goal_blocked  ? PathStatus::kGoalBlocked
+                                       : PathStatus::kNoPath;
     return none;
   }
   std::vector<int> chain{1};
   while (chain.back() != 0) chain.push_back(before[chain.back()]);
   std::reverse(chain.begin(), chain.end());
-  PathResult result;
+  LayeredPath joined;
+  PathResult& result = joined.path;
   result.status = PathStatus::kFound;
   result.min_clearance = inf;
-  std::vector<int> layer_of_point;
   for (std::size_t k = 1; k < chain.size(); ++k) {
-    const PathResult& way = leg[chain[k]];
+    const PathResult& piece = leg[chain[k]];
     const bool crossing = stops[chain[k - 1]].twin == chain[k];
-    for (std::size_t i = result.points.empty() ? 0 : 1; i < way.points.size(); ++i) {
-      result.points.push_back(way.points[i]);
-      layer_of_point.push_back(crossing && i == 1 ? stops[chain[k]].layer
-                                                  : stops[chain[k - 1]].layer);
+    for (std::size_t i = result.points.empty() ? 0 : 1; i < piece.points.size(); ++i) {
+      result.points.push_back(piece.points[i]);
+      joined.layers.push_back(crossing && i == 1 ? stops[chain[k]].layer
+                                                 : stops[chain[k - 1]].layer);
     }
-    result.length += way.length;
-    result.min_clearance = std::min(result.min_clearance, way.min_clearance);
+    result.length += piece.length;
+    result.min_clearance = std::min(result.min_clearance, piece.min_clearance);
   }
-  return with_heights(std::move(result), layer_of_point);
+  return joined;
 }
 
 }  // namespace footfall

@@ -186,19 +186,6 @@ GroundLayers check_on_ground(const Scenario& scenario, const Ground& ground,
   return layers;
 }
 
-/// Refuses levels above one another, not planned on yet (stage 2 of
-/// docs/notes/terrain.md; their ways are found: LayeredNavigation).
-void check_one_layer(const Ground& ground, const GroundLayers& layers) {
-  if (layers.count() == 1) return;
-  const std::optional<StackedLevels> stacked = ground.stacked_levels(layers.headroom());
-  char text[200];
-  std::snprintf(text, sizeof text,
-                "two levels over (%.2f, %.2f), at %.2f and %.2f m: ground with levels above "
-                "one another is not planned on yet",
-                stacked->at.x, stacked->at.y, stacked->lower, stacked->upper);
-  fail("ground", text);
-}
-
 // validate(), on the scenario's ground built once by its caller; returns its layers.
 GroundLayers validate_on(const Scenario& scenario, const Ground& ground) {
   validate(scenario.character, "character");
@@ -264,20 +251,27 @@ Plan plan_among(const Scenario& scenario, const RunControl& control,
                 const std::vector<const AgentPlan*>& fixed) {
   const Ground ground(scenario.ground);
   const GroundLayers layers = validate_on(scenario, ground);
-  check_one_layer(ground, layers);
   const CollisionScene scene(scenario.obstacles);
   const detail::CharacterPlanners planners(scenario, &scene, &ground);
-  const NavMesh mesh = layer_navmesh(scenario, layers, 0);
   Plan plan;
   plan.character = scenario.character;
   plan.obstacles = scenario.obstacles;
   plan.ground = scenario.ground;
   std::vector<AgentSpec> agents = scenario.agents;
+  std::vector<const FootstepPlanner*> each;
+  for (const AgentSpec& agent : agents) each.push_back(&planners.planner(agent));
+  if (layers.count() > 1) {
+    // Levels above one another: ways over the layers, none annotated.
+    for (std::size_t i = 0; i < agents.size(); ++i)
+      if (!fixed.empty() && fixed[i] != nullptr) agents[i].sections = fixed[i]->sections;
+    plan.agents = plan_agents(agents, each, LayeredNavigation(scenario), control, fixed);
+    if (control.cancelled()) plan.status = Status::kCancelled;
+    return plan;
+  }
+  const NavMesh mesh = layer_navmesh(scenario, layers, 0);
   detail::SectionPlanners sections(scenario, scene, planners);
   const std::vector<std::optional<Narrowest>> narrowest =
       detail::plan_sections(sections, agents, fixed);
-  std::vector<const FootstepPlanner*> each;
-  for (const AgentSpec& agent : agents) each.push_back(&planners.planner(agent));
   const Annotator annotate = [&](std::size_t i, Vec2 from, std::size_t first_goal) {
     return sections.plan(agents[i], from, first_goal);
   };

@@ -140,6 +140,18 @@ std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
                                    const std::vector<const AgentPlan*>& fixed = {},
                                    const Annotator& annotate = {});
 
+class LayeredNavigation;
+
+/// plan_agents on ground with levels above one another: each agent finds its
+/// ways on the mesh of the layer it stands on, to where its way crosses to
+/// another, and its footsteps take it across. No ways are annotated (the
+/// full-body planner does not yet find ways between levels).
+std::vector<AgentPlan> plan_agents(const std::vector<AgentSpec>& agents,
+                                   const std::vector<const FootstepPlanner*>& planners,
+                                   const LayeredNavigation& navigation,
+                                   const RunControl& control = {},
+                                   const std::vector<const AgentPlan*>& fixed = {});
+
 /// One agent's walk alone (plan_agents with no one else).
 AgentPlan plan_agent(const AgentSpec& agent, const FootstepPlanner& planner,
                      const NavMesh* mesh = nullptr, const RunControl& control = {});

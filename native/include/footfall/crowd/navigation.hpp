@@ -22,6 +22,14 @@ namespace footfall {
 NavMesh layer_navmesh(const Scenario& scenario, const GroundLayers& layers, int layer,
                       double margin = kNavMeshMargin);
 
+/// A way over several layers: the path, and per point the layer it lies on
+/// (where two points in a row lie on different layers, the way crosses
+/// between them).
+struct LayeredPath {
+  PathResult path;
+  std::vector<int> layers;
+};
+
 /// The navigation meshes of a scenario's layers (for its character: its
 /// height, and the lower of its step limits), and shortest ways over them.
 class LayeredNavigation {
@@ -42,6 +50,12 @@ class LayeredNavigation {
   /// apart along each meeting). With ground, `heights` holds the ground's
   /// height under each point. A way on one layer is the mesh's own answer.
   PathResult find_path(const PathQuery& query, int from_layer, int to_layer) const;
+  /// find_path's way, with each point's layer rather than its height.
+  LayeredPath route(const PathQuery& query, int from_layer, int to_layer) const;
+  /// The layer the foot of a body standing at `p` on ground at height `z`
+  /// stands on: of the standable levels there, the nearest `z`'s (0 where
+  /// there is none).
+  int layer_under(Vec2 p, double z) const;
 
  private:
   std::unique_ptr<const Ground> ground_;  // the layers refer to it
