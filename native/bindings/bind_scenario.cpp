@@ -72,12 +72,17 @@ void bind_scenario(py::module_& m) {
       .def("empty", &Ground::empty, "True without ground: the plane z = 0 is the floor.")
       .def(
           "standing_height",
-          [](const Ground& ground, double x, double y, double headroom) -> std::optional<double> {
-            if (const auto point = ground.standing_on({x, y}, headroom)) return point->z;
+          [](const Ground& ground, double x, double y, double headroom,
+             std::optional<double> near) -> std::optional<double> {
+            const auto point = near ? ground.standable_near({x, y}, *near, headroom)
+                                    : ground.standing_on({x, y}, headroom);
+            if (point) return point->z;
             return std::nullopt;
           },
-          py::arg("x"), py::arg("y"), py::arg("headroom"),
-          "The height of the lowest ground a body `headroom` tall stands on at (x, y) [m], or None.")
+          py::arg("x"), py::arg("y"), py::arg("headroom"), py::arg("near") = py::none(),
+          "The height of the ground a body `headroom` tall stands on at (x, y) [m]: of its levels "
+          "(a street and a bridge's deck over it), the nearest `near` [m] where given, else the "
+          "lowest; None where there is none.")
       .def(
           "standing_problem",
           [](const Ground& ground, const CharacterParams& character, double x, double y, double facing,

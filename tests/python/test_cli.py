@@ -351,6 +351,20 @@ def test_path_answers_on_the_level_of_the_points_given(cli):
     assert 22 < down["length"] < 25
 
 
+def test_a_crowd_plans_on_and_under_a_bridge(cli, tmp_path):
+    out = tmp_path / "plan.json"
+    result = run(cli, "plan", str(BRIDGE), "-o", str(out))
+    assert result.returncode == 0, result.stderr
+    plan = json.loads(out.read_text())
+    for agent in plan["agents"]:
+        assert agent["status"] == "reached", agent["name"]
+        heights = set(agent["footsteps"]["foot_height"]) | set(agent["start"]["foot_heights"])
+        assert heights == ({2.89} if agent["name"].startswith("over") else {0.0}), agent["name"]
+    metrics = run(cli, "metrics", str(out))
+    assert "five-circle overlaps: 0" in metrics.stdout
+    assert "off the ground 0, soles unsupported 0, rises over the limit 0, swing feet through the ground 0" in metrics.stdout
+
+
 def test_path_between_two_levels_asks_for_the_height(cli):
     result = run(cli, "path", str(BRIDGE), "--from", "0,0", "--to", "5,0", "--radius", "0.25")
     assert result.returncode == 2 and result.stdout == ""
@@ -358,10 +372,11 @@ def test_path_between_two_levels_asks_for_the_height(cli):
         "footfall: --from: 2 levels at (0.00, 0.00), at 0.00 and 2.89 m: give its height (X,Y,Z)\n")
 
 
-def test_a_plan_on_ground_is_animated_by_plan_and_by_animate(cli, tmp_path):
+@pytest.mark.parametrize("scenario", [STAIRS, BRIDGE], ids=["stairs", "bridge"])
+def test_a_plan_on_ground_is_animated_by_plan_and_by_animate(cli, tmp_path, scenario):
     plan, glb, again = tmp_path / "plan.json", tmp_path / "crowd.glb", tmp_path / "again.glb"
     rig = pathlib.Path(__file__).resolve().parents[2] / "rigs" / "footfall_humanoid.glb"
-    result = run(cli, "plan", str(STAIRS), "-o", str(plan), "--glb", str(glb), "--rig", str(rig))
+    result = run(cli, "plan", str(scenario), "-o", str(plan), "--glb", str(glb), "--rig", str(rig))
     assert result.returncode == 0, result.stderr
     assert run(cli, "animate", str(plan), "-o", str(again), "--rig", str(rig)).returncode == 0
     assert glb.read_bytes() == again.read_bytes()

@@ -188,6 +188,7 @@ def test_agents_of_other_sizes_are_the_rig_scaled_with_their_feet_on_the_plan(ff
 
 
 STAIRS = ROOT / "tests" / "data" / "stairs.json"
+BRIDGE = ROOT / "tests" / "data" / "bridge.json"
 GROUND_TOLERANCE = 0.01  # [m] a foot's vertex below the ground under it
 
 
@@ -213,12 +214,12 @@ def foot_vertices(crowd, agent, times, bones):
     return z_up(numpy.concatenate(points, axis=1))
 
 
-def test_a_stair_crowd_keeps_every_foot_on_its_tread_and_out_of_the_risers(ff, cli, tmp_path):
-    """Up and down a flight: from the skinned mesh at every frame, no vertex
-    of a foot more than 1 cm below the ground under it (a toe in a riser, a
-    sole through a tread), and the hips risen to the landing."""
+def animated_on_ground(ff, cli, tmp_path, scenario):
+    """`scenario` planned and animated by `plan --glb` (a valid .glb): its
+    plan, its crowd, the rig's bones, the deepest any foot's skinned vertex
+    lies below the ground under it at any frame, and the frames."""
     plan_path, crowd_path = tmp_path / "plan.json", tmp_path / "crowd.glb"
-    run = subprocess.run([cli, "plan", str(STAIRS), "-o", str(plan_path), "--glb", str(crowd_path),
+    run = subprocess.run([cli, "plan", str(scenario), "-o", str(plan_path), "--glb", str(crowd_path),
                           "--rig", str(RIG)], capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
     errors, report = validator_errors(crowd_path)
@@ -232,15 +233,42 @@ def test_a_stair_crowd_keeps_every_foot_on_its_tread_and_out_of_the_risers(ff, c
     for agent in plan.agents:
         times = crowd.animation_times(agent.name)
         points = foot_vertices(crowd, agent.name, times, feet)
-        under = ground_heights(prisms, points.reshape(-1, 3)[:, :2]).reshape(points.shape[:2])
+        under = ground_heights(prisms, points.reshape(-1, 3)).reshape(points.shape[:2])
         depth = numpy.max(under - points[..., 2], axis=1)
         deepest = max(deepest, float(depth.max()))
         frames += len(times)
-        hips = crowd.world_positions(agent.name, times[-1:], [bones["hips"]], crowd.agent_root(agent.name))
+    return plan, crowd, bones, deepest, frames
+
+
+def hips_height_at_end(crowd, bones, name):
+    hips = crowd.world_positions(name, crowd.animation_times(name)[-1:], [bones["hips"]],
+                                 crowd.agent_root(name))
+    return z_up(hips[bones["hips"]])[0, 2]
+
+
+def test_a_stair_crowd_keeps_every_foot_on_its_tread_and_out_of_the_risers(ff, cli, tmp_path):
+    """Up and down a flight: from the skinned mesh at every frame, no vertex
+    of a foot more than 1 cm below the ground under it (a toe in a riser, a
+    sole through a tread), and the hips risen to the landing."""
+    plan, crowd, bones, deepest, frames = animated_on_ground(ff, cli, tmp_path, STAIRS)
+    for agent in plan.agents:
         landing = agent.name.startswith("up")
-        assert z_up(hips[bones["hips"]])[0, 2] > (1.5 if landing else 0.5), agent.name
+        assert hips_height_at_end(crowd, bones, agent.name) > (1.5 if landing else 0.5), agent.name
     print(f"stairs: deepest foot vertex {1000 * deepest:.1f} mm below the ground, {frames} frames")
     assert frames > 2000
+    assert deepest < GROUND_TOLERANCE
+
+
+def test_those_on_a_bridge_walk_on_its_deck_and_those_under_it_on_the_street(ff, cli, tmp_path):
+    """tests/data/bridge.json: two walk along the street under a footbridge's
+    deck, two cross the deck 2.89 m above them. Every foot's skinned vertex
+    on the ground under it (the deck for those above, the street below)."""
+    plan, crowd, bones, deepest, frames = animated_on_ground(ff, cli, tmp_path, BRIDGE)
+    for agent in plan.agents:
+        over = agent.name.startswith("over")
+        hips = hips_height_at_end(crowd, bones, agent.name)
+        assert (hips > 3.5) if over else (0.5 < hips < 1.5), (agent.name, hips)
+    print(f"bridge: deepest foot vertex {1000 * deepest:.1f} mm below the ground, {frames} frames")
     assert deepest < GROUND_TOLERANCE
 
 

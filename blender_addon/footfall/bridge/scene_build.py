@@ -107,18 +107,18 @@ def _check(document: dict, source: str) -> None:
 
 
 def _heights(document: dict, scenario) -> None:
-    """Every point of the agents as [x, y, z], on its ground: at the height
-    it was given with (the core has checked that ground lies within 0.5 m of
-    it), else on the only ground under it; without ground on the floor, z = 0
-    (the core has checked that a height given lies within 0.5 m of it)."""
+    """Every point of the agents as [x, y, z], on its ground: on the level
+    nearest the height it was given with (the core has checked that one lies
+    within 0.5 m of it), else on the only ground under it; without ground on
+    the floor, z = 0 (the core has checked that a height given lies within
+    0.5 m of it)."""
     ground = native.load().Ground(scenario.ground)
 
     def placed(point, headroom):
         if ground.empty():
             return [point[0], point[1], 0.0]
-        if len(point) == 3:
-            return list(point)
-        return [point[0], point[1], ground.standing_height(point[0], point[1], headroom)]
+        near = point[2] if len(point) == 3 else None
+        return [point[0], point[1], ground.standing_height(point[0], point[1], headroom, near)]
 
     for agent, spec in zip(document["agents"], scenario.agents):
         headroom = (spec.character or scenario.character).body_height

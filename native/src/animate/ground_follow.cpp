@@ -37,9 +37,8 @@ GroundFollower::GroundFollower(const AgentPlan& plan, const CharacterParams& cha
                                const Ground& ground, FootExtent foot)
     : plan_(plan), ground_(ground), extent_(foot), headroom_(character.body_height) {}
 
-GroundPoint GroundFollower::under(Vec2 p) const {
-  if (const auto point = ground_.standing_on(p, headroom_)) return *point;
-  return {0.0, {0, 0, 1}, -1};
+GroundPoint GroundFollower::under(Vec2 p, double near) const {
+  return ground_.standable_near(p, near, headroom_).value_or(GroundPoint{0.0, {0, 0, 1}, -1});
 }
 
 double GroundFollower::highest_under(Vec3 sole, double heading, double ceiling) const {
@@ -77,8 +76,8 @@ FootOnGround GroundFollower::swinging(const FootPose& pose, const Swing& swing, 
 
 GroundFollower::Swing GroundFollower::plan_swing(const FootPose& pose) const {
   Swing swing;
-  const GroundPoint from = under(pose.swing_from);
-  GroundPoint to = under(pose.swing_to);
+  const GroundPoint from = under(pose.swing_from, pose.ground);
+  GroundPoint to = under(pose.swing_to, pose.swing_to_ground);
   if (to.surface < 0) to = from;  // walking off the ground's end as it leaves
   swing.from_z = from.z;
   swing.to_z = to.z;
@@ -120,8 +119,8 @@ GroundFollower::Swing GroundFollower::plan_swing(const FootPose& pose) const {
 }
 
 const GroundFollower::Swing& GroundFollower::swing_of(const FootPose& pose) const {
-  const std::array<double, 4> key{pose.swing_from.x, pose.swing_from.y, pose.swing_to.x,
-                                  pose.swing_to.y};
+  const std::array<double, 6> key{pose.swing_from.x, pose.swing_from.y, pose.ground,
+                                  pose.swing_to.x,   pose.swing_to.y,   pose.swing_to_ground};
   auto found = swings_.find(key);
   if (found == swings_.end()) found = swings_.emplace(key, plan_swing(pose)).first;
   return found->second;
@@ -131,7 +130,7 @@ FootOnGround GroundFollower::foot(const FootPose& pose) const {
   if (ground_.empty())
     return {{pose.position.x, pose.position.y, pose.lift}, pose.orientation, {0, 0, 1}};
   if (pose.planted) {
-    const GroundPoint point = under(pose.position);
+    const GroundPoint point = under(pose.position, pose.ground);
     return {{pose.position.x, pose.position.y, point.z}, pose.orientation, point.normal};
   }
   return swinging(pose, swing_of(pose), pose.swing_phase);
@@ -142,7 +141,7 @@ double GroundFollower::body_height(const std::array<FootPose, 2>& feet) const {
   double sum = 0;
   for (const FootPose& pose : feet) {
     if (pose.planted) {
-      sum += under(pose.position).z;
+      sum += under(pose.position, pose.ground).z;
     } else {
       const Swing& swing = swing_of(pose);
       const double s = travelled(pose.swing_phase, swing.rises, swing.travel_start);

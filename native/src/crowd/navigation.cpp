@@ -118,10 +118,7 @@ int LayeredNavigation::layer_at(Vec2 p, std::optional<double> z, const std::stri
   const std::string where = "(" + two_places(p.x) + ", " + two_places(p.y) + ")";
   if (levels.empty()) throw std::invalid_argument(field + ": " + where + " is over no ground to stand on");
   if (z) {
-    const auto nearest = std::min_element(
-        levels.begin(), levels.end(), [&](const GroundPoint& a, const GroundPoint& b) {
-          return std::fabs(a.z - *z) < std::fabs(b.z - *z);
-        });
+    const std::optional<GroundPoint> nearest = ground_->standable_near(p, *z, layers_.headroom());
     if (std::fabs(nearest->z - *z) > kHeightReach)
       throw std::invalid_argument(field + ": no ground to stand on within 0.50 m of the height " +
                                   two_places(*z) + " m at " + where);
@@ -148,12 +145,8 @@ PathResult LayeredNavigation::find_path(const PathQuery& query, int from_layer,
 
 int LayeredNavigation::layer_under(Vec2 p, double z) const {
   if (layers() == 1) return 0;
-  const std::vector<GroundPoint> levels = ground_->standable_at(p, layers_.headroom());
-  const auto nearest = std::min_element(
-      levels.begin(), levels.end(), [&](const GroundPoint& a, const GroundPoint& b) {
-        return std::fabs(a.z - z) < std::fabs(b.z - z);
-      });
-  return nearest == levels.end() ? 0 : layers_.layer_of(*nearest);
+  const std::optional<GroundPoint> level = ground_->standable_near(p, z, layers_.headroom());
+  return level ? layers_.layer_of(*level) : 0;
 }
 
 LayeredPath LayeredNavigation::route(const PathQuery& query, int from_layer, int to_layer) const {

@@ -25,10 +25,7 @@ Sole sole_of(const CharacterParams& character, Vec2 foot, const GroundPoint& gro
 
 std::optional<GroundPoint> foothold_level(const Ground& ground, const CharacterParams& character,
                                           Vec2 foot, double beside) {
-  std::optional<GroundPoint> nearest;
-  for (const GroundPoint& level : ground.standable_at(foot, character.body_height))
-    if (!nearest || std::fabs(level.z - beside) < std::fabs(nearest->z - beside)) nearest = level;
-  return nearest;
+  return ground.standable_near(foot, beside, character.body_height);
 }
 
 FootstepState standing_on_ground(const Ground& ground, const CharacterParams& character,

@@ -227,6 +227,13 @@ std::optional<GroundPoint> Ground::standing_on(Vec2 p, double headroom) const {
   return levels.front();
 }
 
+std::optional<GroundPoint> Ground::standable_near(Vec2 p, double z, double headroom) const {
+  std::optional<GroundPoint> nearest;
+  for (const GroundPoint& level : standable_at(p, headroom))
+    if (!nearest || std::fabs(level.z - z) < std::fabs(nearest->z - z)) nearest = level;
+  return nearest;
+}
+
 std::optional<GroundPoint> Ground::level_near(Vec2 p, double z, double reach) const {
   std::optional<GroundPoint> nearest;
   visit_faces_at(p, [&](const Face& face) {

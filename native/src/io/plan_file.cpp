@@ -161,6 +161,11 @@ void write_agent(JsonWriter& out, const AgentPlan& agent, bool ground) {
   write_point(out, agent.start.feet[0]);
   out.key("right_foot");
   write_point(out, agent.start.feet[1]);
+  if (ground) {
+    out.key("foot_heights").begin_array();
+    for (const double height : agent.start.foot_heights) out.number(height);
+    out.end_array();
+  }
   out.end_object();
   if (!agent.sections.empty()) {
     out.key("sections").begin_array();
@@ -464,7 +469,7 @@ using Characters = std::map<std::string, std::shared_ptr<const CharacterParams>>
 // The standing start as written.
 FootstepState read_start(const Json& start, const std::string& path,
                          const CharacterParams& character) {
-  expect_object(start, path, {"position", "facing", "left_foot", "right_foot"});
+  expect_object(start, path, {"position", "facing", "left_foot", "right_foot", "foot_heights"});
   FootstepState state =
       standing_state(point(require(start, path, "position"), child(path, "position")),
                      number(require(start, path, "facing"), child(path, "facing")), character);
@@ -472,6 +477,13 @@ FootstepState read_start(const Json& start, const std::string& path,
     state.feet[0] = point(start["left_foot"], child(path, "left_foot"));
   if (start.contains("right_foot"))
     state.feet[1] = point(start["right_foot"], child(path, "right_foot"));
+  if (start.contains("foot_heights")) {
+    const std::string heights_path = child(path, "foot_heights");
+    const Json& heights = array(start["foot_heights"], heights_path);
+    if (heights.size() != 2) fail(heights_path, "needs 2 heights, the left foot's and the right's");
+    for (int f = 0; f < 2; ++f)
+      state.foot_heights[f] = number(heights[f], item(heights_path, static_cast<std::size_t>(f)));
+  }
   return state;
 }
 
@@ -565,6 +577,11 @@ AgentPlan read_agent(const Json& json, const std::string& path, int version,
       fail(child(path, "start"), "missing (needed when there are no footsteps)");
     }
   }
+  // A start written before its heights were: on the first step's ground.
+  const bool heights_given = json.contains("start") && json["start"].is_object() &&
+                             json["start"].contains("foot_heights");
+  if (!heights_given && !agent.footsteps.empty())
+    agent.start.foot_heights.fill(agent.footsteps.front().foot_height);
   if (json.contains("stats")) {
     const Json& stats = json["stats"];
     const std::string stats_path = child(path, "stats");

@@ -177,10 +177,11 @@ double swing_lift(double stride, double u) {
 
 namespace {
 
-FootPose planted(Vec2 position, double orientation) {
+FootPose planted(Vec2 position, double orientation, double ground) {
   FootPose foot;
   foot.position = position;
   foot.orientation = orientation;
+  foot.ground = foot.swing_to_ground = ground;
   return foot;
 }
 
@@ -194,6 +195,8 @@ FootPose swing(const FootPose& from, const Footstep& to, double u) {
       wrap_angle(from.orientation + s * wrap_angle(to.foot_orientation - from.orientation));
   foot.lift = swing_lift(stride, u);
   foot.planted = stride == 0.0 && to.foot_orientation == from.orientation;
+  foot.ground = from.ground;
+  foot.swing_to_ground = to.foot_height;
   foot.swing_from = from.position;
   foot.swing_to = to.foot_position;
   foot.swing_from_orientation = from.orientation;
@@ -205,7 +208,8 @@ FootPose swing(const FootPose& from, const Footstep& to, double u) {
 // The feet before any step: where they stand.
 std::array<FootPose, 2> standing_feet(const AgentPlan& plan) {
   std::array<FootPose, 2> feet;
-  for (int f = 0; f < 2; ++f) feet[f] = planted(plan.start.feet[f], plan.start.facing);
+  for (int f = 0; f < 2; ++f)
+    feet[f] = planted(plan.start.feet[f], plan.start.facing, plan.start.foot_heights[f]);
   return feet;
 }
 
@@ -219,7 +223,7 @@ std::array<FootPose, 2> feet_during(const AgentPlan& plan, int k, double t) {
   for (int i = k - 1; i >= 0 && !(found[0] && found[1]); --i) {
     const int f = static_cast<int>(steps[i].foot);
     if (found[f]) continue;
-    feet[f] = planted(steps[i].foot_position, steps[i].foot_orientation);
+    feet[f] = planted(steps[i].foot_position, steps[i].foot_orientation, steps[i].foot_height);
     found[f] = true;
   }
   const Footstep& step = steps[k];
@@ -229,8 +233,8 @@ std::array<FootPose, 2> feet_during(const AgentPlan& plan, int k, double t) {
   // A start's foot stays as it was put down (its own orientation is chosen
   // again when a crowd's plan is complete; the pose must not change with it).
   feet[stepping] = step.kind == StepKind::kStart
-                       ? planted(before.position, before.orientation)
-                       : planted(step.foot_position, step.foot_orientation);
+                       ? planted(before.position, before.orientation, before.ground)
+                       : planted(step.foot_position, step.foot_orientation, step.foot_height);
   // One that leaves walks on off its last step: the other foot swings a
   // stride on (two COM chords), as the COM travels beyond the planted foot.
   const bool walks_off = k + 1 == static_cast<int>(steps.size()) && plan.leaves &&

@@ -79,15 +79,16 @@ class GroundFollower {
   FootOnGround swinging(const FootPose& pose, const Swing& swing, double u) const;
   /// The highest ground under the foot at `sole` turned to `heading`, below `ceiling`.
   double highest_under(Vec3 sole, double heading, double ceiling) const;
-  /// The standable ground's height under a planted foot (0 where none).
-  GroundPoint under(Vec2 p) const;
+  /// The standable ground under a foot at `p`: of its levels, the nearest
+  /// `near` (the plan's height for the foot; 0 where there is none).
+  GroundPoint under(Vec2 p, double near) const;
 
   const AgentPlan& plan_;
   const Ground& ground_;
   FootExtent extent_;
   double headroom_;
-  /// Each swing's course, found once: keyed by its ends.
-  mutable std::map<std::array<double, 4>, Swing> swings_;
+  /// Each swing's course, found once: keyed by its ends and their heights.
+  mutable std::map<std::array<double, 6>, Swing> swings_;
 };
 
 }  // namespace footfall::animate

@@ -131,6 +131,10 @@ class Ground {
   /// The lowest of standable_at(p, headroom), if any: on ground of one level
   /// at every point, the ground under a foot.
   std::optional<GroundPoint> standing_on(Vec2 p, double headroom) const;
+  /// Of standable_at(p, headroom), the nearest the height `z`, if any: the
+  /// level a foot is on, given the height of the ground it was on (levels
+  /// over one point lie a body's height apart, steps far less).
+  std::optional<GroundPoint> standable_near(Vec2 p, double z, double headroom) const;
   /// The edges of standable ground (standable_at) a body `headroom` tall
   /// cannot step across: where, 2 cm across, no standable level lies within
   /// `max_step` of the edge's height (a flight's sides, a platform's edge,

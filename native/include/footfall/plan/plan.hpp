@@ -126,6 +126,10 @@ struct FootPose {
   double orientation = 0;  ///< [rad]
   double lift = 0;         ///< Height of the sole above the ground. [m]
   bool planted = true;     ///< On the ground (stance), or swinging.
+  /// The height of the ground under it where it was planted last (its
+  /// step's foot_height; 0 on flat ground), and, while swinging, under where
+  /// it will be. [m]
+  double ground = 0, swing_to_ground = 0;
   /// While swinging: from where and which way it was planted, to where and
   /// which way it will be, and how far through the swing it is (0 to 1; the
   /// position and orientation follow it eased in and out).
