@@ -29,6 +29,7 @@ TMP = pathlib.Path(tempfile.mkdtemp(prefix="footfall-headless-"))
 RIG = ROOT / "rigs" / "footfall_humanoid.glb"
 PROFILE = ROOT / "rigs" / "footfall_humanoid.json"
 STAIRS = ROOT / "tests" / "data" / "stairs.json"
+BRIDGE = ROOT / "tests" / "data" / "bridge.json"
 GROUND_TOLERANCE = 0.01  # [m] a body's vertex below the ground under it
 TOLERANCE = 0.005  # [m] between the two animations' bones
 BONES = ("foot.L", "foot.R", "toe.L", "toe.R", "hand.L", "hand.R", "head")
@@ -107,7 +108,7 @@ def deepest_below_ground(plan, prisms, scene, frames):
         depsgraph = bpy.context.evaluated_depsgraph_get()
         for obj in bodies:
             points = evaluated_points(obj, depsgraph)
-            depth = ground_heights(prisms, points[:, :2]) - points[:, 2]
+            depth = ground_heights(prisms, points) - points[:, 2]
             k = int(numpy.argmax(depth))
             if depth[k] > worst[0]:
                 worst = (float(depth[k]), (frame, obj.name, tuple(round(float(c), 3) for c in points[k])))
@@ -152,37 +153,54 @@ def test_blender_and_the_core_put_the_bones_in_the_same_places():
     check(worst < TOLERANCE, f"Blender's file and the core's put the bones {1000 * worst:.1f} mm apart")
 
 
-def test_up_and_down_a_flight_blender_and_the_core_put_every_foot_on_its_tread():
-    """The stair crowd, applied keyed and live: the bones where the core's
-    writer puts them, and no vertex of a body more than 1 cm below the ground
-    under it at any frame (a toe in a riser, a sole through a tread)."""
+def check_on_ground(name, path, starts_on):
+    """The crowd of the scenario at `path`, applied keyed and live: the bones
+    where the core's writer puts them, the agents named with a prefix of
+    `starts_on` standing on the ground at its height at the first frame (their
+    soles on it, not above), and no vertex of a body more than 1 cm below the
+    ground under it at any frame (a toe in a riser, a sole through a tread);
+    the keyed crowd exported as the core's."""
     from footfall.core import native
 
     ff = native.load()
-    document = STAIRS.read_text()
-    plan = ff.plan_scenario(ff.parse_scenario(document, str(STAIRS)))
+    document = path.read_text()
+    plan = ff.plan_scenario(ff.parse_scenario(document, str(path)))
     prisms = json.loads(document)["ground"]
     for live in (False, True):
-        scene, crowd, times = applied_and_written(ff, plan, f"stairs-{'live' if live else 'keyed'}", live)
+        scene, crowd, times = applied_and_written(ff, plan, f"{name}-{'live' if live else 'keyed'}", live)
         core, worst, worst_knee, compared = bones_apart(plan, scene, crowd, times)
-        # Those starting up on the landing stand on it at the first frame: their soles on it, not above.
         scene.frame_set(scene.frame_start)
-        for agent in (a for a in plan.agents if a.name.startswith("down")):
-            sole = lowest_vertex(agent.name)
-            check(abs(sole - 1.02) < GROUND_TOLERANCE, f"{agent.name}'s sole is at {sole:.3f} m, not on the landing")
+        for agent in plan.agents:
+            for prefix, height in starts_on.items():
+                if agent.name.startswith(prefix):
+                    sole = lowest_vertex(agent.name)
+                    check(abs(sole - height) < GROUND_TOLERANCE,
+                          f"{agent.name}'s sole is at {sole:.3f} m, not on the ground at {height} m")
         depth, where = deepest_below_ground(plan, prisms, scene, range(scene.frame_start, scene.frame_end + 1))
-        print(f"stairs ({'live' if live else 'keyed'}): bones {1000 * worst:.2f} mm apart over {compared}, knees "
-              f"{1000 * worst_knee:.2f} mm; deepest vertex {1000 * depth:.1f} mm below the ground {where}")
+        print(f"{name} ({'live' if live else 'keyed'}): bones {1000 * worst:.2f} mm apart over {compared}, "
+              f"knees {1000 * worst_knee:.2f} mm; deepest vertex {1000 * depth:.1f} mm below the ground {where}")
         check(compared > 1000, f"only {compared} positions compared")
-        check(worst < TOLERANCE, f"on stairs the add-on's and the core's bones are {1000 * worst:.1f} mm apart")
-        check(worst_knee < KNEE_TOLERANCE, f"on stairs the knees are {1000 * worst_knee:.1f} mm apart")
+        check(worst < TOLERANCE, f"on {name} the add-on's and the core's bones are {1000 * worst:.1f} mm apart")
+        check(worst_knee < KNEE_TOLERANCE, f"on {name} the knees are {1000 * worst_knee:.1f} mm apart")
         check(depth < GROUND_TOLERANCE, f"a body's vertex {1000 * depth:.1f} mm below the ground at {where}")
         if not live:
-            exported = exported_apart(plan, scene, core, times, "stairs")
-            print(f"stairs: the exported file's bones {1000 * exported:.2f} mm from the core's")
-            check(exported < TOLERANCE, f"the exported stairs are {1000 * exported:.1f} mm from the core's")
+            exported = exported_apart(plan, scene, core, times, name)
+            print(f"{name}: the exported file's bones {1000 * exported:.2f} mm from the core's")
+            check(exported < TOLERANCE, f"the exported {name} are {1000 * exported:.1f} mm from the core's")
+
+
+def test_up_and_down_a_flight_blender_and_the_core_put_every_foot_on_its_tread():
+    """The stair crowd: those going down start on the landing, 1.02 m up."""
+    check_on_ground("stairs", STAIRS, {"down": 1.02})
+
+
+def test_on_and_under_a_bridge_every_foot_is_on_the_deck_or_the_street():
+    """tests/data/bridge.json: two cross a footbridge's deck from the bank,
+    2.89 m up, while two walk the street under it."""
+    check_on_ground("bridge", BRIDGE, {"over": 2.89, "under": 0.0})
 
 
 if __name__ == "__main__":
     run([test_blender_and_the_core_put_the_bones_in_the_same_places,
-         test_up_and_down_a_flight_blender_and_the_core_put_every_foot_on_its_tread])
+         test_up_and_down_a_flight_blender_and_the_core_put_every_foot_on_its_tread,
+         test_on_and_under_a_bridge_every_foot_is_on_the_deck_or_the_street])

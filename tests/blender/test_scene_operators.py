@@ -705,6 +705,42 @@ def test_a_stair_scene_loads_and_plans_with_every_agent_on_its_level():
           message)
 
 
+def test_a_bridge_scene_loads_and_plans_with_its_levels_apart():
+    """tests/data/bridge.json in Blender: a footbridge's deck over a street.
+    Loaded with those crossing on the bank and those under it on the street;
+    one moved onto the deck stands on it (read with its height); planned, every
+    one reaches on its own level; one lifted between the levels is refused
+    naming it, the scene as it was."""
+    from footfall.bridge import plan_store
+
+    fresh_scene()
+    bridge = ROOT / "tests" / "data" / "bridge.json"
+    check(bpy.ops.footfall.load_scenario(filepath=str(bridge)) == {"FINISHED"}, "the bridge did not load")
+    bpy.context.view_layer.update()
+    for agent in json.loads(bridge.read_text())["agents"]:
+        z = bpy.data.objects[agent["name"]].matrix_world.translation.z
+        check(abs(z - (2.89 if agent["name"].startswith("over") else 0.0)) < 1e-6, f"{agent['name']} stands at {z}")
+    bpy.data.objects["over0"].location = (-0.4, -3.5, 2.89)  # on the deck over the street (its goal too)
+    bpy.context.view_layer.update()
+    position = next(a["position"] for a in extract()["agents"] if a["name"] == "over0")
+    check(max(abs(a - b) for a, b in zip(position, [-0.4, -3.5, 2.89])) < 1e-6, position)
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "planning the bridge failed")
+    plan = plan_store.load_plan()
+    check(all(a.status.name == "REACHED" for a in plan.agents), "not every agent reached")
+    for agent in plan.agents:
+        heights = {round(s.foot_height, 6) for s in agent.footsteps}
+        check(heights == ({2.89} if agent.name.startswith("over") else {0.0}), f"{agent.name} on {heights}")
+
+    bpy.data.objects["under0"].location = (-0.2, -1.5, 1.4)  # under the deck, on neither level
+    bpy.context.view_layer.update()
+    before = inventory()
+    message = operator_error(bpy.ops.footfall.plan)
+    check("no ground to stand on within 0.50 m of its height 1.40 m" in message and "is agent 'under0'" in message,
+          message)
+    after = inventory()
+    check(after == before, f"a refused plan changed the scene: {[k for k in after if after[k] != before[k]]}")
+
+
 class RecordingOperator:
     """Stands in for an operator instance in a direct call of its `execute`:
     the properties it reads, and the reports it makes."""
@@ -1027,4 +1063,5 @@ run([test_load_builds_the_conventions_and_extracts_back, test_obstacles_keep_the
      test_failing_operators_report_and_cancel, test_steersuite_case_loads, test_the_overlay_draws_the_stored_plan,
      test_the_agent_panel_sets_and_shows_an_agents_properties, test_an_agent_turns_as_its_last_goal_is_turned,
      test_an_agent_faces_a_goal_it_waits_at_as_that_goal_is_turned,
-     test_a_stair_scene_loads_and_plans_with_every_agent_on_its_level])
+     test_a_stair_scene_loads_and_plans_with_every_agent_on_its_level,
+     test_a_bridge_scene_loads_and_plans_with_its_levels_apart])

@@ -195,7 +195,8 @@ LayeredPath LayeredNavigation::route(const PathQuery& query, int from_layer, int
   cost[0] = 0;
   open.push({0, 0});
   while (!open.empty()) {
-    const auto [c, s] = open.top();
+    const double c = open.top().first;  // not bound: lambdas below take them
+    const int s = open.top().second;
     open.pop();
     if (done[s]) continue;
     done[s] = true;
