@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "footfall/crowd/crowd_planner.hpp"
+#include "footfall/ground/foothold.hpp"
 #include "navmesh/outline_union.hpp"
 
 namespace footfall {
@@ -24,11 +25,6 @@ std::string two_places(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.2f", value);
   return text;
-}
-
-/// The lower of the scenario character's step limits: what no one of it steps across.
-double step_of(const Scenario& scenario) {
-  return std::min(scenario.character.max_step_up, scenario.character.max_step_down);
 }
 
 /// A place a way may stand at: on one layer, at a point (the start, the
@@ -101,13 +97,12 @@ NavMesh layer_navmesh(const Scenario& scenario, const GroundLayers& layers, int 
 
 NavMesh navmesh_of(const Scenario& scenario, double margin) {
   const Ground ground(scenario.ground);
-  return layer_navmesh(scenario, ground.layers(step_of(scenario), scenario.character.body_height),
-                       0, margin);
+  return layer_navmesh(scenario, layers_for(ground, scenario.character), 0, margin);
 }
 
 LayeredNavigation::LayeredNavigation(const Scenario& scenario, double margin)
     : ground_(std::make_unique<const Ground>(scenario.ground)),
-      layers_(ground_->layers(step_of(scenario), scenario.character.body_height)) {
+      layers_(layers_for(*ground_, scenario.character)) {
   for (int layer = 0; layer < layers_.count(); ++layer)
     meshes_.push_back(layer_navmesh(scenario, layers_, layer, margin));
 }

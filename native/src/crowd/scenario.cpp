@@ -173,9 +173,7 @@ GroundLayers check_on_ground(const Scenario& scenario, const Ground& ground,
                             k < agent.goal_heights.size() ? agent.goal_heights[k] : std::nullopt,
                             headroom, item(child(path, "goals"), k));
   }
-  const double headroom = scenario.character.body_height;
-  GroundLayers layers = ground.layers(
-      std::min(scenario.character.max_step_up, scenario.character.max_step_down), headroom);
+  GroundLayers layers = layers_for(ground, scenario.character);
   if (ground.empty()) return layers;
   for (std::size_t i = 0; i < scenario.agents.size(); ++i) {
     const AgentSpec& agent = scenario.agents[i];

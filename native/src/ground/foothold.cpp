@@ -28,6 +28,11 @@ std::optional<GroundPoint> foothold_level(const Ground& ground, const CharacterP
   return ground.standable_near(foot, beside, character.body_height);
 }
 
+GroundLayers layers_for(const Ground& ground, const CharacterParams& character) {
+  return ground.layers(std::min(character.max_step_up, character.max_step_down),
+                       character.body_height, std::cos(character.max_slope));
+}
+
 FootstepState standing_on_ground(const Ground& ground, const CharacterParams& character,
                                  Vec2 position, double facing, std::optional<double> height) {
   FootstepState state = standing_state(position, facing, character);

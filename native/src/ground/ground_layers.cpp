@@ -71,7 +71,7 @@ std::optional<GroundPoint> GroundLayers::level_on(Vec2 p, int layer) const {
   return std::nullopt;
 }
 
-GroundLayers Ground::layers(double max_step, double headroom) const {
+GroundLayers Ground::layers(double max_step, double headroom, double min_normal_z) const {
   GroundLayers layers;
   layers.ground_ = this;
   layers.headroom_ = headroom;
@@ -90,7 +90,7 @@ GroundLayers Ground::layers(double max_step, double headroom) const {
       }
   });
   if (!stacked) {
-    layers.walls_.push_back(walls(max_step, headroom));
+    layers.walls_.push_back(walls(max_step, headroom, min_normal_z));
     return layers;
   }
   std::vector<int>& layer_of = layers.face_layer_;
@@ -119,8 +119,11 @@ GroundLayers Ground::layers(double max_step, double headroom) const {
           std::vector<Run> here;
           if (i < samples) {
             const Vec2 s = a + ((i + 0.5) / samples) * (b - a);
-            here = runs_at(standable_at(s - kEdgeBeside * outward, headroom),
-                           standable_at(s + kEdgeBeside * outward, headroom), layers, max_step);
+            const auto standable = [&](Vec2 p) {
+              return not_too_steep(standable_at(p, headroom), min_normal_z);
+            };
+            here = runs_at(standable(s - kEdgeBeside * outward),
+                           standable(s + kEdgeBeside * outward), layers, max_step);
           }
           for (auto run = open.begin(); run != open.end();) {
             if (std::find(here.begin(), here.end(), run->first) != here.end()) {
@@ -137,7 +140,10 @@ GroundLayers Ground::layers(double max_step, double headroom) const {
           for (const Run& run : here) open.emplace(run, i);
         }
       },
-      [&](int f, int g) { return layer_of[f] != layer_of[g]; });
+      [&](int f, int g) {
+        const auto steep = [&](int face) { return faces_[face].normal.z < min_normal_z; };
+        return layer_of[f] != layer_of[g] || steep(f) != steep(g);
+      });
   return layers;
 }
 

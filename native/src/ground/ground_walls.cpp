@@ -21,8 +21,13 @@ bool any_within(const std::vector<GroundPoint>& levels, double z, double reach) 
 
 }  // namespace
 
-std::vector<GroundWall> Ground::walls(double max_step, double headroom) const {
+std::vector<GroundWall> Ground::walls(double max_step, double headroom,
+                                      double min_normal_z) const {
   std::vector<GroundWall> walls;
+  const auto standable = [&](Vec2 p) {
+    return not_too_steep(standable_at(p, headroom), min_normal_z);
+  };
+  const auto steep = [&](int f) { return faces_[f].normal.z < min_normal_z; };
   visit_walkable_edges([&](Vec2 a, Vec2 b, double za, double zb, Vec2 outward) {
     const int samples = std::max(1, static_cast<int>(std::ceil(length(b - a) / kEdgeSpacing)));
     int run = -1;  // the first sample of the current run of wall samples
@@ -33,8 +38,8 @@ std::vector<GroundWall> Ground::walls(double max_step, double headroom) const {
         const Vec2 s = a + t * (b - a);
         const double z = za + t * (zb - za);
         // Only where the face itself is stood on; beyond the step, nothing to stand on.
-        wall = any_within(standable_at(s - kEdgeBeside * outward, headroom), z, kOwnLevel) &&
-               !any_within(standable_at(s + kEdgeBeside * outward, headroom), z, max_step);
+        wall = any_within(standable(s - kEdgeBeside * outward), z, kOwnLevel) &&
+               !any_within(standable(s + kEdgeBeside * outward), z, max_step);
       }
       if (wall && run < 0) run = i;
       if (!wall && run >= 0) {
@@ -43,7 +48,7 @@ std::vector<GroundWall> Ground::walls(double max_step, double headroom) const {
         run = -1;
       }
     }
-  }, kNoSharedEdges);
+  }, [&](int f, int g) { return steep(f) != steep(g); });
   return walls;
 }
 

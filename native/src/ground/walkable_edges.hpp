@@ -19,6 +19,18 @@ constexpr double kEdgeBeside = 0.02;
 /// For visit_walkable_edges: no edge two walkable triangles of a mesh share.
 constexpr auto kNoSharedEdges = [](int, int) { return false; };
 
+/// `levels` without those steeper than a normal's `min_normal_z`: no ground
+/// to stand on, for the walls.
+inline std::vector<GroundPoint> not_too_steep(std::vector<GroundPoint> levels,
+                                              double min_normal_z) {
+  levels.erase(std::remove_if(levels.begin(), levels.end(),
+                              [&](const GroundPoint& level) {
+                                return level.normal.z < min_normal_z;
+                              }),
+               levels.end());
+  return levels;
+}
+
 /// Twice the signed area of a polygon: positive when it winds anticlockwise.
 inline double twice_signed_area(const std::vector<Vec2>& polygon) {
   double twice = 0.0;

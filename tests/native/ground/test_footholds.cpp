@@ -242,5 +242,28 @@ TEST(Footholds, WalkersCrossAHillWithEveryFootOnItsSlope) {
   EXPECT_EQ(check.off_ground + check.unsupported + check.over_rise + check.swing, 0);
 }
 
+TEST(Footholds, ASlopeTooSteepIsWalledRoundAndWalkedRound) {
+  // A mound 3 m high and 1 m wide (a Gaussian): steeper than max_slope (25
+  // degrees) from 0.16 m to 2.3 m from its top, where it is 0.21 m high.
+  Scenario scenario;
+  scenario.ground.push_back(hill_field(60, 0.3, 3.0, 1.0));
+  scenario.agents.push_back({"walker", {-8, 0.2}, 0.0, {{8, 0.2}}});
+  const Ground ground(scenario.ground);
+  const std::vector<GroundWall> walls =
+      ground.walls(0.25, 1.75, std::cos(scenario.character.max_slope));
+  double farthest = 0;  // of the walls on the mound, not round the field's rim
+  for (const GroundWall& wall : walls)
+    if (length(wall.a) < 5) farthest = std::max(farthest, length(wall.a));
+  EXPECT_NEAR(farthest, 2.3, 0.3) << "the steep ring is walled round";
+  const Plan plan = plan_scenario(scenario);
+  ASSERT_EQ(plan.agents[0].status, AgentStatus::kReached) << plan.agents[0].reason;
+  const GroundCheck check = check_ground(plan);
+  EXPECT_EQ(check.off_ground + check.unsupported + check.over_rise + check.swing, 0);
+  for (const Footstep& step : plan.agents[0].footsteps) {
+    EXPECT_GT(length(step.foot_position), 2.0);
+    EXPECT_LT(step.foot_height, 0.3);
+  }
+}
+
 }  // namespace
 }  // namespace footfall

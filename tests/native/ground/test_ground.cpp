@@ -165,7 +165,7 @@ TEST(Ground, AFlightIsWalledAtItsSidesAndOpenAtEveryTreadWithinTheStep) {
   const auto across_the_flight = [](Vec2 m) {
     return m.x > -4.99 && m.x < 3.99 && std::fabs(m.y) < 0.99;
   };
-  const std::vector<GroundWall> walls = ground.walls(0.25, 1.75);
+  const std::vector<GroundWall> walls = ground.walls(0.25, 1.75, 0.0);
   EXPECT_EQ(wall_length(walls, across_the_flight), 0.0);
   // Its sides, from the first tread to the landing, both sides.
   EXPECT_NEAR(wall_length(walls, [](Vec2 m) { return m.x > 0 && m.x < 1.5; }), 3.0, 1e-9);
@@ -173,7 +173,7 @@ TEST(Ground, AFlightIsWalledAtItsSidesAndOpenAtEveryTreadWithinTheStep) {
   EXPECT_NEAR(wall_length(walls, [](Vec2) { return true; }), 22.0, 1e-9);
   // Risers of 0.17 m are walls to a body that steps 0.15 m at most: the
   // five below the landing, each seen from the tread above and below.
-  EXPECT_NEAR(wall_length(ground.walls(0.15, 1.75), across_the_flight), 2.0 * 5 * 2, 1e-9);
+  EXPECT_NEAR(wall_length(ground.walls(0.15, 1.75, 0.0), across_the_flight), 2.0 * 5 * 2, 1e-9);
 }
 
 TEST(Ground, APlatformTooHighToStepIsReachedByTheRampBesideIt) {
@@ -183,7 +183,7 @@ TEST(Ground, APlatformTooHighToStepIsReachedByTheRampBesideIt) {
   const Ground ground({ground_prism(rectangle(-5, -5, 10, 5), 0.0),
                        ground_prism(rectangle(4, -5, 10, 5), 0.8), up});
   EXPECT_EQ(ground.standable_at({2, 0}, 1.75).size(), 1u) << "the floor under the ramp is covered";
-  const std::vector<GroundWall> walls = ground.walls(0.25, 1.75);
+  const std::vector<GroundWall> walls = ground.walls(0.25, 1.75, 0.0);
   // The platform's edge is a wall but where the ramp meets it.
   EXPECT_NEAR(wall_length(walls, [](Vec2 m) { return std::fabs(m.x - 4) < 0.01; }), 8.0, 1e-9);
   // The ramp's sides are walls where it is a step above the floor: from
@@ -266,7 +266,7 @@ TEST(Ground, AHeightFieldWithASpikeAnswersEveryPoint) {
   EXPECT_EQ(ground.walkable_faces(), 2u * n * n);
   // Walls only round its rim (the spike's slopes are the step limit's
   // business, not the walls'): the triangles' shared edges are not sampled.
-  EXPECT_NEAR(wall_length(ground.walls(0.25, 1.75), [](Vec2) { return true; }), 4.0 * n, 1e-9);
+  EXPECT_NEAR(wall_length(ground.walls(0.25, 1.75, 0.0), [](Vec2) { return true; }), 4.0 * n, 1e-9);
   EXPECT_DOUBLE_EQ(ground.levels_at({10.3, 20.7}).at(0).z, 0.0);
   EXPECT_NEAR(ground.levels_at({29.75, 30.0}).at(0).z, 750.0, 1e-6);
 }

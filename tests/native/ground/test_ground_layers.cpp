@@ -32,10 +32,10 @@ bool wall_near(const std::vector<GroundWall>& walls, Vec2 p, double reach) {
 
 TEST(GroundLayers, GroundWithOneLevelEverywhereIsOneLayerWithItsWalls) {
   const Ground ground(stairs_scenario(0, 0).ground);
-  const GroundLayers layers = ground.layers(kStep, kHeadroom);
+  const GroundLayers layers = ground.layers(kStep, kHeadroom, 0.0);
   ASSERT_EQ(layers.count(), 1);
   EXPECT_TRUE(layers.portals().empty());
-  const std::vector<GroundWall> walls = ground.walls(kStep, kHeadroom);
+  const std::vector<GroundWall> walls = ground.walls(kStep, kHeadroom, 0.0);
   ASSERT_EQ(layers.walls(0).size(), walls.size());
   for (std::size_t i = 0; i < walls.size(); ++i) {
     EXPECT_EQ(layers.walls(0)[i].a, walls[i].a);
@@ -45,7 +45,7 @@ TEST(GroundLayers, GroundWithOneLevelEverywhereIsOneLayerWithItsWalls) {
 
 TEST(GroundLayers, ABridgesDeckIsALayerOfItsOwnJoinedToTheBanks) {
   const Ground ground(bridge_scenario(0, 0).ground);
-  const GroundLayers layers = ground.layers(kStep, kHeadroom);
+  const GroundLayers layers = ground.layers(kStep, kHeadroom, 0.0);
   ASSERT_EQ(layers.count(), 2);
   const int street = layer_near(layers, ground, {0, 0}, 0.0);
   const int deck = layer_near(layers, ground, {0, 0}, kBridgeHeight);
@@ -80,7 +80,7 @@ TEST(GroundLayers, PierUnderTheDeckBlocksTheStreetOnly) {
   scenario.obstacles.push_back(prism({{-0.3, -0.3}, {0.3, -0.3}, {0.3, 0.3}, {-0.3, 0.3}},
                                      kBridgeHeight - 0.2, 0.0));
   const Ground ground(scenario.ground);
-  const GroundLayers layers = ground.layers(kStep, kHeadroom);
+  const GroundLayers layers = ground.layers(kStep, kHeadroom, 0.0);
   const int street = layer_near(layers, ground, {0, 0}, 0.0);
   const int deck = 1 - street;
   EXPECT_EQ(cut_heights(layers, scenario.obstacles, street)[0], kHeadroom);

@@ -36,6 +36,10 @@ enum class FootholdFault {
 std::optional<GroundPoint> foothold_level(const Ground& ground, const CharacterParams& character,
                                           Vec2 foot, double beside);
 
+/// The ground's layers (Ground::layers) for `character`: its height, the
+/// lower of its step limits, its steepest slope.
+GroundLayers layers_for(const Ground& ground, const CharacterParams& character);
+
 /// A body of `character` standing at `position` facing `facing`
 /// (standing_state) on the ground: each foot on the standable level nearest
 /// `height` where given, else on the lowest (the only one, in a checked

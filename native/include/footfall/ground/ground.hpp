@@ -139,19 +139,23 @@ class Ground {
   /// cannot step across: where, 2 cm across, no standable level lies within
   /// `max_step` of the edge's height (a flight's sides, a platform's edge,
   /// the rim of all ground, the border of a face facing down), sampled every
-  /// 5 cm. They close round every piece of ground a walker can reach. Edges
-  /// a mesh's two walkable triangles share are not walls.
-  std::vector<GroundWall> walls(double max_step, double headroom) const;
+  /// 5 cm; ground steeper than a normal's `min_normal_z` (the cosine of the
+  /// steepest walkable slope) is no standable level, so a slope too steep is
+  /// walled round. They close round every piece of ground a walker can
+  /// reach. Edges a mesh's two walkable triangles share are not walls, but
+  /// where one of them is too steep.
+  std::vector<GroundWall> walls(double max_step, double headroom, double min_normal_z) const;
   /// A point with two standable levels over it, if any: checked every 5 cm
   /// along each walkable face's edges, 2 cm inside it (where two faces
   /// overlap, one's edge runs inside the other).
   std::optional<StackedLevels> stacked_levels(double headroom) const;
   /// The ground's layers for a body `headroom` tall stepping at most
-  /// `max_step` up or down: faces standable over one point (found as
+  /// `max_step` up or down, on slopes whose normal has at least
+  /// `min_normal_z` (walls()): faces standable over one point (found as
   /// stacked_levels finds them) lie in different layers, each face in the
   /// first layer it fits. Throws std::invalid_argument ("ground: ...") past
   /// GroundLayers::kMaxLayers.
-  GroundLayers layers(double max_step, double headroom) const;
+  GroundLayers layers(double max_step, double headroom, double min_normal_z) const;
   /// The level over `p` nearest the height `z`, if one lies within `reach`.
   std::optional<GroundPoint> level_near(Vec2 p, double z, double reach) const;
   /// The share of `sole` (sampled on a 7 x 4 grid) over a walkable face
