@@ -709,8 +709,8 @@ def test_a_bridge_scene_loads_and_plans_with_its_levels_apart():
     """tests/data/bridge.json in Blender: a footbridge's deck over a street.
     Loaded with those crossing on the bank and those under it on the street;
     one moved onto the deck stands on it (read with its height); planned, every
-    one reaches on its own level; one lifted between the levels is refused
-    naming it, the scene as it was."""
+    one reaches on its own level; agents scattered on the deck stand on it;
+    one lifted between the levels is refused naming it, the scene as it was."""
     from footfall.bridge import plan_store
 
     fresh_scene()
@@ -730,6 +730,24 @@ def test_a_bridge_scene_loads_and_plans_with_its_levels_apart():
     for agent in plan.agents:
         heights = {round(s.foot_height, 6) for s in agent.footsteps}
         check(heights == ({2.89} if agent.name.startswith("over") else {0.0}), f"{agent.name} on {heights}")
+
+    # Scattered on the deck (a region drawn on it, over the street), bound for
+    # the north bank: each stands on the deck, not on the street under it.
+    bpy.ops.mesh.primitive_plane_add(size=1, location=(0, 0, 2.89))
+    deck = bpy.context.active_object
+    deck.scale = (1.6, 6, 1)
+    bpy.ops.mesh.primitive_plane_add(size=1, location=(-6, 9, 2.89))
+    bank = bpy.context.active_object
+    bank.scale = (8, 4, 1)
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(obj in (deck, bank))
+    bpy.context.view_layer.objects.active = bank
+    check(bpy.ops.footfall.scatter_agents(count=4, seed=2, spacing=0.8, prefix="Crosser") == {"FINISHED"},
+          "scatter on the deck failed")
+    for k in range(1, 5):
+        p = bpy.data.objects[f"Crosser {k}"].matrix_world.translation
+        check(abs(p.z - 2.89) < 1e-6 and abs(p.x) < 1 and abs(p.y) < 4, f"Crosser {k} at {p} is not on the deck")
+    check(bpy.ops.footfall.plan() == {"FINISHED"}, "planning those scattered on the deck failed")
 
     bpy.data.objects["under0"].location = (-0.2, -1.5, 1.4)  # under the deck, on neither level
     bpy.context.view_layer.update()

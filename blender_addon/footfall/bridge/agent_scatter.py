@@ -48,10 +48,10 @@ def scatter(scene, start_region, goal_region, count: int, seed: int, spacing: fl
         starts, goals = _draw_on_ground(rng, core.Ground([_native_obstacle(core, g) for g in surfaces]), character,
                                         start_region, goal_region, count, spacing, clearance, blocked, core, standing)
     else:
-        starts = _draw(rng, _triangles_from_above(start_region), count, spacing, clearance, blocked, core, standing,
-                       start_region.name)
-        goals = _draw(rng, _triangles_from_above(goal_region), count, spacing, clearance, blocked, core, [],
-                      goal_region.name)
+        starts = [p[:2] for p in _draw(rng, _triangles_from_above(start_region), count, spacing, clearance, blocked,
+                                       core, standing, start_region.name)]
+        goals = [p[:2] for p in _draw(rng, _triangles_from_above(goal_region), count, spacing, clearance, blocked,
+                                      core, [], goal_region.name)]
     names = _free_names(prefix, count)
     document = {"format": "footfall-scenario", "version": 1, "agents": [
         {"name": name, "position": list(start), "goals": [list(goal)],
@@ -73,16 +73,22 @@ def _facing(start, goal) -> float:
 def _draw_on_ground(rng, ground, character, start_region, goal_region, count, spacing, clearance, blocked, core,
                     taken):
     """(starts, goals) as _draw's, on `ground` (x, y, z): the goals drawn
-    first where a body stands, then each start where a body stands facing its goal."""
+    first where a body stands, then each start where a body stands facing its
+    goal; each on the level of ground nearest its region there (the deck of a
+    bridge, for a region drawn on it; the street, for one drawn under it)."""
     def height(point):
-        return ground.standing_height(point[0], point[1], character.body_height)
+        return ground.standing_height(point[0], point[1], character.body_height, point[2])
+
+    def stands_facing_goal(point, k):
+        z = height(point)
+        return z is not None and ground.standing_problem(
+            character, point[0], point[1], _facing(point, goals[k]), z) is None
 
     goals = _draw(rng, _triangles_from_above(goal_region), count, spacing, clearance, blocked, core, [],
                   goal_region.name, lambda point, _: height(point) is not None)
     starts = _draw(rng, _triangles_from_above(start_region), count, spacing, clearance, blocked, core, taken,
-                   start_region.name, lambda point, k: ground.standing_problem(
-                       character, point[0], point[1], _facing(point, goals[k])) is None)
-    return ([(*p, height(p)) for p in starts], [(*p, height(p)) for p in goals])
+                   start_region.name, stands_facing_goal)
+    return ([(*p[:2], height(p)) for p in starts], [(*p[:2], height(p)) for p in goals])
 
 
 def _native_obstacle(core, obstacle):
@@ -92,10 +98,10 @@ def _native_obstacle(core, obstacle):
 
 
 def _triangles_from_above(region) -> np.ndarray:
-    """The region's evaluated triangles in world XY, shape (n, 3, 2), those
-    seen edge-on left out."""
+    """The region's evaluated triangles in the world, shape (n, 3, 3), those
+    seen edge-on from above left out."""
     mesh = world_mesh(region, bpy.context.evaluated_depsgraph_get())
-    triangles = mesh.points[mesh.triangles][:, :, :2]
+    triangles = mesh.points[mesh.triangles]
     area = np.abs(_cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0]))
     triangles = triangles[area > 1e-12]
     if len(triangles) == 0:
@@ -108,9 +114,10 @@ def _cross(a, b):
 
 
 def _draw(rng, triangles, count, spacing, clearance, blocked, core, taken, region_name, stands=None):
-    """`count` points drawn uniformly over `triangles`, each clear of the
-    obstacles by `clearance` and `spacing` from the others and from `taken`
-    (and, given `stands`, where stands(point, how many drawn before) holds)."""
+    """`count` points (x, y, z) drawn uniformly over `triangles` seen from
+    above, each clear of the obstacles by `clearance` and `spacing` from the
+    others and from `taken` (points in plan), and, given `stands`, where
+    stands(point, how many drawn before) holds."""
     area = np.abs(_cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0]))
     weights = area / area.sum()
     points, others = [], list(taken)
@@ -122,11 +129,11 @@ def _draw(rng, triangles, count, spacing, clearance, blocked, core, taken, regio
         if u + v > 1:
             u, v = 1 - u, 1 - v
         point = a + u * (b - a) + v * (c - a)
-        if any(math.dist(point, other) < spacing for other in others):
+        if any(math.dist(point[:2], other[:2]) < spacing for other in others):
             continue
-        if blocked.overlaps(core.Circle(tuple(point), clearance)):
+        if blocked.overlaps(core.Circle(tuple(point[:2]), clearance)):
             continue
-        point = (round(float(point[0]), 6), round(float(point[1]), 6))
+        point = tuple(round(float(coordinate), 6) for coordinate in point)
         if stands is not None and not stands(point, len(points)):
             continue
         points.append(point)
