@@ -140,9 +140,11 @@ LocalGoal aim_of(const Walker& w, const FootstepPlanner& planner, const NavMesh*
 /// The snapshot at time t of the agents whose plans `walks` read (one each,
 /// kept from tick to tick: the step under way is found from the last tick's),
 /// with their bounds from `bounds_from` on, who gives way, and where they are
-/// thick (on `crowd_grid`, if given).
+/// thick (on `crowd_grids`, one per layer of `ways`, if any), each agent
+/// counted on the layer it stands on.
 Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& walks, double t,
-                  double bounds_from, const CrowdGrid* crowd_grid) {
+                  double bounds_from, const std::vector<CrowdGrid>& crowd_grids,
+                  const CrowdWays& ways) {
   Snapshot s{t,
              std::vector<Vec2>(walkers.size()),
              std::vector<char>(walkers.size()),
@@ -160,11 +162,16 @@ Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& wal
     s.bounds[j] = walkers[j].bounds->from(bounds_from);
   }
   s.grid = AgentGrid(s.com, kGridCell);
-  if (crowd_grid != nullptr) {
-    std::vector<const Way*> ways(walkers.size(), nullptr);
-    for (std::size_t j = 0; j < walkers.size(); ++j)
-      if (!walkers[j].done && !walkers[j].ways.empty()) ways[j] = &walkers[j].ways.front().way;
-    s.crowd = CrowdDensity(*crowd_grid, s.com, s.present, ways);
+  std::vector<const Way*> going(walkers.size(), nullptr);
+  for (std::size_t j = 0; j < walkers.size(); ++j)
+    if (!walkers[j].done && !walkers[j].ways.empty()) going[j] = &walkers[j].ways.front().way;
+  for (std::size_t layer = 0; layer < crowd_grids.size(); ++layer) {
+    std::vector<char> on = s.present;
+    if (crowd_grids.size() > 1)
+      for (std::size_t j = 0; j < walkers.size(); ++j)
+        on[j] = on[j] && ways.layered->layer_under(s.com[j], s.ground[j]) ==
+                             static_cast<int>(layer);
+    s.crowds.emplace_back(crowd_grids[layer], s.com, on, going);
   }
   for (std::size_t j = 0; j < walkers.size(); ++j) s.giving_way[j] = gives_way(walkers, j, s);
   return s;
@@ -646,9 +653,13 @@ std::vector<AgentPlan> plan_on(const std::vector<AgentSpec>& agents,
   std::vector<std::vector<Footstep>> settled(walkers.size());
   std::vector<FootstepState> first_states;
   for (const Walker& w : walkers) first_states.push_back(w.plan.start);
-  std::optional<CrowdGrid> crowd_grid;
-  if (ways.first() != nullptr)
-    crowd_grid.emplace(*ways.first(), sway_room(planners.front()->character()));
+  std::vector<CrowdGrid> crowd_grids;  // one per layer
+  const double sway = sway_room(planners.front()->character());
+  if (ways.layered != nullptr)
+    for (int layer = 0; layer < ways.layered->layers(); ++layer)
+      crowd_grids.emplace_back(ways.layered->mesh(layer), sway);
+  else if (ways.mesh != nullptr)
+    crowd_grids.emplace_back(*ways.mesh, sway);
   // Two views (see the top of this file), one per tick in flight; each is
   // brought up to date from the walkers changed since it last was. Bounds
   // and samples are shared with the walkers, not copied.
@@ -773,7 +784,7 @@ std::vector<AgentPlan> plan_on(const std::vector<AgentSpec>& agents,
         const double from = kept > 0 ? w.plan.footsteps[kept - 1].start_time : w.state.time;
         trials_from = std::min(trials_from, from);
       }
-      jobs.at = snapshot(walkers, walks, t, trials_from, crowd_grid ? &*crowd_grid : nullptr);
+      jobs.at = snapshot(walkers, walks, t, trials_from, crowd_grids, ways);
       const std::size_t n = jobs.due.size();
       jobs.idle.resize(n);
       for (std::size_t k = 0; k < n; ++k) jobs.idle[k] = nothing_new(walkers, jobs.due[k], jobs.at);

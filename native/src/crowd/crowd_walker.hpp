@@ -240,8 +240,9 @@ struct Snapshot {
   std::vector<PlanBounds::From> bounds;
   /// Per agent: it goes after every other (gives_way()).
   std::vector<char> giving_way;
-  /// Where the present agents are thick (none without a mesh).
-  CrowdDensity crowd;
+  /// Per layer of ground (one but on levels above one another), where the
+  /// present agents on it are thick (none without a mesh).
+  std::vector<CrowdDensity> crowds;
   /// Per agent, the height of the ground it stands on (ground_at), and the
   /// body's height: agents on levels apart by that much never meet.
   std::vector<double> ground;

@@ -42,9 +42,11 @@ bool guided_way(const std::vector<Vec2>& guide, const NavMesh* mesh,
 /// so it would come out the same); else its annotated way where it has one
 /// (unless it takes the roomiest ways, stuck once); else measured anew, a
 /// roomy way out of a tight place passing none of the agents it sees
-/// (`seen`, where they stand `now`), or round a crowd on it (congestion.hpp).
-Way way_toward(const Walker& w, const NavMesh* mesh, const CharacterParams& character, Vec2 from,
-               Vec2 goal, const std::vector<std::size_t>& seen, const Snapshot& now) {
+/// (`seen`, where they stand `now`), or round a crowd on it (`crowd`, if
+/// any: congestion.hpp).
+Way way_toward(const Walker& w, const NavMesh* mesh, const CrowdDensity* crowd,
+               const CharacterParams& character, Vec2 from, Vec2 goal,
+               const std::vector<std::size_t>& seen, const Snapshot& now) {
   for (const KnownWay& k : w.ways)
     if (k.from == from && k.goal == goal) return k.way;
   Way way;
@@ -55,8 +57,8 @@ Way way_toward(const Walker& w, const NavMesh* mesh, const CharacterParams& char
     for (const std::size_t j : seen)
       if (now.present[j]) others.push_back(now.com[j]);
   way = footfall::way_toward(mesh, character, from, goal, w.roomy, others, w.roomy_at);
-  if (mesh == nullptr || w.roomy) return way;
-  std::optional<Way> round = now.crowd.way_round(way, *mesh, sway_room(character));
+  if (mesh == nullptr || crowd == nullptr || w.roomy) return way;
+  std::optional<Way> round = crowd->way_round(way, *mesh, sway_room(character));
   return round ? std::move(*round) : way;
 }
 
@@ -76,12 +78,14 @@ LayerWay way_on(const Walker& w, const CrowdWays& ways, const CharacterParams& c
                 const FootstepState& from, const std::vector<std::size_t>& seen,
                 const Snapshot& now) {
   const Vec2 goal = w.spec->goals[w.goal];
+  const int here = ways.layer_of(from);
   const NavMesh* mesh = ways.mesh_at(from);
+  const CrowdDensity* crowd = now.crowds.empty() ? nullptr : &now.crowds[here];
   const auto direct = [&] {
-    return LayerWay{way_toward(w, mesh, character, from.com, goal, seen, now), std::nullopt};
+    return LayerWay{way_toward(w, mesh, crowd, character, from.com, goal, seen, now),
+                    std::nullopt};
   };
   if (ways.layered == nullptr || ways.layered->layers() == 1) return direct();
-  const int here = ways.layer_of(from);
   const std::vector<std::optional<double>>& heights = w.spec->goal_heights;
   const double goal_height = w.goal < heights.size() && heights[w.goal]
                                  ? *heights[w.goal]
@@ -94,7 +98,8 @@ LayerWay way_on(const Walker& w, const CrowdWays& ways, const CharacterParams& c
   while (k < route.layers.size() && route.layers[k] == route.layers[k - 1]) ++k;
   if (route.path.status != PathStatus::kFound || k >= route.layers.size()) return direct();
   const std::vector<Vec2>& points = route.path.points;
-  LayerWay on{way_toward(w, mesh, character, from.com, points[k - 1], seen, now), points[k]};
+  LayerWay on{way_toward(w, mesh, crowd, character, from.com, points[k - 1], seen, now),
+              points[k]};
   for (std::size_t j = k; j < points.size(); ++j) on.way.length += distance(points[j - 1], points[j]);
   return on;
 }

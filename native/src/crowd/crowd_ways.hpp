@@ -23,8 +23,6 @@ struct CrowdWays {
   int layer_of(const FootstepState& state) const;
   /// The mesh of that layer.
   const NavMesh* mesh_at(const FootstepState& state) const;
-  /// The mesh over the whole domain: the one, or the first layer's.
-  const NavMesh* first() const { return layered != nullptr ? &layered->mesh(0) : mesh; }
 };
 
 /// A walker's way on the layer it stands on.
