@@ -50,7 +50,8 @@ Way way_toward(const Walker& w, const NavMesh* mesh, const CrowdDensity* crowd,
   for (const KnownWay& k : w.ways)
     if (k.from == from && k.goal == goal) return k.way;
   Way way;
-  if (!w.roomy && w.goal < w.guides.size() && guided_way(w.guides[w.goal], mesh, character, from, way))
+  if (!w.roomy && w.goal < w.guides.size() &&
+      guided_way(w.guides[w.goal], mesh, character, from, way))
     return way;
   std::vector<Vec2> others;
   if (w.roomy)
@@ -100,7 +101,8 @@ LayerWay way_on(const Walker& w, const CrowdWays& ways, const CharacterParams& c
   const std::vector<Vec2>& points = route.path.points;
   LayerWay on{way_toward(w, mesh, crowd, character, from.com, points[k - 1], seen, now),
               points[k]};
-  for (std::size_t j = k; j < points.size(); ++j) on.way.length += distance(points[j - 1], points[j]);
+  for (std::size_t j = k; j < points.size(); ++j)
+    on.way.length += distance(points[j - 1], points[j]);
   return on;
 }
 

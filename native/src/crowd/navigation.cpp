@@ -111,7 +111,8 @@ int LayeredNavigation::layer_at(Vec2 p, std::optional<double> z, const std::stri
   if (ground_->empty()) return 0;
   const std::vector<GroundPoint> levels = ground_->standable_at(p, layers_.headroom());
   const std::string where = "(" + two_places(p.x) + ", " + two_places(p.y) + ")";
-  if (levels.empty()) throw std::invalid_argument(field + ": " + where + " is over no ground to stand on");
+  if (levels.empty())
+    throw std::invalid_argument(field + ": " + where + " is over no ground to stand on");
   if (z) {
     const std::optional<GroundPoint> nearest = ground_->standable_near(p, *z, layers_.headroom());
     if (std::fabs(nearest->z - *z) > kHeightReach)
@@ -167,7 +168,8 @@ LayeredPath LayeredNavigation::route(const PathQuery& query, int from_layer, int
     const double across_way = cross(way, along);
     if (across_way != 0.0)
       places.push_back(cross(way, query.from - portal.a) / across_way - off);
-    for (const Vec2 end : {query.from, query.to}) places.push_back(dot(end - portal.a, along) - off);
+    for (const Vec2 end : {query.from, query.to})
+      places.push_back(dot(end - portal.a, along) - off);
     for (double& place : places) place = std::clamp(place, 0.0, usable);
     std::sort(places.begin(), places.end());
     places.erase(std::unique(places.begin(), places.end()), places.end());

@@ -101,7 +101,8 @@ GroundLayers Ground::layers(double max_step, double headroom, double min_normal_
     std::vector<bool> taken(count + 1, false);
     for (const int g : apart[f])
       if (layer_of[g] >= 0) taken[layer_of[g]] = true;
-    const int layer = static_cast<int>(std::find(taken.begin(), taken.end(), false) - taken.begin());
+    const int layer =
+        static_cast<int>(std::find(taken.begin(), taken.end(), false) - taken.begin());
     if (layer >= GroundLayers::kMaxLayers)
       throw std::invalid_argument("ground: more than " + std::to_string(GroundLayers::kMaxLayers) +
                                   " levels above one another");

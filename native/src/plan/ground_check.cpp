@@ -31,7 +31,8 @@ GroundCheck check_ground(const Plan& plan) {
     const CharacterParams& character = character_of(agent, plan.character);
     const std::array<double, 2> heights = start_foot_heights(ground, agent, character);
     std::array<Vec3, 2> feet;
-    for (int f = 0; f < 2; ++f) feet[f] = {agent.start.feet[f].x, agent.start.feet[f].y, heights[f]};
+    for (int f = 0; f < 2; ++f)
+      feet[f] = {agent.start.feet[f].x, agent.start.feet[f].y, heights[f]};
     for (const Footstep& step : agent.footsteps) {
       const int planted = static_cast<int>(step.foot);
       const OrientationInterval turned{step.foot_orientation, step.foot_orientation};

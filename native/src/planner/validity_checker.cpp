@@ -65,7 +65,8 @@ class StandingCheck {
     for (long k = first_; k <= last; ++k) {
       const detail::AgentWhere& them = others.at(j, k);
       if (!them.present) break;  // gone for good
-      if (distance(them.com, com_) > near || levels_apart(them.ground, ground_, headroom_)) continue;
+      if (distance(them.com, com_) > near || levels_apart(them.ground, ground_, headroom_))
+        continue;
       const detail::AgentShape& shape = others.shape(j, k);
       const double pad = 0.5 * them.speed * kContactDt;
       if (k != first_ && distance(them.com, com_) - extent_ - shape.extent - pad > 0.0) continue;
