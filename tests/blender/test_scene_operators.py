@@ -627,6 +627,20 @@ def footfall_native():
     return native.load()
 
 
+def scatter_between(start, goal, **options):
+    """Scatter Agents from a plane region `start` to one `goal`, each given as
+    (centre, (size x, size y)), 0.8 m apart; the operator's result."""
+    regions = []
+    for centre, (x, y) in (start, goal):
+        bpy.ops.mesh.primitive_plane_add(size=1, location=centre)
+        regions.append(bpy.context.active_object)
+        regions[-1].scale = (x, y, 1)
+    for obj in bpy.context.view_layer.objects:
+        obj.select_set(obj in regions)
+    bpy.context.view_layer.objects.active = regions[1]
+    return bpy.ops.footfall.scatter_agents(spacing=0.8, **options)
+
+
 def test_a_stair_scene_loads_and_plans_with_every_agent_on_its_level():
     """Ground in "Footfall Ground": loaded from a scenario, read back with
     the agents' heights, planned; agents scattered on it; an agent over no
@@ -666,17 +680,9 @@ def test_a_stair_scene_loads_and_plans_with_every_agent_on_its_level():
 
     # Scattered over the flight and the floor before it, facing the landing:
     # each stands on its tread (feet on footholds), its goal up on the landing.
-    bpy.ops.mesh.primitive_plane_add(size=1, location=(-2.5, 0, 0))
-    start = bpy.context.active_object
-    start.scale = (9, 2.6, 1)  # x from -7 to 2: the floor and the flight
-    bpy.ops.mesh.primitive_plane_add(size=1, location=(5, 0, 1.02))
-    goal = bpy.context.active_object
-    goal.scale = (4, 2.6, 1)
-    for obj in bpy.context.view_layer.objects:
-        obj.select_set(obj in (start, goal))
-    bpy.context.view_layer.objects.active = goal
-    check(bpy.ops.footfall.scatter_agents(count=10, seed=3, spacing=0.8, prefix="Climber") == {"FINISHED"},
-          "scatter on ground failed")
+    # x from -7 to 2: the floor and the flight.
+    check(scatter_between(((-2.5, 0, 0), (9, 2.6)), ((5, 0, 1.02), (4, 2.6)), count=10, seed=3,
+                          prefix="Climber") == {"FINISHED"}, "scatter on ground failed")
     ground = footfall_native().Ground(footfall_native().parse_scenario(json.dumps(extract())).ground)
     on_treads = 0
     for k in range(1, 11):
@@ -733,17 +739,8 @@ def test_a_bridge_scene_loads_and_plans_with_its_levels_apart():
 
     # Scattered on the deck (a region drawn on it, over the street), bound for
     # the north bank: each stands on the deck, not on the street under it.
-    bpy.ops.mesh.primitive_plane_add(size=1, location=(0, 0, 2.89))
-    deck = bpy.context.active_object
-    deck.scale = (1.6, 6, 1)
-    bpy.ops.mesh.primitive_plane_add(size=1, location=(-6, 9, 2.89))
-    bank = bpy.context.active_object
-    bank.scale = (8, 4, 1)
-    for obj in bpy.context.view_layer.objects:
-        obj.select_set(obj in (deck, bank))
-    bpy.context.view_layer.objects.active = bank
-    check(bpy.ops.footfall.scatter_agents(count=4, seed=2, spacing=0.8, prefix="Crosser") == {"FINISHED"},
-          "scatter on the deck failed")
+    check(scatter_between(((0, 0, 2.89), (1.6, 6)), ((-6, 9, 2.89), (8, 4)), count=4, seed=2,
+                          prefix="Crosser") == {"FINISHED"}, "scatter on the deck failed")
     for k in range(1, 5):
         p = bpy.data.objects[f"Crosser {k}"].matrix_world.translation
         check(abs(p.z - 2.89) < 1e-6 and abs(p.x) < 1 and abs(p.y) < 4, f"Crosser {k} at {p} is not on the deck")
