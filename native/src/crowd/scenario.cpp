@@ -134,8 +134,8 @@ std::optional<std::string> standing_feet_problem(const Ground& ground,
     faults[f] = ground.standable_at(standing.feet[f], character.body_height).empty()
                     ? FootholdFault::kOffGround
                     : FootholdFault::kNone;
-  for (int f = 0; f < 2; ++f)
-    if (faults[0] == FootholdFault::kNone && faults[1] == FootholdFault::kNone)
+  if (faults[0] == FootholdFault::kNone && faults[1] == FootholdFault::kNone)
+    for (int f = 0; f < 2; ++f)
       faults[f] = foothold_fault(ground, character, standing.feet[f], standing.foot_orientation[f],
                                  at(1 - f), at(f));
   for (const Foot foot : {Foot::kLeft, Foot::kRight}) {

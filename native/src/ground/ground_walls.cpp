@@ -1,6 +1,5 @@
-// Footfall — the ground's walls (the edges a walker cannot step across) and
-// points with levels above one another, found by sampling the walkable faces'
-// edges.
+// Footfall — the ground's walls (the edges a walker cannot step across),
+// found by sampling the walkable faces' edges.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -50,17 +49,6 @@ std::vector<GroundWall> Ground::walls(double max_step, double headroom,
     }
   }, [&](int f, int g) { return steep(f) != steep(g); });
   return walls;
-}
-
-std::optional<StackedLevels> Ground::stacked_levels(double headroom) const {
-  std::optional<StackedLevels> found;
-  const auto check = [&](Vec2 p) {
-    if (found) return;
-    const std::vector<GroundPoint> levels = standable_at(p, headroom);
-    if (levels.size() > 1) found = StackedLevels{p, levels[0].z, levels[1].z};
-  };
-  visit_inner_edge_samples(check);
-  return found;
 }
 
 }  // namespace footfall

@@ -200,16 +200,13 @@ TEST(Ground, APlatformTooHighToStepIsReachedByTheRampBesideIt) {
 
 TEST(Ground, LevelsAboveOneAnotherAreFoundWhereABodyFitsBetweenThem) {
   const GroundSurface floor = ground_prism(rectangle(-10, -10, 10, 10), 0.0);
-  const std::optional<StackedLevels> bridge =
-      Ground({floor, prism(rectangle(5, -10, 7, 10), 4.5, 4.3)}).stacked_levels(1.75);
-  ASSERT_TRUE(bridge);
-  EXPECT_DOUBLE_EQ(bridge->lower, 0.0);
-  EXPECT_DOUBLE_EQ(bridge->upper, 4.5);
-  EXPECT_GE(bridge->at.x, 5.0);
-  EXPECT_LE(bridge->at.x, 7.0);
-  EXPECT_FALSE(Ground({floor, prism(rectangle(5, -10, 7, 10), 1.2, 1.0)}).stacked_levels(1.75));
-  EXPECT_FALSE(Ground({floor, ground_prism(rectangle(5, -1, 7, 1), 0.8)}).stacked_levels(1.75));
-  EXPECT_FALSE(Ground(flight(5)).stacked_levels(1.75));
+  const auto layers = [](const std::vector<GroundSurface>& surfaces) {
+    return Ground(surfaces).layers(0.25, 1.75, 0.0).count();
+  };
+  EXPECT_EQ(layers({floor, prism(rectangle(5, -10, 7, 10), 4.5, 4.3)}), 2);  // a deck over it
+  EXPECT_EQ(layers({floor, prism(rectangle(5, -10, 7, 10), 1.2, 1.0)}), 1);  // too low to walk under
+  EXPECT_EQ(layers({floor, ground_prism(rectangle(5, -1, 7, 1), 0.8)}), 1);  // a platform on it
+  EXPECT_EQ(layers(flight(5)), 1);
 }
 
 TEST(Ground, NoSurfacesIsNoGround) {

@@ -93,12 +93,6 @@ class GroundLayers {
   std::vector<GroundPortal> portals_;
 };
 
-/// Two standable levels over one point.
-struct StackedLevels {
-  Vec2 at;                  ///< [m]
-  double lower = 0, upper = 0;  ///< Their heights. [m]
-};
-
 /// The walkable ground, indexed. Immutable after construction, so it can be
 /// shared between threads.
 class Ground {
@@ -145,14 +139,11 @@ class Ground {
   /// reach. Edges a mesh's two walkable triangles share are not walls, but
   /// where one of them is too steep.
   std::vector<GroundWall> walls(double max_step, double headroom, double min_normal_z) const;
-  /// A point with two standable levels over it, if any: checked every 5 cm
-  /// along each walkable face's edges, 2 cm inside it (where two faces
-  /// overlap, one's edge runs inside the other).
-  std::optional<StackedLevels> stacked_levels(double headroom) const;
   /// The ground's layers for a body `headroom` tall stepping at most
   /// `max_step` up or down, on slopes whose normal has at least
-  /// `min_normal_z` (walls()): faces standable over one point (found as
-  /// stacked_levels finds them) lie in different layers, each face in the
+  /// `min_normal_z` (walls()): faces standable over one point (sampled every
+  /// 5 cm along each walkable face's edges, 2 cm inside it: where two faces
+  /// overlap, one's edge runs inside the other) lie in different layers, each face in the
   /// first layer it fits. Throws std::invalid_argument ("ground: ...") past
   /// GroundLayers::kMaxLayers.
   GroundLayers layers(double max_step, double headroom, double min_normal_z) const;
