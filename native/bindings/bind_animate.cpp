@@ -202,6 +202,9 @@ void bind_animate(py::module_& m) {
       py::arg("feet"), py::arg("hands"), py::arg("leg_length"),
       "(cycles, strike, source) of a clip sampled evenly over its range (its end left out): `feet` "
       "the right foot's lead over the left along the facing, `hands` the left hand's over the right.");
+  m.def("stair_climbs", &animate::stair_climbs, py::arg("agent"),
+        "Per footstep of the agent's plan: 1 where it climbs a stair, -1 where it goes down one, "
+        "0 elsewhere (a rig's stair clips play there).");
   m.def("split_side", &split_side, py::arg("name"),
         "(side, base name) of a bone name: side 'left', 'right' or '' for the trunk.");
   m.def(

@@ -22,7 +22,7 @@ import numpy  # noqa: E402
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, os.environ.get("FOOTFALL_ADDON_DIR", str(ROOT / "blender_addon")))
 sys.path.insert(0, str(ROOT / "tests" / "python"))
-from crowd_glb import CrowdGlb, z_up  # noqa: E402
+from crowd_glb import CrowdGlb, rewritten, with_stairs_up_clip, z_up  # noqa: E402
 from ground_heights import ground_heights  # noqa: E402
 
 TMP = pathlib.Path(tempfile.mkdtemp(prefix="footfall-headless-"))
@@ -38,20 +38,20 @@ KNEE_TOLERANCE = 0.02  # [m] Blender's IK and the core's two-bone legs bend the 
 # wrong way is 0.1-0.3 m off)
 
 
-def applied_and_written(ff, plan, name, live=False):
-    """The plan applied in a new scene (keyed, or `live`) and written by the
-    core at the scene's rate: (the scene, the core's file read back, the
-    plan's times at the scene's frames)."""
+def applied_and_written(ff, plan, name, live=False, rig=RIG):
+    """The plan applied in a new scene (keyed, or `live`) on `rig` and written
+    by the core at the scene's rate: (the scene, the core's file read back,
+    the plan's times at the scene's frames)."""
     bpy.ops.wm.read_homefile(use_empty=True)
     addon_utils.enable("footfall", default_set=True, handle_error=None)
-    check(bpy.ops.footfall.import_rig(filepath=str(RIG)) == {"FINISHED"}, "rig import failed")
+    check(bpy.ops.footfall.import_rig(filepath=str(rig)) == {"FINISHED"}, "rig import failed")
     plan_path = TMP / f"{name}-plan.json"
     ff.write_plan_file(plan, str(plan_path))
     check(bpy.ops.footfall.apply(plan_filepath=str(plan_path), live=live) == {"FINISHED"}, "apply failed")
     scene = bpy.context.scene
     fps = scene.render.fps / scene.render.fps_base
     crowd_path = TMP / f"{name}-crowd.glb"
-    ff.animate_gltf(plan, str(RIG), str(crowd_path), fps=fps, profile_path=str(PROFILE))
+    ff.animate_gltf(plan, str(rig), str(crowd_path), fps=fps, profile_path=str(PROFILE))
     frames = range(scene.frame_start, scene.frame_end + 1)
     return scene, CrowdGlb(crowd_path), numpy.array([(f - scene.frame_start) / fps for f in frames])
 
@@ -153,13 +153,13 @@ def test_blender_and_the_core_put_the_bones_in_the_same_places():
     check(worst < TOLERANCE, f"Blender's file and the core's put the bones {1000 * worst:.1f} mm apart")
 
 
-def check_on_ground(name, path, starts_on):
+def check_on_ground(name, path, starts_on, rig=RIG):
     """The crowd of the scenario at `path`, applied keyed and live: the bones
     where the core's writer puts them, the agents named with a prefix of
     `starts_on` standing on the ground at its height at the first frame (their
     soles on it, not above), and no vertex of a body more than 1 cm below the
     ground under it at any frame (a toe in a riser, a sole through a tread);
-    the keyed crowd exported as the core's."""
+    the keyed crowd exported as the core's. On `rig`."""
     from footfall.core import native
 
     ff = native.load()
@@ -167,7 +167,7 @@ def check_on_ground(name, path, starts_on):
     plan = ff.plan_scenario(ff.parse_scenario(document, str(path)))
     prisms = json.loads(document)["ground"]
     for live in (False, True):
-        scene, crowd, times = applied_and_written(ff, plan, f"{name}-{'live' if live else 'keyed'}", live)
+        scene, crowd, times = applied_and_written(ff, plan, f"{name}-{'live' if live else 'keyed'}", live, rig)
         core, worst, worst_knee, compared = bones_apart(plan, scene, crowd, times)
         scene.frame_set(scene.frame_start)
         for agent in plan.agents:
@@ -194,6 +194,16 @@ def test_up_and_down_a_flight_blender_and_the_core_put_every_foot_on_its_tread()
     check_on_ground("stairs", STAIRS, {"down": 1.02})
 
 
+def test_a_rigs_own_stair_clip_plays_up_the_flight_as_the_core_plays_it():
+    """The stair crowd on a rig with a "stairs_up" clip (its arms_in again):
+    Apply plays it up the flight as the core's writer does."""
+    rig = TMP / "stairs-clip-rig.glb"
+    rewritten(RIG, rig, with_stairs_up_clip)
+    check_on_ground("stairs-clip", STAIRS, {"down": 1.02}, rig)
+    strips = {s.name.split()[0] for track in bpy.data.objects["up0"].animation_data.nla_tracks for s in track.strips}
+    check("stairs_up" in strips, f"no stairs_up strip on up0: {sorted(strips)}")
+
+
 def test_on_and_under_a_bridge_every_foot_is_on_the_deck_or_the_street():
     """tests/data/bridge.json: two cross a footbridge's deck from the bank,
     2.89 m up, while two walk the street under it."""
@@ -203,4 +213,5 @@ def test_on_and_under_a_bridge_every_foot_is_on_the_deck_or_the_street():
 if __name__ == "__main__":
     run([test_blender_and_the_core_put_the_bones_in_the_same_places,
          test_up_and_down_a_flight_blender_and_the_core_put_every_foot_on_its_tread,
+         test_a_rigs_own_stair_clip_plays_up_the_flight_as_the_core_plays_it,
          test_on_and_under_a_bridge_every_foot_is_on_the_deck_or_the_street])

@@ -423,3 +423,22 @@ class CrowdGlb:
             raise GlbError(f"no node named {', '.join(map(repr, missing))} below node {root}")
         matrices = self.world_matrices(animation, times, [below[name] for name in names])
         return {name: matrices[below[name]][:, :3, 3] for name in names}
+
+
+def rewritten(source, target, change):
+    """A copy of the .glb `source` at `target`, its JSON changed by `change(document)`."""
+    data = source.read_bytes()
+    length = struct.unpack_from("<I", data, 12)[0]
+    document = json.loads(data[20:20 + length])
+    change(document)
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    body = struct.pack("<I4s", len(text), b"JSON") + text + data[20 + length:]
+    target.write_bytes(struct.pack("<4sII", b"glTF", 2, 12 + len(body)) + body)
+
+
+def with_stairs_up_clip(document):
+    """The rig's arms_in animation again as "stairs_up": arms held in up the
+    stairs, plainly unlike the walk."""
+    arms_in = next(a for a in document["animations"] if a["name"] == "arms_in")
+    document["animations"].append({**json.loads(json.dumps(arms_in)), "name": "stairs_up"})

@@ -14,7 +14,7 @@ import numpy
 import pytest
 
 from conftest import scenario_json
-from crowd_glb import CrowdGlb, z_up
+from crowd_glb import CrowdGlb, rewritten, with_stairs_up_clip, z_up
 from ground_heights import ground_heights
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -272,18 +272,6 @@ def test_those_on_a_bridge_walk_on_its_deck_and_those_under_it_on_the_street(ff,
     assert deepest < GROUND_TOLERANCE
 
 
-def rewritten(source, target, change):
-    """A copy of the .glb `source` at `target`, its JSON changed by `change(document)`."""
-    data = source.read_bytes()
-    length = struct.unpack_from("<I", data, 12)[0]
-    document = json.loads(data[20:20 + length])
-    change(document)
-    text = json.dumps(document).encode()
-    text += b" " * (-len(text) % 4)
-    body = struct.pack("<I4s", len(text), b"JSON") + text + data[20 + length:]
-    target.write_bytes(struct.pack("<4sII", b"glTF", 2, 12 + len(body)) + body)
-
-
 def nameless_bones(document):
     """Bones named as Blender names new ones: only the skeleton's shape shows their roles."""
     for joint in document["skins"][0]["joints"]:
@@ -399,3 +387,33 @@ def test_bad_input_is_refused_in_one_line_with_no_file(ff, cli, demo, tmp_path):
     with pytest.raises(ValueError, match="the rig has no such bone"):
         ff.animate_gltf(ff.load_plan(str(plan_path)), str(RIG), str(out), profile_path=str(bad_profile))
     assert not out.exists()
+
+
+def test_a_rigs_own_stair_clip_plays_up_the_stairs_and_the_walk_elsewhere(ff, cli, tmp_path):
+    plan_path, plain = tmp_path / "plan.json", tmp_path / "plain.glb"
+    run = subprocess.run([cli, "plan", str(STAIRS), "-o", str(plan_path), "--glb", str(plain),
+                          "--rig", str(RIG)], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    rig, stairs = tmp_path / "stairs-rig.glb", tmp_path / "stairs.glb"
+    rewritten(RIG, rig, with_stairs_up_clip)
+    run = run_animate(cli, plan_path, "--rig", rig, "--profile", PROFILE, "-o", stairs)
+    assert run.returncode == 0, run.stderr
+    assert "stairs_up = 'stairs_up'" in run.stdout and "stairs_down" not in run.stdout, run.stdout
+    plan = ff.load_plan(str(plan_path))
+    agent = next(a for a in plan.agents if a.name == "up0")
+    climbs = ff.stair_climbs(agent)
+    up = [s for s, c in zip(agent.footsteps, climbs) if c > 0]
+    assert up and all(c >= 0 for c in climbs)
+    hands = [bones[side]["hand"] for bones in [json.loads(PROFILE.read_text())["bones"]] for side in ("left", "right")]
+
+    def hands_at(path, name, times):
+        crowd = CrowdGlb(path)
+        found = crowd.world_positions(name, times, hands, crowd.agent_root(name))
+        return numpy.concatenate([found[bone] for bone in hands], axis=1)
+
+    # Up the flight the stair clip plays, its arms held in; those going down
+    # (the rig has no stairs_down clip) walk down as before, to the bit.
+    climbing = numpy.linspace(up[0].start_time + 0.6, up[-1].end_time - 0.1, 10)
+    assert numpy.max(numpy.abs(hands_at(plain, "up0", climbing) - hands_at(stairs, "up0", climbing))) > 0.05
+    times = CrowdGlb(plain).animation_times("down0")
+    assert numpy.array_equal(hands_at(plain, "down0", times), hands_at(stairs, "down0", times))

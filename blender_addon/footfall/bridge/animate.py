@@ -29,6 +29,7 @@ import numpy
 from mathutils import Matrix, Vector
 
 from ..core import clip_timing, foot_roll, native
+from ..core.rig_profile import STAIR_CLIPS
 from . import action_curves, procedural_clips, rig_clips
 from .rig_import import foot_points, profile_of
 
@@ -519,9 +520,10 @@ def _upper_body(armature, agent, clips: Dict[str, rig_clips.Clip], fps: float, f
     crowd's short waits make) goes on a free track above. A walking strip's
     influence, keyed at `frames`, is also `swing` there, the share of the
     clip's amplitude (ff.upper_body)."""
+    climbs = native.load().stair_climbs(agent)
     steps = [clip_timing.Step(s.start_time, s.end_time, s.foot.name.lower(), s.kind.name.lower(),
-                              s.behavior.name.lower()) for s in agent.footsteps]
-    sections = clip_timing.sections(steps)
+                              s.behavior.name.lower(), climb) for s, climb in zip(agent.footsteps, climbs)]
+    sections = clip_timing.sections(steps, clips.keys())
     last_frame = frames[-1]
     tracks, ends = [], []  # NLA tracks, and the frame where each one's last strip ends
 
@@ -575,7 +577,7 @@ def _upper_body(armature, agent, clips: Dict[str, rig_clips.Clip], fps: float, f
             blend_in = min(BLEND_SECONDS * fps, 0.5 * (strip.frame_end - strip.frame_start))
             blend_out = 0.0 if last else blend_in
             strip.blend_in, strip.blend_out = blend_in, blend_out
-        if section.behavior == "walk":
+        if clip_timing.walking(section.behavior):
             # Keyed, the influence replaces the fades: they are keyed into it.
             fade = clip_timing.fade(frames, strip.frame_start, strip.frame_end, blend_in, blend_out)
             _key_influence(strip, frames, fade * swing)
@@ -636,10 +638,13 @@ def _drop_driven(action, bones) -> None:
 
 def clips_of(rig, profile) -> Dict[str, rig_clips.Clip]:
     """The clip per behaviour, cyclic: the rig's own (copies without root
-    motion or what the locomotion drives), procedural ones where it has none."""
+    motion or what the locomotion drives), procedural ones where it has none
+    (but for stairs: there the walk plays)."""
     clips = {}
     for behavior in profile.clips:
         clip = rig_clips.playable(rig, profile, behavior)
+        if clip is None and behavior in STAIR_CLIPS:
+            continue  # the walk plays on stairs
         if clip is None:
             clip = procedural_clips.clip(behavior, rig, profile)
         else:

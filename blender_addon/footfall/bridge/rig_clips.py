@@ -16,7 +16,7 @@ import bpy
 import numpy
 
 from ..core import clip_cycle
-from ..core.rig_profile import BEHAVIORS
+from ..core.rig_profile import CLIP_ROLES, STAIR_CLIPS
 from . import action_curves
 
 SAMPLES = 64  # per clip, to find its cycle
@@ -29,6 +29,9 @@ _NAME_PATTERNS = {
     "arms_in": re.compile(r"arms?[ _.-]?in\b", re.IGNORECASE),
     "side_step": re.compile(r"side[ _.-]?step|strafe", re.IGNORECASE),
     "idle": re.compile(r"idle", re.IGNORECASE),
+    "stairs_up": re.compile(r"(stairs?|steps?)[ _.-]?up|up[ _.-]?(the[ _.-]?)?stairs|ascend", re.IGNORECASE),
+    "stairs_down": re.compile(r"(stairs?|steps?)[ _.-]?down|down[ _.-]?(the[ _.-]?)?stairs|descend",
+                              re.IGNORECASE),
 }
 
 
@@ -259,7 +262,7 @@ def choose(rig, bones: Dict[str, object], given: Dict[str, Optional[str]], actio
     "mixamo.com", a glTF's unnamed animation)."""
     by_name = {a.name: a for a in actions}
     chosen: Dict[str, Optional[bpy.types.Action]] = {}
-    for behavior in BEHAVIORS:
+    for behavior in CLIP_ROLES:
         wanted = given.get(behavior)
         if wanted:
             # The importer may add the object's name to an animation's ("walk_Armature").
@@ -287,6 +290,8 @@ def choose(rig, bones: Dict[str, object], given: Dict[str, Optional[str]], actio
             notes.append(f"several clips step ({', '.join(sorted(a.name for a in stepping))}): name the walk "
                          "in the rig's profile")
     for behavior, action in chosen.items():
+        if action is None and behavior in STAIR_CLIPS:
+            continue  # the walk plays on stairs
         if action is None:
             notes.append(f"no '{behavior}' clip: a procedural one will be used")
             continue
@@ -298,4 +303,4 @@ def choose(rig, bones: Dict[str, object], given: Dict[str, Optional[str]], actio
         root = "; its root motion is left out" if root_motion(rig, action, bones) else ""
         notes.append(f"{behavior}: the rig's clip '{action.name}' ({cycle.cycles} cycle(s) in "
                      f"{last - first:g} frames; {timed}){root}")
-    return {b: (a.name if a else None) for b, a in chosen.items()}, notes
+    return {b: (a.name if a else None) for b, a in chosen.items() if a or b not in STAIR_CLIPS}, notes

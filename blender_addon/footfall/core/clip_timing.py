@@ -12,7 +12,7 @@ behaviour's standing pose): there the stop plays its behaviour's clip.
 """
 
 from dataclasses import dataclass
-from typing import List, Sequence, Tuple
+from typing import Collection, List, Sequence, Tuple
 
 import numpy
 
@@ -26,6 +26,7 @@ class Step:
     foot: str  # "left" or "right"
     kind: str  # "walk", "stop", "side_step" or "start"
     behavior: str  # "walk", "arms_in", "side_step"
+    climb: int = 0  # 1 up a stair, -1 down one (ff.stair_climbs), 0 elsewhere
 
 
 @dataclass(frozen=True)
@@ -50,32 +51,45 @@ class StripTiming:
     repeat: float
 
 
-def clip_of(step: Step) -> str:
-    """The clip a step plays: its behaviour's, "idle" for a stop walking."""
-    return "idle" if step.kind == "stop" and step.behavior == "walk" else step.behavior
+def clip_of(step: Step, available: Collection[str] = ()) -> str:
+    """The clip a step plays: its behaviour's, "idle" for a stop walking,
+    "stairs_up" or "stairs_down" for a walk up or down a stair where that
+    clip is `available`."""
+    if step.kind == "stop" and step.behavior == "walk":
+        return "idle"
+    stairs = {1: "stairs_up", -1: "stairs_down"}.get(step.climb)
+    if step.behavior == "walk" and stairs in available:
+        return stairs
+    return step.behavior
 
 
-def sections(steps: Sequence[Step]) -> List[Section]:
-    """The steps grouped into runs of one clip."""
+def walking(clip: str) -> bool:
+    """True for the clips played at a share of their amplitude by speed."""
+    return clip in ("walk", "stairs_up", "stairs_down")
+
+
+def sections(steps: Sequence[Step], available: Collection[str] = ()) -> List[Section]:
+    """The steps grouped into runs of one clip (clip_of, with the stair clips
+    `available`)."""
     result: List[Section] = []
     run: List[Step] = []
     for step in steps:
-        if run and clip_of(step) != clip_of(run[0]):
-            result.append(_section(run))
+        if run and clip_of(step, available) != clip_of(run[0], available):
+            result.append(_section(run, available))
             run = []
         run.append(step)
     if run:
-        result.append(_section(run))
+        result.append(_section(run, available))
     return result
 
 
-def _section(run: List[Step]) -> Section:
-    return Section(clip_of(run[0]), run[0].start, run[-1].end, tuple(run))
+def _section(run: List[Step], available: Collection[str]) -> Section:
+    return Section(clip_of(run[0], available), run[0].start, run[-1].end, tuple(run))
 
 
 # How far each behaviour's arms reach across the way, narrowest first: the
 # planner checks a section's own body only over its own time.
-REACH = {"side_step": 0, "arms_in": 1, "idle": 2, "walk": 3}
+REACH = {"side_step": 0, "arms_in": 1, "idle": 2, "walk": 3, "stairs_up": 3, "stairs_down": 3}
 
 
 def cross_fades(sections: Sequence[Section], blend: float) -> List[Tuple[float, float]]:

@@ -14,6 +14,10 @@ from typing import Dict, Optional
 from .bone_map import CENTER_ROLES, LIMB_ROLES, SIDES
 
 BEHAVIORS = ("walk", "arms_in", "side_step", "idle")
+# Clips for walking up and down stairs: played where the rig has them (else
+# the walk plays), never made procedurally.
+STAIR_CLIPS = ("stairs_up", "stairs_down")
+CLIP_ROLES = BEHAVIORS + STAIR_CLIPS
 DIMENSIONS = ("hip_height", "leg_length", "shoulder_width", "foot_length")
 
 
@@ -96,14 +100,15 @@ def parse(document, source: str = "<profile>", partial: bool = False) -> RigProf
     if not isinstance(clips_in, dict):
         _fail(source, "clips", "expected an object")
     for key in clips_in:
-        if key not in BEHAVIORS:
-            _fail(source, f"clips.{key}", f"unknown behaviour (one of {', '.join(BEHAVIORS)})")
+        if key not in CLIP_ROLES:
+            _fail(source, f"clips.{key}", f"unknown behaviour (one of {', '.join(CLIP_ROLES)})")
     clips = {}
-    for behavior in BEHAVIORS:
+    for behavior in CLIP_ROLES:
         value = clips_in.get(behavior)
         if value is not None and (not isinstance(value, str) or not value):
             _fail(source, f"clips.{behavior}", "expected a clip name or null")
-        clips[behavior] = value
+        if behavior in BEHAVIORS or value is not None:
+            clips[behavior] = value
 
     dimensions_in = document.get("dimensions", {})
     if not isinstance(dimensions_in, dict):

@@ -1,10 +1,24 @@
 #include "footfall/animate/foot_roll.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 
 namespace footfall::animate {
+
+std::vector<int> stair_climbs(const AgentPlan& plan) {
+  std::array<double, 2> stood = plan.start.foot_heights;
+  std::vector<int> climbs;
+  for (const Footstep& step : plan.footsteps) {
+    const int foot = static_cast<int>(step.foot);
+    const double rise = step.foot_height - stood[foot];
+    const bool climbs_or_drops = step.kind == StepKind::kWalk && std::fabs(rise) > kStairRise;
+    climbs.push_back(climbs_or_drops ? (rise > 0 ? 1 : -1) : 0);
+    stood[foot] = step.foot_height;
+  }
+  return climbs;
+}
 
 FootRoll roll_at_pitch(const FootShape& shape, double pitch) {
   // The ankle seen from the pivot: the heel's contact, or the ball.

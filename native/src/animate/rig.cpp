@@ -6,8 +6,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <functional>
+#include <iterator>
+#include <map>
+#include <set>
 #include <utility>
 #include <stdexcept>
 
@@ -288,11 +290,12 @@ void read_legs(RigData& rig, const RigProfile& profile) {
 }
 
 // A rig with no walk so named walks with the one animation whose feet step
-// (Mixamo's "mixamo.com", a glTF's only animation), as Import Rig takes it;
-// else a procedural walk.
-animate::Clip only_stepping_clip(const RigData& rig) {
+// (Mixamo's "mixamo.com", a glTF's only animation) of those no other
+// behaviour takes (`used`), as Import Rig takes it; else a procedural walk.
+animate::Clip only_stepping_clip(const RigData& rig, const std::set<int>& used) {
   std::vector<animate::Clip> stepping;
   for (std::size_t i = 0; i < rig.model.animations.size(); ++i) {
+    if (used.count(static_cast<int>(i)) > 0) continue;
     animate::Clip clip = animate::clip_from_animation(rig, static_cast<int>(i));
     if (clip.feet_step) stepping.push_back(std::move(clip));
   }
@@ -312,26 +315,32 @@ void read_clips(RigData& rig, const RigProfile& profile) {
     }
     return -1;
   };
-  for (const char* behavior : kClipBehaviors) {
+  const auto named_index = [&](const char* behavior) {
     const auto named = profile.clips.find(behavior);
-    int index = -1;
-    if (named != profile.clips.end()) {
-      index = find(named->second, true);
-      if (index < 0) {
-        std::string names;
-        for (const auto& a : animations) names += (names.empty() ? "" : ", ") + user_text(a.name);
-        throw std::invalid_argument(rig.path + ": clips." + behavior + " = " + user_text(named->second) +
-                                    ": the rig has no such animation (it has: " + (names.empty() ? "none" : names) + ")");
-      }
-    } else {
-      index = find(behavior, false);
+    if (named == profile.clips.end()) return find(behavior, false);
+    const int index = find(named->second, true);
+    if (index < 0) {
+      std::string names;
+      for (const auto& a : animations) names += (names.empty() ? "" : ", ") + user_text(a.name);
+      throw std::invalid_argument(rig.path + ": clips." + behavior + " = " + user_text(named->second) +
+                                  ": the rig has no such animation (it has: " + (names.empty() ? "none" : names) + ")");
     }
-    if (index >= 0) {
+    return index;
+  };
+  std::map<std::string, int> named;  // each behaviour's animation, where it has one
+  std::set<int> used;
+  for (const char* behavior : kClipBehaviors) named[behavior] = named_index(behavior);
+  for (const char* behavior : kStairClips) named[behavior] = named_index(behavior);
+  for (const auto& [behavior, index] : named)
+    if (index >= 0) used.insert(index);
+  for (const auto& [behavior, index] : named) {
+    if (index >= 0)
       rig.clips[behavior] = animate::clip_from_animation(rig, index);
-      continue;
-    }
-    rig.clips[behavior] =
-        behavior == std::string("walk") ? only_stepping_clip(rig) : animate::procedural_clip(rig, behavior);
+    else if (behavior == "walk")
+      rig.clips[behavior] = only_stepping_clip(rig, used);
+    else if (std::find(std::begin(kClipBehaviors), std::end(kClipBehaviors), behavior) !=
+             std::end(kClipBehaviors))
+      rig.clips[behavior] = animate::procedural_clip(rig, behavior);
   }
 }
 

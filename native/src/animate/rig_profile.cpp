@@ -46,8 +46,10 @@ RigProfile read_profile(const Json& root) {
     for (auto it = clips->begin(); it != clips->end(); ++it) {
       bool known = false;
       for (const char* behavior : kClipBehaviors) known = known || it.key() == behavior;
+      for (const char* behavior : kStairClips) known = known || it.key() == behavior;
       if (!known)
-        fail(child("clips", it.key()), "unknown behaviour (one of walk, arms_in, side_step, idle)");
+        fail(child("clips", it.key()),
+             "unknown behaviour (one of walk, arms_in, side_step, idle, stairs_up, stairs_down)");
       if (it->is_null()) continue;
       if (!it->is_string() || it->get_ref<const std::string&>().empty())
         fail(child("clips", it.key()), "expected a clip name or null");

@@ -4,15 +4,23 @@
 #include <cmath>
 #include <limits>
 
+#include "footfall/animate/foot_roll.hpp"
+
 namespace footfall::animate {
 
 namespace {
 
 // A stop plays "idle", but where the planner held the arms in or turned the
 // body side-on (it tests a stop there in that behaviour's standing pose),
-// the stop plays its behaviour's clip: waiting in a door frame, the arms stay in.
-const char* behavior_of(const Footstep& step) {
+// the stop plays its behaviour's clip: waiting in a door frame, the arms stay
+// in. A walk up or down a stair (`climb`, stair_climbs()) plays the rig's
+// stair clip, where `clips` has it.
+const char* behavior_of(const Footstep& step, int climb, const std::map<std::string, Clip>& clips) {
   if (step.kind == StepKind::kStop && step.behavior == Behavior::kWalk) return "idle";
+  if (step.behavior == Behavior::kWalk && climb != 0) {
+    const char* stairs = climb > 0 ? "stairs_up" : "stairs_down";
+    if (clips.count(stairs) > 0) return stairs;
+  }
   switch (step.behavior) {
     case Behavior::kArmsIn: return "arms_in";
     case Behavior::kSideStep: return "side_step";
@@ -40,10 +48,12 @@ SectionTiming::SectionTiming(const AgentPlan& plan, const std::map<std::string, 
   };
   std::vector<Section> sections;
   const auto& steps = plan.footsteps;
+  const std::vector<int> climbs = stair_climbs(plan);
+  const auto clip_of = [&](std::size_t k) { return std::string(behavior_of(steps[k], climbs[k], clips)); };
   for (std::size_t first = 0; first < steps.size();) {
     std::size_t last = first;
-    while (last + 1 < steps.size() && std::string(behavior_of(steps[last + 1])) == behavior_of(steps[first])) ++last;
-    sections.push_back({behavior_of(steps[first]), first, last});
+    while (last + 1 < steps.size() && clip_of(last + 1) == clip_of(first)) ++last;
+    sections.push_back({clip_of(first), first, last});
     first = last + 1;
   }
   // Track 0 plays "idle" throughout, under the sections' strips.
@@ -58,7 +68,7 @@ SectionTiming::SectionTiming(const AgentPlan& plan, const std::map<std::string, 
     const Section& section = sections[i];
     Strip strip;
     strip.clip = &clips.at(section.behavior);
-    strip.walk = section.behavior == "walk";
+    strip.walk = section.behavior == "walk" || section.behavior.rfind("stairs_", 0) == 0;
     const double start = steps[section.first].start_time, end = steps[section.last].end_time;
     const bool wider_than_before = i > 0 && reach(section.behavior) > reach(sections[i - 1].behavior);
     const bool wider_after = i + 1 < sections.size() && reach(sections[i + 1].behavior) > reach(section.behavior);

@@ -43,7 +43,7 @@ TEST(RigProfile, RefusalsNameTheField) {
   document = detail::parse_json(detail::read_file(kProfile), kProfile);
   document["clips"]["run"] = "run";
   EXPECT_EQ(error_of(document.dump()),
-            "p.json: clips.run: unknown behaviour (one of walk, arms_in, side_step, idle)");
+            "p.json: clips.run: unknown behaviour (one of walk, arms_in, side_step, idle, stairs_up, stairs_down)");
   document = detail::parse_json(detail::read_file(kProfile), kProfile);
   document["dimensions"]["hip_height"] = -1;
   EXPECT_EQ(error_of(document.dump()), "p.json: dimensions.hip_height: expected a positive number of metres");

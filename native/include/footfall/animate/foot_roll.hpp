@@ -18,6 +18,12 @@ constexpr double kHeelOffAt = 0.6;   ///< of the stance: the heel rises from her
 /// [m] a step landing this much above or below the other foot is a stair's:
 /// the foot is set down flat, as people do on stairs (no heel strike, no roll).
 constexpr double kStairRise = 0.02;
+/// Per footstep of `plan`: +1 where it climbs a stair (a walking step whose
+/// foot lands over kStairRise above where that foot last stood), -1 where it
+/// goes down one, 0 elsewhere. Sections of such steps play a rig's own stair
+/// clips, where it has them.
+std::vector<int> stair_climbs(const AgentPlan& plan);
+
 /// Of the foot's length behind the ankle, without a mesh: as the planner's sole.
 constexpr double kHeelShare = footfall::kHeelShare;
 

@@ -11,6 +11,9 @@ namespace footfall {
 
 /// The behaviours a rig may have a clip for, as a profile's `clips` names them.
 inline constexpr const char* kClipBehaviors[] = {"walk", "arms_in", "side_step", "idle"};
+/// The clips a rig may have for walking up and down stairs: played where it
+/// has them (else the walk plays), never made procedurally.
+inline constexpr const char* kStairClips[] = {"stairs_up", "stairs_down"};
 
 /// A rig profile: bone roles, clips and dimensions (docs/rig-profile.md).
 /// Any part may be left out: detection (bone_map.hpp) finds the bones it
@@ -20,8 +23,8 @@ struct RigProfile {
   /// "left.thigh", "right.upper_arm"... (upper_arm, forearm, hand, thigh,
   /// shin, foot, toe).
   std::map<std::string, std::string> bones;
-  /// Behaviour ("walk", "arms_in", "side_step", "idle") -> animation name;
-  /// a behaviour left out or null has none.
+  /// Behaviour ("walk", "arms_in", "side_step", "idle", "stairs_up",
+  /// "stairs_down") -> animation name; a behaviour left out or null has none.
   std::map<std::string, std::string> clips;
   /// Metres, as the profile gives them (any may be left out).
   std::map<std::string, double> dimensions;
