@@ -97,12 +97,21 @@ def lowest_vertex(agent: str) -> float:
     return min(float(evaluated_points(obj, depsgraph)[:, 2].min()) for obj in meshes)
 
 
-def deepest_below_ground(plan, prisms, scene, frames):
-    """Over `frames`: how far the evaluated skinned meshes' deepest vertex
-    lies below the ground under it, and where."""
+TOUCHING = 0.002  # [m] a vertex this near the ground under it touches it
+# [m] how far one may slide while it touches: the foot rolls over its ball
+# about the toe joint, a few centimetres above the sole (5-6 mm measured)
+SLIDE_TOLERANCE = 0.008
+
+
+def on_the_ground(plan, prisms, scene, frames):
+    """Over `frames`, from the evaluated skinned meshes: how far the deepest
+    vertex lies below the ground under it, and where; and how far a vertex
+    touching the ground (within TOUCHING of it) slides across it while it
+    touches (from where it came to touch it), and where."""
     bodies = [obj for agent in plan.agents for obj in bpy.data.objects[agent.name].children_recursive
               if obj.type == "MESH"]
-    worst = (0.0, None)
+    deepest, slid = (0.0, None), (0.0, None)
+    touched_at = {}  # per body: where each vertex came to touch the ground (NaN: not touching)
     for frame in frames:
         scene.frame_set(frame)
         depsgraph = bpy.context.evaluated_depsgraph_get()
@@ -110,9 +119,18 @@ def deepest_below_ground(plan, prisms, scene, frames):
             points = evaluated_points(obj, depsgraph)
             depth = ground_heights(prisms, points) - points[:, 2]
             k = int(numpy.argmax(depth))
-            if depth[k] > worst[0]:
-                worst = (float(depth[k]), (frame, obj.name, tuple(round(float(c), 3) for c in points[k])))
-    return worst
+            if depth[k] > deepest[0]:
+                deepest = (float(depth[k]), (frame, obj.name, tuple(round(float(c), 3) for c in points[k])))
+            start = touched_at.setdefault(obj.name, numpy.full((len(points), 2), numpy.nan))
+            touching = depth >= -TOUCHING
+            start[~touching] = numpy.nan
+            new = touching & numpy.isnan(start[:, 0])
+            start[new] = points[new, :2]
+            slide = numpy.where(touching, numpy.linalg.norm(points[:, :2] - start, axis=1), 0.0)
+            k = int(numpy.argmax(slide))
+            if slide[k] > slid[0]:
+                slid = (float(slide[k]), (frame, obj.name, tuple(round(float(c), 3) for c in points[k])))
+    return deepest, slid
 
 
 def exported_apart(plan, scene, core, times, name):
@@ -176,13 +194,16 @@ def check_on_ground(name, path, starts_on, rig=RIG):
                     sole = lowest_vertex(agent.name)
                     check(abs(sole - height) < GROUND_TOLERANCE,
                           f"{agent.name}'s sole is at {sole:.3f} m, not on the ground at {height} m")
-        depth, where = deepest_below_ground(plan, prisms, scene, range(scene.frame_start, scene.frame_end + 1))
+        (depth, where), (slide, slid_where) = on_the_ground(plan, prisms, scene,
+                                                           range(scene.frame_start, scene.frame_end + 1))
         print(f"{name} ({'live' if live else 'keyed'}): bones {1000 * worst:.2f} mm apart over {compared}, "
-              f"knees {1000 * worst_knee:.2f} mm; deepest vertex {1000 * depth:.1f} mm below the ground {where}")
+              f"knees {1000 * worst_knee:.2f} mm; deepest vertex {1000 * depth:.1f} mm below the ground {where}; "
+              f"a touching vertex slides {1000 * slide:.1f} mm {slid_where}")
         check(compared > 1000, f"only {compared} positions compared")
         check(worst < TOLERANCE, f"on {name} the add-on's and the core's bones are {1000 * worst:.1f} mm apart")
         check(worst_knee < KNEE_TOLERANCE, f"on {name} the knees are {1000 * worst_knee:.1f} mm apart")
         check(depth < GROUND_TOLERANCE, f"a body's vertex {1000 * depth:.1f} mm below the ground at {where}")
+        check(slide < SLIDE_TOLERANCE, f"a vertex touching the ground slides {1000 * slide:.1f} mm at {slid_where}")
         if not live:
             exported = exported_apart(plan, scene, core, times, name)
             print(f"{name}: the exported file's bones {1000 * exported:.2f} mm from the core's")
