@@ -165,12 +165,14 @@ Snapshot snapshot(const std::vector<Walker>& walkers, std::vector<PlanWalk>& wal
   std::vector<const Way*> going(walkers.size(), nullptr);
   for (std::size_t j = 0; j < walkers.size(); ++j)
     if (!walkers[j].done && !walkers[j].ways.empty()) going[j] = &walkers[j].ways.front().way;
+  std::vector<int> layer_of(walkers.size(), 0);
+  if (crowd_grids.size() > 1)
+    for (std::size_t j = 0; j < walkers.size(); ++j)
+      layer_of[j] = ways.layered->layer_under(s.com[j], s.ground[j]);
   for (std::size_t layer = 0; layer < crowd_grids.size(); ++layer) {
     std::vector<char> on = s.present;
-    if (crowd_grids.size() > 1)
-      for (std::size_t j = 0; j < walkers.size(); ++j)
-        on[j] = on[j] && ways.layered->layer_under(s.com[j], s.ground[j]) ==
-                             static_cast<int>(layer);
+    for (std::size_t j = 0; j < walkers.size(); ++j)
+      on[j] = on[j] && layer_of[j] == static_cast<int>(layer);
     s.crowds.emplace_back(crowd_grids[layer], s.com, on, going);
   }
   for (std::size_t j = 0; j < walkers.size(); ++j) s.giving_way[j] = gives_way(walkers, j, s);

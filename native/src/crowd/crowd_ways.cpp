@@ -71,16 +71,12 @@ int CrowdWays::layer_of(const FootstepState& state) const {
                               state.foot_heights[1 - static_cast<int>(state.last_foot)]);
 }
 
-const NavMesh* CrowdWays::mesh_at(const FootstepState& state) const {
-  return layered != nullptr ? &layered->mesh(layer_of(state)) : mesh;
-}
-
 LayerWay way_on(const Walker& w, const CrowdWays& ways, const CharacterParams& character,
                 const FootstepState& from, const std::vector<std::size_t>& seen,
                 const Snapshot& now) {
   const Vec2 goal = w.spec->goals[w.goal];
   const int here = ways.layer_of(from);
-  const NavMesh* mesh = ways.mesh_at(from);
+  const NavMesh* mesh = ways.mesh_of(here);
   const CrowdDensity* crowd = now.crowds.empty() ? nullptr : &now.crowds[here];
   const auto direct = [&] {
     return LayerWay{way_toward(w, mesh, crowd, character, from.com, goal, seen, now),

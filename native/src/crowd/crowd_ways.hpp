@@ -21,8 +21,12 @@ struct CrowdWays {
 
   /// The layer `state` stands on (its stance foot's level; 0 with one).
   int layer_of(const FootstepState& state) const;
-  /// The mesh of that layer.
-  const NavMesh* mesh_at(const FootstepState& state) const;
+  /// The mesh of `layer`.
+  const NavMesh* mesh_of(int layer) const {
+    return layered != nullptr ? &layered->mesh(layer) : mesh;
+  }
+  /// The mesh of the layer `state` stands on.
+  const NavMesh* mesh_at(const FootstepState& state) const { return mesh_of(layer_of(state)); }
 };
 
 /// A walker's way on the layer it stands on.

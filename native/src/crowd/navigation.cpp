@@ -9,6 +9,7 @@
 #include <map>
 #include <queue>
 #include <stdexcept>
+#include <utility>
 
 #include "footfall/crowd/crowd_planner.hpp"
 #include "footfall/ground/foothold.hpp"
@@ -50,7 +51,7 @@ NavMesh layer_navmesh(const Scenario& scenario, const GroundLayers& layers, int 
   const double headroom = scenario.character.body_height;
   const std::vector<double> cuts =
       layers.count() > 1 ? cut_heights(layers, scenario.obstacles, layer)
-                         : cut_heights(Ground(scenario.ground), scenario.obstacles, headroom);
+                         : cut_heights(layers.ground(), scenario.obstacles, headroom);
   std::vector<std::vector<Vec2>> footprints;
   for (std::size_t i = 0; i < scenario.obstacles.size(); ++i) {
     footprints.push_back(footprint(scenario.obstacles[i], cuts[i]));
@@ -101,8 +102,18 @@ NavMesh navmesh_of(const Scenario& scenario, double margin) {
 }
 
 LayeredNavigation::LayeredNavigation(const Scenario& scenario, double margin)
-    : ground_(std::make_unique<const Ground>(scenario.ground)),
+    : owned_(std::make_unique<const Ground>(scenario.ground)),
+      ground_(owned_.get()),
       layers_(layers_for(*ground_, scenario.character)) {
+  make_meshes(scenario, margin);
+}
+
+LayeredNavigation::LayeredNavigation(const Scenario& scenario, GroundLayers layers, double margin)
+    : ground_(&layers.ground()), layers_(std::move(layers)) {
+  make_meshes(scenario, margin);
+}
+
+void LayeredNavigation::make_meshes(const Scenario& scenario, double margin) {
   for (int layer = 0; layer < layers_.count(); ++layer)
     meshes_.push_back(layer_navmesh(scenario, layers_, layer, margin));
 }

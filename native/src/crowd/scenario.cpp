@@ -262,7 +262,7 @@ Plan plan_among(const Scenario& scenario, const RunControl& control,
     // Levels above one another: ways over the layers, none annotated.
     for (std::size_t i = 0; i < agents.size(); ++i)
       if (!fixed.empty() && fixed[i] != nullptr) agents[i].sections = fixed[i]->sections;
-    plan.agents = plan_agents(agents, each, LayeredNavigation(scenario), control, fixed);
+    plan.agents = plan_agents(agents, each, LayeredNavigation(scenario, layers), control, fixed);
     if (control.cancelled()) plan.status = Status::kCancelled;
     return plan;
   }

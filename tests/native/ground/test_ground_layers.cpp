@@ -23,7 +23,7 @@ int layer_near(const GroundLayers& layers, const Ground& ground, Vec2 p, double 
   return level ? layers.layer_of(*level) : -1;
 }
 
-/// The length of `walls` that pass within `reach` of `p`.
+/// True if one of `walls` passes within `reach` of `p`.
 bool wall_near(const std::vector<GroundWall>& walls, Vec2 p, double reach) {
   return std::any_of(walls.begin(), walls.end(), [&](const GroundWall& wall) {
     return distance_to_segment(p, wall.a, wall.b) <= reach;

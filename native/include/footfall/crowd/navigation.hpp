@@ -35,6 +35,10 @@ struct LayeredPath {
 class LayeredNavigation {
  public:
   explicit LayeredNavigation(const Scenario& scenario, double margin = kNavMeshMargin);
+  /// The same over `layers` found already (layers_for, for the scenario's
+  /// character), whose ground must outlive it.
+  LayeredNavigation(const Scenario& scenario, GroundLayers layers,
+                    double margin = kNavMeshMargin);
 
   int layers() const { return static_cast<int>(meshes_.size()); }
   const NavMesh& mesh(int layer) const { return meshes_.at(layer); }
@@ -58,7 +62,10 @@ class LayeredNavigation {
   int layer_under(Vec2 p, double z) const;
 
  private:
-  std::unique_ptr<const Ground> ground_;  // the layers refer to it
+  void make_meshes(const Scenario& scenario, double margin);
+
+  std::unique_ptr<const Ground> owned_;  // made from the scenario, or none: given
+  const Ground* ground_;                 // the layers refer to it
   GroundLayers layers_;
   std::vector<NavMesh> meshes_;
 };

@@ -83,6 +83,8 @@ class GroundLayers {
   const std::vector<GroundPortal>& portals() const { return portals_; }
   /// The headroom the layers were found for. [m]
   double headroom() const { return headroom_; }
+  /// The ground they split.
+  const Ground& ground() const { return *ground_; }
 
  private:
   friend class Ground;
