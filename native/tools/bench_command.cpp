@@ -5,10 +5,12 @@
 #include <cmath>
 #include <cstdint>
 #include <iomanip>
+#include <iostream>
 #include <limits>
 #include <string>
 #include <utility>
 #include <vector>
+#include <unistd.h>
 
 #include "footfall/io/plan_file.hpp"
 #include "footfall/plan/metrics.hpp"
@@ -149,11 +151,19 @@ void run_crowd_seeds(const std::function<Scenario(std::uint64_t)>& crowd, int fi
   for (int seed = first; seed <= last; ++seed) {
     RunControl control;
     control.threads = threads;
+    // A city of thousands plans for many minutes: show how far it has come.
+    const bool terminal = isatty(STDERR_FILENO) == 1;
+    if (terminal)
+      control.progress = [seed](double fraction) {
+        std::cerr << "\rseed " << seed << ": planning " << std::setw(3)
+                  << static_cast<int>(100 * fraction) << "%" << std::flush;
+      };
     const Scenario scenario = crowd(static_cast<std::uint64_t>(seed));
     const auto begin = std::chrono::steady_clock::now();
     const Plan plan = plan_scenario(scenario, control);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    if (terminal) std::cerr << "\r                        \r" << std::flush;
     int reached = 0;
     for (const AgentPlan& agent : plan.agents)
       reached += agent.status == AgentStatus::kReached ? 1 : 0;

@@ -32,6 +32,62 @@ std::vector<std::uint32_t> box_sums(std::vector<std::uint32_t> v, long columns) 
   return v;
 }
 
+/// Each cell's length of way to `from` across `grid` (Dijkstra's search),
+/// infinite where none leads, kept in single precision. [m]
+std::vector<float> lengths_from(const CrowdGrid& grid, long from) {
+  std::vector<double> length(grid.cells(), std::numeric_limits<double>::infinity());
+  using Entry = std::pair<double, long>;  // (length, cell)
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  length[static_cast<std::size_t>(from)] = 0.0;
+  open.push({0.0, from});
+  while (!open.empty()) {
+    const auto [here, cell] = open.top();
+    open.pop();
+    if (here > length[static_cast<std::size_t>(cell)]) continue;  // stale
+    grid.for_each_step(cell, [&](long next, double step) {
+      const double through = here + step;
+      if (through >= length[static_cast<std::size_t>(next)]) return;
+      length[static_cast<std::size_t>(next)] = through;
+      open.push({through, next});
+    });
+  }
+  return {length.begin(), length.end()};
+}
+
+/// The cheapest-way search's tables, kept per thread from search to search:
+/// a search touches a few thousand cells of a grid that may hold 250,000.
+/// A cell's entries hold only if its stamp is the search's.
+struct CellTables {
+  std::vector<double> cost;
+  std::vector<long> parent;
+  std::vector<std::uint32_t> stamp;
+  std::uint32_t search = 0;
+
+  void begin(std::size_t cells) {
+    if (stamp.size() < cells || search == std::numeric_limits<std::uint32_t>::max()) {
+      cost.resize(std::max(cells, cost.size()));
+      parent.resize(cost.size());
+      stamp.assign(cost.size(), 0);
+      search = 0;
+    }
+    ++search;
+  }
+  double cost_of(long cell) const {
+    const auto k = static_cast<std::size_t>(cell);
+    return stamp[k] == search ? cost[k] : std::numeric_limits<double>::infinity();
+  }
+  long parent_of(long cell) const {
+    const auto k = static_cast<std::size_t>(cell);
+    return stamp[k] == search ? parent[k] : -1;
+  }
+  void set(long cell, double c, long p) {
+    const auto k = static_cast<std::size_t>(cell);
+    stamp[k] = search;
+    cost[k] = c;
+    parent[k] = p;
+  }
+};
+
 }  // namespace
 
 CrowdGrid::CrowdGrid(const NavMesh& mesh, double radius) : low_(mesh.min_corner()) {
@@ -47,6 +103,37 @@ CrowdGrid::CrowdGrid(const NavMesh& mesh, double radius) : low_(mesh.min_corner(
     open[static_cast<std::size_t>(c)] = walkable_[static_cast<std::size_t>(c)];
   }
   room_ = box_sums(std::move(open), columns_);
+  // Landmarks far apart: each the walkable cell farthest from those before
+  // (the first, farthest from the first walkable cell).
+  const auto first = std::find(walkable_.begin(), walkable_.end(), 1);
+  if (first == walkable_.end()) return;
+  std::vector<float> nearest = lengths_from(*this, first - walkable_.begin());
+  for (int k = 0; k < kLandmarks; ++k) {
+    long farthest = -1;
+    for (long c = 0; c < columns_ * rows_; ++c) {
+      const float d = nearest[static_cast<std::size_t>(c)];
+      if (d != std::numeric_limits<float>::infinity() &&
+          (farthest < 0 || d > nearest[static_cast<std::size_t>(farthest)]))
+        farthest = c;
+    }
+    if (farthest < 0 || nearest[static_cast<std::size_t>(farthest)] == 0.0F) break;
+    landmark_lengths_.push_back(lengths_from(*this, farthest));
+    const std::vector<float>& to = landmark_lengths_.back();
+    if (k == 0) nearest = to;
+    for (std::size_t c = 0; c < nearest.size(); ++c) nearest[c] = std::min(nearest[c], to[c]);
+  }
+}
+
+double CrowdGrid::least_length(long a, long b) const {
+  // Less a millionth of the lengths: single precision rounds them.
+  constexpr double kRounding = 1e-6;
+  double bound = distance(centre(a), centre(b));
+  for (const std::vector<float>& to : landmark_lengths_) {
+    const double from_a = to[static_cast<std::size_t>(a)], from_b = to[static_cast<std::size_t>(b)];
+    if (std::isfinite(from_a) && std::isfinite(from_b))
+      bound = std::max(bound, std::abs(from_a - from_b) - kRounding * std::max(from_a, from_b));
+  }
+  return bound;
 }
 
 long CrowdGrid::cell_of(Vec2 p) const {
@@ -115,46 +202,37 @@ double CrowdDensity::cost_of(const std::vector<Vec2>& points, double ahead) cons
 std::vector<Vec2> CrowdDensity::cheapest_cells(Vec2 from, Vec2 goal, double budget) const {
   const long start = grid_->cell_of(from), end = grid_->cell_of(goal);
   if (start < 0 || end < 0) return {};
-  const long columns = grid_->columns(), rows = grid_->rows();
-  std::vector<double> cost(grid_->cells(), std::numeric_limits<double>::infinity());
-  std::vector<long> parent(grid_->cells(), -1);
-  using Entry = std::pair<double, long>;  // (bound, cell)
+  thread_local CellTables tables;
+  tables.begin(grid_->cells());
+  struct Entry {
+    double bound;  ///< cost so far plus the least length on
+    long cell;
+    double cost;  ///< so far: the entry is stale once the cell costs less
+    bool operator>(const Entry& e) const {
+      return bound > e.bound || (bound == e.bound && cell > e.cell);
+    }
+  };
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  const Vec2 target = grid_->centre(end);
-  cost[static_cast<std::size_t>(start)] = 0.0;
-  open.push({distance(grid_->centre(start), target), start});
+  tables.set(start, 0.0, -1);
+  open.push({grid_->least_length(start, end), start, 0.0});
   int expanded = 0;
   while (!open.empty()) {
-    const auto [bound, cell] = open.top();
+    const Entry top = open.top();
     open.pop();
-    const double here = cost[static_cast<std::size_t>(cell)];
-    if (bound > here + distance(grid_->centre(cell), target) + 1e-9) continue;  // stale
-    if (bound >= budget || ++expanded > kMostExpanded) return {};
-    if (cell == end) break;
-    const long x = cell % columns, y = cell / columns;
-    for (long dy = -1; dy <= 1; ++dy)
-      for (long dx = -1; dx <= 1; ++dx) {
-        const long u = x + dx, v = y + dy;
-        if ((dx == 0 && dy == 0) || u < 0 || v < 0 || u >= columns || v >= rows) continue;
-        const long next = v * columns + u;
-        // Diagonally only past two walkable cells: no corner is cut.
-        if (!grid_->walkable(next) || (dx != 0 && dy != 0 &&
-                                       !(grid_->walkable(y * columns + u) &&
-                                         grid_->walkable(v * columns + x))))
-          continue;
-        const double step = grid_->cell() * (dx != 0 && dy != 0 ? std::sqrt(2.0) : 1.0);
-        const double through =
-            here + 0.5 * step * (cost_per_metre(cell) + cost_per_metre(next));
-        if (through >= cost[static_cast<std::size_t>(next)]) continue;
-        cost[static_cast<std::size_t>(next)] = through;
-        parent[static_cast<std::size_t>(next)] = cell;
-        open.push({through + distance(grid_->centre(next), target), next});
-      }
+    if (top.cost > tables.cost_of(top.cell)) continue;
+    if (top.bound >= budget || ++expanded > kMostExpanded) return {};
+    if (top.cell == end) break;
+    grid_->for_each_step(top.cell, [&](long next, double step) {
+      const double through =
+          top.cost + 0.5 * step * (cost_per_metre(top.cell) + cost_per_metre(next));
+      if (through >= tables.cost_of(next)) return;
+      tables.set(next, through, top.cell);
+      open.push({through + grid_->least_length(next, end), next, through});
+    });
   }
-  if (parent[static_cast<std::size_t>(end)] < 0 && end != start) return {};
+  if (tables.parent_of(end) < 0 && end != start) return {};
   std::vector<Vec2> path{goal};
-  for (long c = parent[static_cast<std::size_t>(end)]; c >= 0 && c != start;
-       c = parent[static_cast<std::size_t>(c)])
+  for (long c = tables.parent_of(end); c >= 0 && c != start; c = tables.parent_of(c))
     path.push_back(grid_->centre(c));
   path.push_back(from);
   std::reverse(path.begin(), path.end());

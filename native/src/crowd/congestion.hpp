@@ -37,11 +37,24 @@ constexpr double kCrowdWeight = 8.0;
 /// ways do not flip between two of about the same cost.
 constexpr double kDetourGain = 0.15;
 
+/// Landmarks whose distances bound the cheapest-way search from below.
+constexpr int kLandmarks = 8;
+
 /// The walkable cells of a navigation mesh: those whose centre has room for
 /// a disc of `radius`. Made once per crowd; read by every search.
 class CrowdGrid {
  public:
   CrowdGrid(const NavMesh& mesh, double radius);
+
+  /// Calls `visit(next, length)` for each walkable cell one step from
+  /// `cell` (eight neighbours, diagonally only past two walkable cells: no
+  /// corner is cut), with the step's length. [m]
+  template <typename Visit>
+  void for_each_step(long cell, Visit&& visit) const;
+  /// A lower bound on the length of any way of steps from `a` to `b`: the
+  /// straight line, or more by the landmarks' distances (the triangle
+  /// inequality). [m]
+  double least_length(long a, long b) const;
 
   /// The cell holding `p`, or -1 outside the grid.
   long cell_of(Vec2 p) const;
@@ -60,7 +73,25 @@ class CrowdGrid {
   long columns_ = 0, rows_ = 0;
   std::vector<char> walkable_;
   std::vector<std::uint32_t> room_;
+  /// Per landmark, each cell's length of way to it (infinite where none
+  /// leads). [m]
+  std::vector<std::vector<float>> landmark_lengths_;
 };
+
+template <typename Visit>
+void CrowdGrid::for_each_step(long cell, Visit&& visit) const {
+  const long x = cell % columns_, y = cell / columns_;
+  for (long dy = -1; dy <= 1; ++dy)
+    for (long dx = -1; dx <= 1; ++dx) {
+      const long u = x + dx, v = y + dy;
+      if ((dx == 0 && dy == 0) || u < 0 || v < 0 || u >= columns_ || v >= rows_) continue;
+      const long next = v * columns_ + u;
+      if (!walkable(next) ||
+          (dx != 0 && dy != 0 && !(walkable(y * columns_ + u) && walkable(v * columns_ + x))))
+        continue;
+      visit(next, cell_ * (dx != 0 && dy != 0 ? 1.4142135623730951 : 1.0));
+    }
+}
 
 /// How many agents stand in each cell of a CrowdGrid at one tick, and the
 /// ways that avoid where they are thick.
