@@ -32,28 +32,6 @@ std::vector<std::uint32_t> box_sums(std::vector<std::uint32_t> v, long columns) 
   return v;
 }
 
-/// Each cell's length of way to `from` across `grid` (Dijkstra's search),
-/// infinite where none leads, kept in single precision. [m]
-std::vector<float> lengths_from(const CrowdGrid& grid, long from) {
-  std::vector<double> length(grid.cells(), std::numeric_limits<double>::infinity());
-  using Entry = std::pair<double, long>;  // (length, cell)
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  length[static_cast<std::size_t>(from)] = 0.0;
-  open.push({0.0, from});
-  while (!open.empty()) {
-    const auto [here, cell] = open.top();
-    open.pop();
-    if (here > length[static_cast<std::size_t>(cell)]) continue;  // stale
-    grid.for_each_step(cell, [&](long next, double step) {
-      const double through = here + step;
-      if (through >= length[static_cast<std::size_t>(next)]) return;
-      length[static_cast<std::size_t>(next)] = through;
-      open.push({through, next});
-    });
-  }
-  return {length.begin(), length.end()};
-}
-
 /// The cheapest-way search's tables, kept per thread from search to search:
 /// a search touches a few thousand cells of a grid that may hold 250,000.
 /// A cell's entries hold only if its stamp is the search's.
@@ -103,37 +81,6 @@ CrowdGrid::CrowdGrid(const NavMesh& mesh, double radius) : low_(mesh.min_corner(
     open[static_cast<std::size_t>(c)] = walkable_[static_cast<std::size_t>(c)];
   }
   room_ = box_sums(std::move(open), columns_);
-  // Landmarks far apart: each the walkable cell farthest from those before
-  // (the first, farthest from the first walkable cell).
-  const auto first = std::find(walkable_.begin(), walkable_.end(), 1);
-  if (first == walkable_.end()) return;
-  std::vector<float> nearest = lengths_from(*this, first - walkable_.begin());
-  for (int k = 0; k < kLandmarks; ++k) {
-    long farthest = -1;
-    for (long c = 0; c < columns_ * rows_; ++c) {
-      const float d = nearest[static_cast<std::size_t>(c)];
-      if (d != std::numeric_limits<float>::infinity() &&
-          (farthest < 0 || d > nearest[static_cast<std::size_t>(farthest)]))
-        farthest = c;
-    }
-    if (farthest < 0 || nearest[static_cast<std::size_t>(farthest)] == 0.0F) break;
-    landmark_lengths_.push_back(lengths_from(*this, farthest));
-    const std::vector<float>& to = landmark_lengths_.back();
-    if (k == 0) nearest = to;
-    for (std::size_t c = 0; c < nearest.size(); ++c) nearest[c] = std::min(nearest[c], to[c]);
-  }
-}
-
-double CrowdGrid::least_length(long a, long b) const {
-  // Less a millionth of the lengths: single precision rounds them.
-  constexpr double kRounding = 1e-6;
-  double bound = distance(centre(a), centre(b));
-  for (const std::vector<float>& to : landmark_lengths_) {
-    const double from_a = to[static_cast<std::size_t>(a)], from_b = to[static_cast<std::size_t>(b)];
-    if (std::isfinite(from_a) && std::isfinite(from_b))
-      bound = std::max(bound, std::abs(from_a - from_b) - kRounding * std::max(from_a, from_b));
-  }
-  return bound;
 }
 
 long CrowdGrid::cell_of(Vec2 p) const {
@@ -205,7 +152,7 @@ std::vector<Vec2> CrowdDensity::cheapest_cells(Vec2 from, Vec2 goal, double budg
   thread_local CellTables tables;
   tables.begin(grid_->cells());
   struct Entry {
-    double bound;  ///< cost so far plus the least length on
+    double bound;  ///< cost so far plus the straight line on
     long cell;
     double cost;  ///< so far: the entry is stale once the cell costs less
     bool operator>(const Entry& e) const {
@@ -213,8 +160,9 @@ std::vector<Vec2> CrowdDensity::cheapest_cells(Vec2 from, Vec2 goal, double budg
     }
   };
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  const Vec2 target = grid_->centre(end);
   tables.set(start, 0.0, -1);
-  open.push({grid_->least_length(start, end), start, 0.0});
+  open.push({distance(grid_->centre(start), target), start, 0.0});
   int expanded = 0;
   while (!open.empty()) {
     const Entry top = open.top();
@@ -227,7 +175,7 @@ std::vector<Vec2> CrowdDensity::cheapest_cells(Vec2 from, Vec2 goal, double budg
           top.cost + 0.5 * step * (cost_per_metre(top.cell) + cost_per_metre(next));
       if (through >= tables.cost_of(next)) return;
       tables.set(next, through, top.cell);
-      open.push({through + grid_->least_length(next, end), next, through});
+      open.push({through + distance(grid_->centre(next), target), next, through});
     });
   }
   if (tables.parent_of(end) < 0 && end != start) return {};
@@ -244,16 +192,19 @@ std::optional<Way> CrowdDensity::way_round(const Way& way, const NavMesh& mesh,
   if (grid_ == nullptr || way.points.size() < 2) return std::nullopt;
   if (cost_of(way.points, kCrowdAhead) <= std::min(kCrowdAhead, way.length) + 1e-9)
     return std::nullopt;  // no crowd on its first stretch
+  // The way as far as a way round may rejoin it, and on from there.
+  const Polyline line(way.points);
+  const bool long_way = line.length() > kRoundReach;
+  const std::vector<Vec2> head = long_way ? line.between(0.0, kRoundReach) : way.points;
   // A way round costs at least its length, at least the straight line's: the
   // search stops short of the cost it must beat (where the crowd fills the
   // only way, such as a door everyone leaves by, at once or nearly).
   const double infinite = std::numeric_limits<double>::infinity();
-  const double budget = (1.0 - kDetourGain) * cost_of(way.points, infinite);
+  const double budget = (1.0 - kDetourGain) * cost_of(head, infinite);
   // Pulled tight, a path of cells may shorten by up to 1 / cos(22.5 deg), as
   // eight directions approximate any.
   constexpr double kPulled = 1.0824;
-  const std::vector<Vec2> cells =
-      cheapest_cells(way.points.front(), way.points.back(), kPulled * budget);
+  const std::vector<Vec2> cells = cheapest_cells(head.front(), head.back(), kPulled * budget);
   if (cells.size() < 2) return std::nullopt;
   // The cells' path pulled tight: from each point on to the farthest in a
   // row that it sees with `radius` of room.
@@ -266,8 +217,12 @@ std::optional<Way> CrowdDensity::way_round(const Way& way, const NavMesh& mesh,
     round.points.push_back(cells[next]);
     at = next;
   }
-  round.length = polyline_length(round.points);
   if (cost_of(round.points, infinite) > budget) return std::nullopt;
+  if (long_way) {
+    const std::vector<Vec2> rest = line.between(kRoundReach, line.length());
+    round.points.insert(round.points.end(), rest.begin() + 1, rest.end());
+  }
+  round.length = polyline_length(round.points);
   return round;
 }
 

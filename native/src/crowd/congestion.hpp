@@ -22,6 +22,9 @@ constexpr double kCrowdCell = 1.0;
 constexpr double kMostCells = 250000;
 /// Ways are looked at for crowds this far ahead. [m]
 constexpr double kCrowdAhead = 15.0;
+/// A way round rejoins the way at most this far along it: a street or two
+/// over, and its search costs the square of this, not a city's size. [m]
+constexpr double kRoundReach = 40.0;
 /// An agent counts as spread over this much of the way ahead of it, where
 /// it will be in the next seconds: a street that many are heading for counts
 /// as crowded before they arrive. [m]
@@ -37,9 +40,6 @@ constexpr double kCrowdWeight = 8.0;
 /// ways do not flip between two of about the same cost.
 constexpr double kDetourGain = 0.15;
 
-/// Landmarks whose distances bound the cheapest-way search from below.
-constexpr int kLandmarks = 8;
-
 /// The walkable cells of a navigation mesh: those whose centre has room for
 /// a disc of `radius`. Made once per crowd; read by every search.
 class CrowdGrid {
@@ -51,10 +51,6 @@ class CrowdGrid {
   /// corner is cut), with the step's length. [m]
   template <typename Visit>
   void for_each_step(long cell, Visit&& visit) const;
-  /// A lower bound on the length of any way of steps from `a` to `b`: the
-  /// straight line, or more by the landmarks' distances (the triangle
-  /// inequality). [m]
-  double least_length(long a, long b) const;
 
   /// The cell holding `p`, or -1 outside the grid.
   long cell_of(Vec2 p) const;
@@ -73,9 +69,6 @@ class CrowdGrid {
   long columns_ = 0, rows_ = 0;
   std::vector<char> walkable_;
   std::vector<std::uint32_t> room_;
-  /// Per landmark, each cell's length of way to it (infinite where none
-  /// leads). [m]
-  std::vector<std::vector<float>> landmark_lengths_;
 };
 
 template <typename Visit>
@@ -113,8 +106,9 @@ class CrowdDensity {
 
   /// A way from `from` to `goal` round the crowds, when the first
   /// kCrowdAhead of `way` runs through one and the cheapest way across the
-  /// grid costs kDetourGain less than `way`; kept `radius` clear of the
-  /// obstacles of `mesh` (its corners cut where the mesh allows).
+  /// grid to the point kRoundReach along `way` costs kDetourGain less than
+  /// `way` to there; kept `radius` clear of the obstacles of `mesh` (its
+  /// corners cut where the mesh allows), and on along `way` from there.
   std::optional<Way> way_round(const Way& way, const NavMesh& mesh, double radius) const;
 
  private:

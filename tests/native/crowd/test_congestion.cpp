@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -114,49 +113,33 @@ TEST(CrowdDensity, AWayRoundMustGainOnTheWayThrough) {
   EXPECT_FALSE(full.way_round({{{-14.0, -2.5}, {14.0, -2.5}}, 28.0}, mesh, 0.5).has_value());
 }
 
-/// Each cell's length of way from `from`, by Dijkstra's search over the
-/// grid's steps: the oracle the landmarks' bound is held to. [m]
-std::vector<double> lengths_across(const CrowdGrid& grid, long from) {
-  std::vector<double> length(grid.cells(), std::numeric_limits<double>::infinity());
-  std::vector<long> open{from};
-  length[static_cast<std::size_t>(from)] = 0.0;
-  // Bellman-Ford by rounds: slow, plain, and no priority queue to get wrong.
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (long cell = 0; cell < static_cast<long>(grid.cells()); ++cell) {
-      const double here = length[static_cast<std::size_t>(cell)];
-      if (!std::isfinite(here)) continue;
-      grid.for_each_step(cell, [&](long next, double step) {
-        if (here + step < length[static_cast<std::size_t>(next)] - 1e-12) {
-          length[static_cast<std::size_t>(next)] = here + step;
-          changed = true;
-        }
-      });
-    }
-  }
-  return length;
-}
-
-TEST(CrowdGrid, LeastLengthIsNeverMoreThanTheWayAndSeesRoundBlocks) {
-  const NavMesh mesh = navmesh_of(city_scenario(1, 30.0, 1));
+TEST(CrowdDensity, AWayRoundRejoinsTheWayWithinItsReach) {
+  // A city 100 m wide: its street along y = 0 is full from x = -40 to 30,
+  // and the way runs 90 m along it. The way round takes the next street and
+  // comes back to the way kRoundReach along it; from there on it is the way.
+  Scenario scenario;
+  scenario.obstacles = city_blocks(100.0);
+  scenario.agents.push_back({"a", {-45.0, 0.0}, 0.0, {{45.0, 0.0}}});
+  const NavMesh mesh = navmesh_of(scenario);
   const CrowdGrid grid(mesh, 0.5);
-  double beyond_line = 1.0;  // the most the bound exceeds the straight line by
-  for (const Vec2 from : {Vec2{-14.0, -14.0}, Vec2{-5.0, 0.0}, Vec2{5.0, 5.0}}) {
-    const long start = grid.cell_of(from);
-    ASSERT_TRUE(grid.walkable(start));
-    const std::vector<double> way = lengths_across(grid, start);
-    for (long cell = 0; cell < static_cast<long>(grid.cells()); ++cell) {
-      if (!std::isfinite(way[static_cast<std::size_t>(cell)]) || cell == start) continue;
-      const double least = grid.least_length(start, cell);
-      const double line = distance(grid.centre(start), grid.centre(cell));
-      EXPECT_LE(least, way[static_cast<std::size_t>(cell)] + 1e-9) << from.x << " " << cell;
-      EXPECT_GE(least, line - 1e-9);
-      beyond_line = std::max(beyond_line, least / line);
+  std::vector<Vec2> people;
+  for (double x = -40.0; x <= 30.0; x += 0.8)
+    for (const double y : {-1.2, -0.4, 0.4, 1.2}) people.push_back({x, y});
+  const CrowdDensity full(grid, people, std::vector<char>(people.size(), 1));
+  const Way along{{{-45.0, 0.0}, {45.0, 0.0}}, 90.0};
+  const std::optional<Way> round = full.way_round(along, mesh, 0.5);
+  ASSERT_TRUE(round.has_value());
+  EXPECT_TRUE(std::any_of(round->points.begin(), round->points.end(),
+                          [](Vec2 p) { return std::abs(p.y) > 5.0; }));
+  const Vec2 rejoin{-45.0 + kRoundReach, 0.0};
+  EXPECT_NE(std::find(round->points.begin(), round->points.end(), rejoin), round->points.end());
+  for (const Vec2 p : round->points) {
+    if (p.x > rejoin.x) {
+      EXPECT_EQ(p.y, 0.0) << p.x;
     }
   }
-  // Across a block the way goes round it: the landmarks know it is longer
-  // than the line through the block.
-  EXPECT_GT(beyond_line, 1.25);
+  EXPECT_EQ(round->points.back(), along.points.back());
+  EXPECT_NEAR(round->length, polyline_length(round->points), 1e-9);
 }
 
 TEST(CrowdGrid, IsCoarserOnVastGround) {
