@@ -402,7 +402,7 @@ std::vector<std::size_t> near(std::size_t i, const Snapshot& now) {
   std::vector<std::size_t> around, out;
   now.around(i, kCheckDistance, around);
   for (const std::size_t j : around) {
-    if (j != i && now.present[j] && distance(now.com[j], now.com[i]) <= kCheckDistance)
+    if (now.present[j] && distance(now.com[j], now.com[i]) <= kCheckDistance)
       out.push_back(j);
   }
   return out;
