@@ -62,7 +62,7 @@ void bind_animate(py::module_& m) {
       "foot_roll",
       [](const py::array_t<double>& times, const py::array_t<bool>& planted, int side,
          const py::array_t<double>& start, const py::array_t<double>& end, const py::array_t<int>& foot,
-         const py::array_t<bool>& forward, const py::array_t<double>& speed, std::array<double, 4> shape,
+         const py::array_t<bool>& forward, const py::array_t<double>& speed, std::array<double, 5> shape,
          double full_speed, bool leaves) {
         const auto n = static_cast<std::size_t>(start.size());
         if (static_cast<std::size_t>(end.size()) != n || static_cast<std::size_t>(foot.size()) != n ||
@@ -73,7 +73,7 @@ void bind_animate(py::module_& m) {
         for (std::size_t i = 0; i < n; ++i)
           steps[i] = {start.at(i), end.at(i), foot.at(i), forward.at(i), speed.at(i)};
         const animate::FootRoller roller(std::move(steps), full_speed, leaves);
-        const animate::FootShape foot_shape{shape[0], shape[1], shape[2], shape[3]};
+        const animate::FootShape foot_shape{shape[0], shape[1], shape[2], shape[3], shape[4]};
         const auto count = times.size();
         py::array_t<double> pitch(count), ahead(count), up(count);
         for (py::ssize_t i = 0; i < count; ++i) {
@@ -88,7 +88,21 @@ void bind_animate(py::module_& m) {
       py::arg("forward"), py::arg("speed"), py::arg("shape"), py::arg("full_speed"), py::arg("leaves") = false,
       "Heel-toe roll of foot `side` (0 left) at `times`, planted or not: (pitch, forward, up) arrays. "
       "Steps as arrays (start, end, foot, forward, speed); shape (ankle_height, heel_back, ball_ahead, "
-      "ball_height).");
+      "ball_height, toe_off_limit).");
+  m.def(
+      "steepest_toe_off",
+      [](std::array<double, 4> shape, const py::array_t<double>& skin) {
+        if (skin.ndim() != 2 || skin.shape(1) != 4)
+          throw std::invalid_argument("the skin is an array of (ahead, height, foot weight, toe weight) rows");
+        std::vector<animate::SoleVertex> vertices(static_cast<std::size_t>(skin.shape(0)));
+        for (py::ssize_t i = 0; i < skin.shape(0); ++i)
+          vertices[static_cast<std::size_t>(i)] = {skin.at(i, 0), skin.at(i, 1), skin.at(i, 2), skin.at(i, 3)};
+        return animate::steepest_toe_off({shape[0], shape[1], shape[2], shape[3]}, vertices);
+      },
+      py::arg("shape"), py::arg("skin"),
+      "The most a foot's heel may rise in a stance [rad]: shape (ankle_height, heel_back, ball_ahead, "
+      "ball_height) and the foot's skin at rest, rows of (ahead of the ankle, height, weight on the foot "
+      "bone, on the toe bone) [m].");
   py::dict shares;
   shares["chest"] = animate::kChestLook;
   shares["head"] = animate::kHeadLook;

@@ -14,7 +14,7 @@ class FootRest:
     the ball and the heel's contact, and the rig's facing."""
 
     def __init__(self, rig, profile, side):
-        from footfall.bridge.rig_import import foot_points
+        from footfall.bridge.rig_import import foot_skin
         from footfall.core import foot_roll
 
         world = rig.matrix_world
@@ -29,7 +29,7 @@ class FootRest:
         self.ankle = world @ bones[self.foot].head_local
         self.ball = world @ bones[self.toe].head_local
         shape = foot_roll.foot_shape(self.ankle, self.ball, forward, profile.dimensions["foot_length"],
-                                     foot_points(rig, profile.bones)[side])
+                                     foot_skin(rig, profile.bones)[side])
         self.heel = Vector((self.ankle.x, self.ankle.y, 0.0)) - shape.heel_back * forward
 
     def error(self, armature, pose, ground: float = 0.0) -> float:

@@ -190,6 +190,8 @@ def test_agents_of_other_sizes_are_the_rig_scaled_with_their_feet_on_the_plan(ff
 STAIRS = ROOT / "tests" / "data" / "stairs.json"
 BRIDGE = ROOT / "tests" / "data" / "bridge.json"
 GROUND_TOLERANCE = 0.01  # [m] a foot's vertex below the ground under it
+TOUCHING = 0.002  # [m] a vertex this near the ground under it touches it
+SLIDE_TOLERANCE = 0.005  # [m] the farthest one may slide while it touches
 
 
 def foot_vertices(crowd, agent, times, bones):
@@ -214,10 +216,27 @@ def foot_vertices(crowd, agent, times, bones):
     return z_up(numpy.concatenate(points, axis=1))
 
 
+def slid_while_touching(points, under):
+    """How far any of `points` ((frames, n, 3)) slides across the ground
+    (heights `under`, (frames, n)) while it touches it (within TOUCHING),
+    from where it came to touch it [m]."""
+    touched_at = numpy.full((points.shape[1], 2), numpy.nan)
+    slid = 0.0
+    for frame, ground in zip(points, under):
+        touching = ground - frame[:, 2] >= -TOUCHING
+        touched_at[~touching] = numpy.nan
+        new = touching & numpy.isnan(touched_at[:, 0])
+        touched_at[new] = frame[new, :2]
+        if touching.any():
+            slid = max(slid, float(numpy.linalg.norm(frame[touching, :2] - touched_at[touching], axis=1).max()))
+    return slid
+
+
 def animated_on_ground(ff, cli, tmp_path, scenario):
     """`scenario` planned and animated by `plan --glb` (a valid .glb): its
     plan, its crowd, the rig's bones, the deepest any foot's skinned vertex
-    lies below the ground under it at any frame, and the frames."""
+    lies below the ground under it at any frame, the farthest one slides
+    while it touches the ground, and the frames."""
     plan_path, crowd_path = tmp_path / "plan.json", tmp_path / "crowd.glb"
     run = subprocess.run([cli, "plan", str(scenario), "-o", str(plan_path), "--glb", str(crowd_path),
                           "--rig", str(RIG)], capture_output=True, text=True)
@@ -229,15 +248,16 @@ def animated_on_ground(ff, cli, tmp_path, scenario):
     crowd = CrowdGlb(crowd_path)
     bones = json.loads(PROFILE.read_text())["bones"]
     feet = [bones[side][part] for side in ("left", "right") for part in ("foot", "toe")]
-    deepest, frames = 0.0, 0
+    deepest, slid, frames = 0.0, 0.0, 0
     for agent in plan.agents:
         times = crowd.animation_times(agent.name)
         points = foot_vertices(crowd, agent.name, times, feet)
         under = ground_heights(prisms, points.reshape(-1, 3)).reshape(points.shape[:2])
         depth = numpy.max(under - points[..., 2], axis=1)
         deepest = max(deepest, float(depth.max()))
+        slid = max(slid, slid_while_touching(points, under))
         frames += len(times)
-    return plan, crowd, bones, deepest, frames
+    return plan, crowd, bones, deepest, slid, frames
 
 
 def hips_height_at_end(crowd, bones, name):
@@ -250,26 +270,30 @@ def test_a_stair_crowd_keeps_every_foot_on_its_tread_and_out_of_the_risers(ff, c
     """Up and down a flight: from the skinned mesh at every frame, no vertex
     of a foot more than 1 cm below the ground under it (a toe in a riser, a
     sole through a tread), and the hips risen to the landing."""
-    plan, crowd, bones, deepest, frames = animated_on_ground(ff, cli, tmp_path, STAIRS)
+    plan, crowd, bones, deepest, slid, frames = animated_on_ground(ff, cli, tmp_path, STAIRS)
     for agent in plan.agents:
         landing = agent.name.startswith("up")
         assert hips_height_at_end(crowd, bones, agent.name) > (1.5 if landing else 0.5), agent.name
-    print(f"stairs: deepest foot vertex {1000 * deepest:.1f} mm below the ground, {frames} frames")
+    print(f"stairs: deepest foot vertex {1000 * deepest:.1f} mm below the ground, one touching it slides "
+          f"{1000 * slid:.1f} mm, {frames} frames")
     assert frames > 2000
     assert deepest < GROUND_TOLERANCE
+    assert slid < SLIDE_TOLERANCE
 
 
 def test_those_on_a_bridge_walk_on_its_deck_and_those_under_it_on_the_street(ff, cli, tmp_path):
     """tests/data/bridge.json: two walk along the street under a footbridge's
     deck, two cross the deck 2.89 m above them. Every foot's skinned vertex
     on the ground under it (the deck for those above, the street below)."""
-    plan, crowd, bones, deepest, frames = animated_on_ground(ff, cli, tmp_path, BRIDGE)
+    plan, crowd, bones, deepest, slid, frames = animated_on_ground(ff, cli, tmp_path, BRIDGE)
     for agent in plan.agents:
         over = agent.name.startswith("over")
         hips = hips_height_at_end(crowd, bones, agent.name)
         assert (hips > 3.5) if over else (0.5 < hips < 1.5), (agent.name, hips)
-    print(f"bridge: deepest foot vertex {1000 * deepest:.1f} mm below the ground, {frames} frames")
+    print(f"bridge: deepest foot vertex {1000 * deepest:.1f} mm below the ground, one touching it slides "
+          f"{1000 * slid:.1f} mm, {frames} frames")
     assert deepest < GROUND_TOLERANCE
+    assert slid < SLIDE_TOLERANCE
 
 
 def nameless_bones(document):

@@ -104,7 +104,7 @@ def test_a_slow_step_rolls_less():
 
 def test_the_heel_comes_from_the_mesh_or_the_foots_length():
     ankle, ball, forward = (0.0, 0.0, 0.08), (0.13, 0.0, 0.02), (1.0, 0.0, 0.0)
-    mesh = [(-0.06, 0.02, 0.0), (0.2, 0.0, 0.0), (0.05, -0.03, 0.1)]
+    mesh = [(-0.06, 0.02, 0.0, 1.0, 0.0), (0.2, 0.0, 0.0, 0.0, 1.0), (0.05, -0.03, 0.1, 0.6, 0.4)]
     assert foot_roll.foot_shape(ankle, ball, forward, 0.26, mesh).heel_back == pytest.approx(0.06)
     assert foot_roll.foot_shape(ankle, ball, forward, 0.26).heel_back == pytest.approx(0.26 * foot_roll.HEEL_SHARE)
     assert foot_roll.foot_shape(ankle, ball, forward, 0.26).ball_ahead == pytest.approx(0.13)

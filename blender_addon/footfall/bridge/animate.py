@@ -31,7 +31,7 @@ from mathutils import Matrix, Vector
 from ..core import clip_timing, foot_roll, native
 from ..core.rig_profile import STAIR_CLIPS
 from . import action_curves, procedural_clips, rig_clips
-from .rig_import import foot_points, profile_of
+from .rig_import import foot_skin, profile_of
 
 IK_FOOT = "footfall_ik_foot.{}"
 POLE = "footfall_pole.{}"
@@ -53,6 +53,11 @@ POLE_TOLERANCE = (5e-3, 5e-4)  # a knee pole half a metre ahead only aims the kn
 LOOK_TOLERANCE = (2e-3, 2e-3)
 INFLUENCE_TOLERANCE = 2e-3  # of a walking clip's strip
 SWING_LOOSENESS = 3.0  # a foot in the air, moving fast, is keyed within 1.5 mm
+# A foot on the ground (planted, or lifted less than GROUNDED_LIFT) within an
+# eighth of a millimetre: rolling on its ball, the keys' errors would add up
+# to a millimetre's slide of the toes.
+PLANTED_LOOSENESS = 0.25
+GROUNDED_LIFT = 0.005  # [m]
 _THREADS = ThreadPoolExecutor(max_workers=os.cpu_count() or 1, thread_name_prefix="footfall keys")
 LINEAR, HANDLE_FREE = 1, 0  # KeyframePoint.interpolation and handle type values for foreach_set
 
@@ -155,8 +160,8 @@ def _template(rig, profile) -> bpy.types.Armature:
 
 def rig_rest(data, profile, feet=None) -> RigRest:
     """Rest geometry of a template armature (one with the IK bones); `feet`
-    (side -> world positions of the vertices skinned to its foot and toe)
-    place the heels."""
+    (side -> the vertices skinned to its foot and toe: rig_import.foot_skin)
+    place the heels and bound the heels' rise."""
     bones = profile.bones
     rest = RigRest(bones["hips"], data.bones[bones["hips"]].matrix_local.copy(), _forward_yaw(data, bones),
                    bones["chest"], bones["head"])
@@ -452,13 +457,14 @@ def _locomotion(ff, agent, rest: RigRest, times, facing, full_speed: float, on_g
         foot_yaw = numpy.unwrap(feet_yaw[:, side]) - rest.forward_yaw
         locations, yawed = _pose_arrays(leg.foot_rest, ankles, foot_yaw)
         # Pitched about the rest's side axis first, then turned to the foot's yaw (and tilted along the ground).
-        swinging = numpy.where(planted[:, side], 1.0, SWING_LOOSENESS)
+        grounded = planted[:, side] | (lift[:, side] < GROUNDED_LIFT)
+        looseness = numpy.where(grounded, PLANTED_LOOSENESS, SWING_LOOSENESS)
         turned = _quaternion_product(yawed, _turns(leg.foot_rest, lateral, pitch))
         if on_ground is not None:
             turned = _quaternion_product(_tilts(leg.foot_rest, normals[:, side]), turned)
-        channels[IK_FOOT.format(suffix)] = Keyed(locations, turned, looseness=swinging)
+        channels[IK_FOOT.format(suffix)] = Keyed(locations, turned, looseness=looseness)
         channels[leg.toe] = Keyed(None, _turns(leg.toe_rest, lateral, -numpy.minimum(pitch, 0.0)),
-                                  looseness=swinging)
+                                  looseness=looseness)
         ahead = numpy.array(leg.pole_rest.to_translation() - leg.ankle)  # the pole, seen from the ankle
         poles = flat + numpy.column_stack((numpy.cos(foot_yaw) * ahead[0] - numpy.sin(foot_yaw) * ahead[1],
                                              numpy.sin(foot_yaw) * ahead[0] + numpy.cos(foot_yaw) * ahead[1],
@@ -667,7 +673,7 @@ class _Character:
 def _character(rig) -> _Character:
     profile = profile_of(rig)
     template = _template(rig, profile)
-    rest = rig_rest(template, profile, foot_points(rig, profile.bones))
+    rest = rig_rest(template, profile, foot_skin(rig, profile.bones))
     return _Character(rig, template, rest, clips_of(rig, profile))
 
 

@@ -91,26 +91,37 @@ def _bone_map(armature, given: Dict[str, object], rig: str):
     return mapping, notes
 
 
-def foot_points(armature, bones: Dict[str, object]) -> Dict[str, list]:
-    """Rest positions of the vertices skinned (weight >= 0.5) to each side's
-    foot or toe bone, over every mesh the armature deforms."""
-    points = {"left": [], "right": []}
+def foot_skin(armature, bones: Dict[str, object]) -> Dict[str, list]:
+    """Each side's foot as skinned, over every mesh the armature deforms:
+    the rest position of each vertex weighted to that side's foot or toe
+    bone, with its weights on the two, (x, y, z, foot weight, toe weight)."""
+    skin = {"left": [], "right": []}
     meshes = [o for o in bpy.data.objects if o.type == "MESH" and
               any(m.type == "ARMATURE" and m.object == armature for m in o.modifiers)]
     for mesh in meshes:
-        groups = {}
-        for side in points:
-            for role in ("foot", "toe"):
+        roles = {}  # vertex group index -> (side, 0 foot or 1 toe)
+        for side in skin:
+            for k, role in enumerate(("foot", "toe")):
                 group = mesh.vertex_groups.get(bones[side][role])
                 if group is not None:
-                    groups[group.index] = side
+                    roles[group.index] = (side, k)
         world = mesh.matrix_world
         for vertex in mesh.data.vertices:
+            weights = {}
             for element in vertex.groups:
-                if element.group in groups and element.weight >= 0.5:
-                    points[groups[element.group]].append(tuple(world @ vertex.co))
-                    break
-    return points
+                if element.group in roles:
+                    side, k = roles[element.group]
+                    weights.setdefault(side, [0.0, 0.0])[k] += element.weight
+            for side, (foot, toe) in weights.items():
+                skin[side].append((*(world @ vertex.co), foot, toe))
+    return skin
+
+
+def foot_points(armature, bones: Dict[str, object]) -> Dict[str, list]:
+    """Rest positions of the vertices skinned (weight >= 0.5) to each side's
+    foot or toe bone, over every mesh the armature deforms."""
+    return {side: [row[:3] for row in rows if max(row[3], row[4]) >= 0.5]
+            for side, rows in foot_skin(armature, bones).items()}
 
 
 def _imported_armature(path: pathlib.Path, before) -> bpy.types.Object:

@@ -31,24 +31,32 @@ STAIR_RISE = _AMPLITUDES["stair_rise"]  # a step rising or dropping more is a st
 class FootShape:
     """The foot seen from the side, flat on the ground, from the point under
     the ankle: the ankle's height, the heel's contact behind it, and the
-    ball (toe joint) ahead of and above it [m]."""
+    ball (toe joint) ahead of and above it [m]; and the most its heel rises
+    in a stance [rad] (the core's steepest_toe_off: no more than lets the
+    skin under the ball slide a few millimetres)."""
 
     ankle_height: float
     heel_back: float
     ball_ahead: float
     ball_height: float
+    toe_off_limit: float = TOE_OFF
 
 
-def foot_shape(ankle, ball, forward, foot_length: float, points=()) -> FootShape:
+def foot_shape(ankle, ball, forward, foot_length: float, skin=()) -> FootShape:
     """The shape of a foot at rest, from its ankle (the foot bone's head) and
     ball (the toe bone's head), the rig's forward direction on the ground
-    (unit), its length, and the positions of its mesh's vertices (world,
-    Z up): the heel is the vertex furthest behind the ankle, else
-    HEEL_SHARE of the length behind it."""
+    (unit), its length, and its mesh's vertices skinned to the foot or toe
+    bone (rows of world x, y, z (Z up), foot weight, toe weight): the heel
+    is the vertex (weighted at least half to either) furthest behind the
+    ankle, else HEEL_SHARE of the length behind it."""
     ankle, ball, forward = (numpy.asarray(v, dtype=float) for v in (ankle, ball, forward))
-    behind = [-float(numpy.dot(numpy.asarray(p, dtype=float) - ankle, forward)) for p in points]
-    heel_back = max(behind) if behind and max(behind) > 0.0 else HEEL_SHARE * foot_length
-    return FootShape(float(ankle[2]), heel_back, float(numpy.dot(ball - ankle, forward)), float(ball[2]))
+    skin = numpy.asarray(skin, dtype=float).reshape(-1, 5)
+    ahead = (skin[:, :3] - ankle) @ forward
+    behind = -ahead[numpy.maximum(skin[:, 3], skin[:, 4]) >= 0.5]
+    heel_back = float(behind.max()) if behind.size and behind.max() > 0.0 else HEEL_SHARE * foot_length
+    shape = (float(ankle[2]), heel_back, float(numpy.dot(ball - ankle, forward)), float(ball[2]))
+    sole = numpy.column_stack((ahead, skin[:, 2], skin[:, 3], skin[:, 4]))
+    return FootShape(*shape, native.load().steepest_toe_off(shape, sole))
 
 
 @dataclass(frozen=True)

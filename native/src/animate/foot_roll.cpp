@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace footfall::animate {
@@ -27,6 +28,35 @@ FootRoll roll_at_pitch(const FootShape& shape, double pitch) {
   const double vz = toes_up ? shape.ankle_height : shape.ankle_height - shape.ball_height;
   const double c = std::cos(pitch), s = std::sin(pitch);
   return {pitch, c * vx - s * vz - vx, s * vx + c * vz - vz};
+}
+
+double steepest_toe_off(const FootShape& shape, const std::vector<SoleVertex>& skin) {
+  std::vector<SoleVertex> sole;
+  double ground = std::numeric_limits<double>::infinity();
+  for (const SoleVertex& v : skin)
+    if (v.foot_weight + v.toe_weight >= 0.5) ground = std::min(ground, v.height);
+  for (const SoleVertex& v : skin)
+    if (v.foot_weight + v.toe_weight >= 0.5 && v.height - ground <= kSoleTouching) sole.push_back(v);
+  // Heel up by ever more: each vertex moves with its foot weight about the
+  // toe joint (the toes stay put); one that rises off the ground is done.
+  constexpr int kTurns = 120;
+  std::vector<char> lifted(sole.size(), 0);
+  for (int i = 1; i <= kTurns; ++i) {
+    const double pitch = -kToeOff * i / kTurns;
+    const double c = std::cos(pitch), s = std::sin(pitch);
+    for (std::size_t k = 0; k < sole.size(); ++k) {
+      const SoleVertex& v = sole[k];
+      const double vx = v.ahead - shape.ball_ahead, vz = v.height - shape.ball_height;
+      const double back = v.foot_weight * (c * vx - s * vz - vx);
+      const double rise = v.foot_weight * (s * vx + c * vz - vz);
+      if (lifted[k] || v.height - ground + rise > kSoleTouching) {
+        lifted[k] = 1;
+        continue;
+      }
+      if (std::fabs(back) > kSoleSlide) return kToeOff * (i - 1) / kTurns;
+    }
+  }
+  return kToeOff;
 }
 
 namespace {
@@ -90,13 +120,14 @@ FootRoll FootRoller::at(double t, int side, bool planted, const FootShape& shape
   const bool own = step.foot == side;
   if (own && planted) {
     const double in_strike = std::clamp(1.0 - u / kFlatAt, 0.0, 1.0) * strike_[k];
-    const double in_off = std::clamp((u - kHeelOffAt) / (1.0 - kHeelOffAt), 0.0, 1.0) * toe_off_[k];
+    const double in_off = std::clamp((u - kHeelOffAt) / (1.0 - kHeelOffAt), 0.0, 1.0) *
+                          std::max(toe_off_[k], -shape.toe_off_limit);
     return roll_at_pitch(shape, in_strike + in_off);
   }
   if (own || planted || !rolling_[k]) return {};
   // A walking step by the other foot: this one swings from its toe-off (the
   // step before) to its heel strike (the step after).
-  const double from = k > 0 ? toe_off_[k - 1] : 0.0;
+  const double from = k > 0 ? std::max(toe_off_[k - 1], -shape.toe_off_limit) : 0.0;
   const double to = k + 1 < n ? strike_[k + 1] : walk_on_;
   const double w = smooth(u);
   const FootRoll a = roll_at_pitch(shape, from), b = roll_at_pitch(shape, to);

@@ -3,6 +3,7 @@
 #include "footfall/animate/rig.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -207,9 +208,20 @@ int bone(const RigData& rig, const std::vector<int>& joints, const std::string& 
   return found;
 }
 
-// Each skinned vertex of the rig's body at rest, Z up, with the node of the
-// joint that moves it most.
-std::vector<std::pair<int, Vec3>> skinned_vertices(const RigData& rig) {
+// A skinned vertex of the rig's body at rest, Z up: the node of the joint
+// that moves it most, and its weight on each node.
+struct SkinnedVertex {
+  int joint = -1;
+  Vec3 position;
+  std::array<std::pair<int, double>, 4> weights{};
+  double weight_on(int node) const {
+    double sum = 0;
+    for (const auto& [n, w] : weights) sum += n == node ? w : 0.0;
+    return sum;
+  }
+};
+
+std::vector<SkinnedVertex> skinned_vertices(const RigData& rig) {
   const tinygltf::Skin& skin = rig.model.skins[rig.skin];
   std::vector<Mat4> bind(skin.joints.size());  // joint world at rest times its inverse bind matrix
   const std::vector<double> inverse =
@@ -217,7 +229,7 @@ std::vector<std::pair<int, Vec3>> skinned_vertices(const RigData& rig) {
   for (std::size_t j = 0; j < skin.joints.size(); ++j)
     bind[j] = rig.rest_world[skin.joints[j]] *
               (inverse.size() >= 16 * (j + 1) ? animate::from_columns(&inverse[16 * j]) : Mat4{});
-  std::vector<std::pair<int, Vec3>> vertices;
+  std::vector<SkinnedVertex> vertices;
   for (std::size_t node = 0; node < rig.model.nodes.size(); ++node) {
     const tinygltf::Node& n = rig.model.nodes[node];
     if (n.skin != rig.skin || n.mesh < 0) continue;
@@ -237,12 +249,16 @@ std::vector<std::pair<int, Vec3>> skinned_vertices(const RigData& rig) {
         const auto index = static_cast<std::size_t>(j[4 * v + strongest]);
         if (index >= skin.joints.size()) continue;
         Vec3 world{0, 0, 0};
+        SkinnedVertex skinned;
         for (int k = 0; k < 4; ++k) {
           const auto jk = static_cast<std::size_t>(j[4 * v + k]);
           if (w[4 * v + k] <= 0 || jk >= bind.size()) continue;
           world = world + w[4 * v + k] * animate::transform_point(bind[jk], {p[3 * v], p[3 * v + 1], p[3 * v + 2]});
+          skinned.weights[k] = {skin.joints[jk], w[4 * v + k]};
         }
-        vertices.emplace_back(skin.joints[index], to_z_up(world));
+        skinned.joint = skin.joints[index];
+        skinned.position = to_z_up(world);
+        vertices.push_back(skinned);
       }
     }
   }
@@ -260,7 +276,7 @@ void read_legs(RigData& rig, const RigProfile& profile) {
     throw std::invalid_argument(rig.path + ": the feet point straight up or down at rest: the rig's facing is unclear");
   forward = animate::normalized(forward);
   rig.forward_yaw = std::atan2(forward.y, forward.x);
-  const std::vector<std::pair<int, Vec3>> vertices = skinned_vertices(rig);
+  const std::vector<SkinnedVertex> vertices = skinned_vertices(rig);
   double hips = 0;
   for (int side = 0; side < 2; ++side) {
     animate::Leg& leg = rig.legs[side];
@@ -274,9 +290,16 @@ void read_legs(RigData& rig, const RigProfile& profile) {
     const auto found = profile.dimensions.find("foot_length");
     const double foot_length = leg.foot_length = found != profile.dimensions.end() ? found->second : length(ball - leg.ankle) / (1 - animate::kHeelShare);
     double heel = 0;
-    for (const auto& [joint, p] : vertices)
-      if (joint == leg.foot || joint == leg.toe) heel = std::max(heel, -dot(p - leg.ankle, forward));
-    leg.shape = {leg.ankle.z, heel > 0 ? heel : animate::kHeelShare * foot_length, dot(ball - leg.ankle, forward), ball.z};
+    std::vector<animate::SoleVertex> skin;
+    for (const SkinnedVertex& v : vertices) {
+      if (v.joint == leg.foot || v.joint == leg.toe) heel = std::max(heel, -dot(v.position - leg.ankle, forward));
+      const double on_foot = v.weight_on(leg.foot), on_toe = v.weight_on(leg.toe);
+      if (on_foot + on_toe > 0)
+        skin.push_back({dot(v.position - leg.ankle, forward), v.position.z, on_foot, on_toe});
+    }
+    leg.shape = {leg.ankle.z, heel > 0 ? heel : animate::kHeelShare * foot_length, dot(ball - leg.ankle, forward),
+                 ball.z};
+    leg.shape.toe_off_limit = animate::steepest_toe_off(leg.shape, skin);
     hips += 0.5 * leg.hip.z;
     // Standing legs hang nearly straight down; a rig lying down (modelled Z
     // up and exported without turning it) would walk on its side.

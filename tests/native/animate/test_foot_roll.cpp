@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "footfall/animate/foot_roll.hpp"
 #include "footfall/plan/plan.hpp"
@@ -66,6 +67,38 @@ TEST(FootRoll, SideStepsStayFlat) {
     EXPECT_EQ(roller.at(t, 0, true, kFoot).pitch, 0.0) << t;
     EXPECT_EQ(roller.at(t, 1, false, kFoot).pitch, 0.0) << t;
   }
+}
+
+// A sole on the ground, seen from the side: vertices every centimetre from
+// the heel to 3 cm behind the toe joint (0.135 ahead) skinned to the foot,
+// and one 5 mm up at the heel; from 1 cm ahead of the joint to the tip, to
+// the toe; and one under the joint, skinned `under_joint` to the foot.
+std::vector<SoleVertex> sole(double under_joint) {
+  std::vector<SoleVertex> skin{{-0.065, 0.005, 1.0, 0.0}};
+  for (int k = 0; k <= 17; ++k) skin.push_back({-0.065 + 0.01 * k, 0.0, 1.0, 0.0});
+  for (int k = 1; k <= 6; ++k) skin.push_back({kFoot.ball_ahead + 0.01 * k, 0.0, 0.0, 1.0});
+  skin.push_back({kFoot.ball_ahead, 0.0, under_joint, 1.0 - under_joint});
+  return skin;
+}
+
+TEST(FootRoll, TheHeelRisesNoFurtherThanLetsTheSkinUnderTheBallSlide) {
+  // A vertex under the joint, skinned 0.4 to the foot, slides back
+  // 0.4 x 0.025 m x sin(pitch) as the heel rises: 4 mm at 23.6 degrees.
+  const double limit = steepest_toe_off(kFoot, sole(0.4));
+  EXPECT_NEAR(limit, std::asin(kSoleSlide / (0.4 * kFoot.ball_height)), kToeOff / 120);
+  EXPECT_LE(0.4 * kFoot.ball_height * std::sin(limit), kSoleSlide);
+  FootShape shape = kFoot;
+  shape.toe_off_limit = limit;
+  const FootRoller roller(walking_plan(), 1.3);
+  EXPECT_NEAR(roller.at(1.0 - 1e-9, 1, true, shape).pitch, -limit, 1e-6);
+  EXPECT_NEAR(roller.at(1.0 + 1e-9, 1, false, shape).pitch, -limit, 1e-6);  // and swings from there
+  // Skinned wholly to the toe, the skin under the joint stays put; wholly to
+  // the foot, it slides further (but lifts off the ground, 8 mm at 30
+  // degrees, only as the heel comes up under it).
+  EXPECT_EQ(steepest_toe_off(kFoot, sole(0.0)), kToeOff);
+  EXPECT_LT(steepest_toe_off(kFoot, sole(1.0)), limit);
+  // Without a mesh: the full toe-off.
+  EXPECT_EQ(steepest_toe_off(kFoot, {}), kToeOff);
 }
 
 }  // namespace

@@ -29,13 +29,38 @@ constexpr double kHeelShare = footfall::kHeelShare;
 
 /// The foot seen from the side, flat on the ground, from the point under the
 /// ankle: the ankle's height, the heel's contact behind it, the ball (toe
-/// joint) ahead of and above it. [m]
+/// joint) ahead of and above it [m]; and the most the heel rises in a stance
+/// [rad] (steepest_toe_off).
 struct FootShape {
   double ankle_height = 0;
   double heel_back = 0;
   double ball_ahead = 0;
   double ball_height = 0;
+  double toe_off_limit = kToeOff;
 };
+
+/// [m] a vertex of the sole this near the ground touches it.
+constexpr double kSoleTouching = 0.002;
+/// [m] the most a vertex of the sole may slide while it touches, as the heel rises.
+constexpr double kSoleSlide = 0.004;
+
+/// A vertex of a foot's skin at rest, seen from the side: ahead of the point
+/// under the ankle and above the ground [m], and its skin weights on the
+/// foot bone and on the toe bone.
+struct SoleVertex {
+  double ahead = 0;
+  double height = 0;
+  double foot_weight = 0;
+  double toe_weight = 0;
+};
+
+/// The most the heel may rise in a stance [rad, at most kToeOff]. The foot
+/// turns about the toe joint, above the sole, while the toes stay flat: a
+/// skin vertex under the joint, weighted partly to the foot, slides back as
+/// it turns. The heel rises until a vertex of `skin` (those weighted at
+/// least half to the foot and toe) that still touches the ground would
+/// slide over kSoleSlide. Without vertices: kToeOff.
+double steepest_toe_off(const FootShape& shape, const std::vector<SoleVertex>& skin);
 
 /// A foot's pitch [rad, toes up positive] and the ankle's displacement from
 /// where it stands with the foot flat, along the foot's forward and up. [m]
